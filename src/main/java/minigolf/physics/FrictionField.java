@@ -1,0 +1,56 @@
+package minigolf.physics;
+
+import java.util.List;
+import minigolf.course.PhysicsSettings;
+import minigolf.course.TerrainSpec;
+import minigolf.course.Zone;
+
+/**
+ * Friction under the ball: the last zone containing the point wins, else the grid's per-node
+ * friction (bilinear between nodes, clamped at the edges), else the course's physics values.
+ */
+public final class FrictionField {
+    private final double defaultKinetic;
+    private final double defaultStatic;
+    private final Zone[] zones;
+    private final TerrainSpec.HeightGrid grid;
+    private final boolean uniform;
+
+    public FrictionField(PhysicsSettings physics, List<Zone> zones, TerrainSpec terrain) {
+        this.defaultKinetic = physics.kineticFriction();
+        this.defaultStatic = physics.staticFriction();
+        this.zones = zones.toArray(new Zone[0]);
+        this.grid = terrain instanceof TerrainSpec.HeightGrid g
+                && (g.kineticFriction() != null || g.staticFriction() != null) ? g : null;
+        this.uniform = this.zones.length == 0 && grid == null;
+    }
+
+    public double kinetic(double x, double y) {
+        if (uniform) return defaultKinetic;
+        for (int k = zones.length - 1; k >= 0; k--) {
+            if (zones[k].shape().contains(x, y)) return zones[k].kineticFriction();
+        }
+        return grid != null && grid.kineticFriction() != null
+                ? bilinear(grid.kineticFriction(), x, y) : defaultKinetic;
+    }
+
+    public double staticFriction(double x, double y) {
+        if (uniform) return defaultStatic;
+        for (int k = zones.length - 1; k >= 0; k--) {
+            if (zones[k].shape().contains(x, y)) return zones[k].staticFriction();
+        }
+        return grid != null && grid.staticFriction() != null
+                ? bilinear(grid.staticFriction(), x, y) : defaultStatic;
+    }
+
+    private double bilinear(double[][] nodes, double x, double y) {
+        int rows = nodes.length, columns = nodes[0].length;
+        double u = Math.max(0, Math.min(columns - 1, (x - grid.origin().x()) / grid.spacing()));
+        double v = Math.max(0, Math.min(rows - 1, (y - grid.origin().y()) / grid.spacing()));
+        int i = Math.min((int) u, columns - 2), j = Math.min((int) v, rows - 2);
+        double tx = u - i, ty = v - j;
+        double bottom = nodes[j][i] * (1 - tx) + nodes[j][i + 1] * tx;
+        double top = nodes[j + 1][i] * (1 - tx) + nodes[j + 1][i + 1] * tx;
+        return bottom * (1 - ty) + top * ty;
+    }
+}

@@ -1,0 +1,28 @@
+package minigolf.physics;
+
+/** Runs whole strokes on one world with one set of settings. Cheap to create; not shared across threads. */
+public final class Simulator {
+    private final World world;
+    private final SimulationSettings settings;
+
+    public Simulator(World world, SimulationSettings settings) {
+        this.world = world;
+        this.settings = settings;
+    }
+
+    public World world() {
+        return world;
+    }
+
+    public SimulationSettings settings() {
+        return settings;
+    }
+
+    public ShotResult simulate(double x0, double y0, double vx, double vy) {
+        return new Stroke(world, settings, x0, y0, vx, vy, null).run();
+    }
+
+    public ShotResult simulate(double x0, double y0, double vx, double vy, TrajectoryListener listener) {
+        return new Stroke(world, settings, x0, y0, vx, vy, listener).run();
+    }
+}
