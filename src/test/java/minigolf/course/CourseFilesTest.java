@@ -130,4 +130,16 @@ class CourseFilesTest {
             for (double v : row) assertEquals(v, Math.round(v * 1e4) / 1e4, 0.0, "4 decimals");
         }
     }
+
+    @Test
+    void theFullExampleInTheFormatDocumentLoads() throws IOException, CourseException {
+        String doc = Files.readString(coursesDir().resolveSibling("docs").resolve("course-format.md"));
+        int from = doc.indexOf("## Full example");
+        int start = doc.indexOf("```json\n", from) + "```json\n".length();
+        String json = doc.substring(start, doc.indexOf("```", start));
+        Course c = CourseLoader.parse(json, "docs/course-format.md", CourseFilesTest::probe);
+        assertEquals("Lake", c.name());
+        assertEquals(3, c.zones().size());
+        assertEquals(c, CourseLoader.parse(CourseWriter.toJson(c), "again"));
+    }
 }
