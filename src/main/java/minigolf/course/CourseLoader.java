@@ -32,7 +32,7 @@ import java.util.function.Function;
  *
  * <p>The start and the hole are always checked to lie inside the bounds. Whether they lie on dry
  * land needs the terrain's heights, which this package does not compute: pass a probe factory
- * (e.g. {@code spec -> Terrains.of(spec)::height}) to the overloads that take one; the overloads
+ * (e.g. {@code spec -> terrainFor(spec)::height}, with the engine's terrain for the spec) to the overloads that take one; the overloads
  * without one skip the water check.
  */
 public final class CourseLoader {
@@ -213,7 +213,8 @@ public final class CourseLoader {
                 try {
                     Expression.parse(src);
                 } catch (ExpressionException e) {
-                    throw error(p, String.valueOf(e.getMessage()));
+                    String msg = String.valueOf(e.getMessage());
+                    throw error(p, msg.contains("column") ? msg : msg + " at column " + e.column());
                 } catch (RuntimeException e) {
                     throw error(p, "invalid expression: " + e.getMessage());
                 }
