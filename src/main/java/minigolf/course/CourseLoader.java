@@ -1,0 +1,471 @@
+package minigolf.course;
+
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.json.JsonReadFeature;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import minigolf.expr.Expression;
+import minigolf.expr.ExpressionException;
+
+import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * Reads course files (format 1, see docs/course-format.md). The JSON is read into Jackson's tree
+ * model and then checked by hand, field by field, so that every error is one line naming the file,
+ * the field path and the problem, e.g. {@code courses/x.json: hole.radius: must be > 0, got -0.1}.
+ * Nothing but {@link CourseException} ever leaves this class.
+ *
+ * <p>The start and the hole are always checked to lie inside the bounds. Whether they lie on dry
+ * land needs the terrain's heights, which this package does not compute: pass a probe factory
+ * (e.g. {@code spec -> terrainFor(spec)::height}, with the engine's terrain for the spec) to the overloads that take one; the overloads
+ * without one skip the water check.
+ */
+public final class CourseLoader {
+    static final List<String> TOP_FIELDS = List.of(
+            "format", "name", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles");
+    static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
+    static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction");
+    static final List<String> BOUNDS_FIELDS = List.of("min", "max");
+    static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model");
+    static final List<String> HOLE_FIELDS = List.of("position", "radius", "rule", "captureSpeed");
+    static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction");
+    static final List<String> RECT_FIELDS = List.of("type", "min", "max");
+    static final List<String> CIRCLE_FIELDS = List.of("type", "center", "radius");
+    static final List<String> POLYGON_FIELDS = List.of("type", "points");
+
+    /** Strict JSON: no NaN/Infinity literals, no comments, no duplicate keys, nothing after the object. */
+    private static final ObjectMapper MAPPER = JsonMapper.builder()
+            .enable(DeserializationFeature.FAIL_ON_READING_DUP_TREE_KEY)
+            .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+            .disable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
+            .disable(JsonReadFeature.ALLOW_JAVA_COMMENTS)
+            .build();
+
+    private CourseLoader() {
+    }
+
+    /** Reads and validates a course file; the water check of start and hole is skipped. */
+    public static Course load(Path file) throws CourseException {
+        return load(file, null);
+    }
+
+    /**
+     * Reads and validates a course file. When {@code probes} is not null it is asked for the
+     * heights of the course's terrain and the start and the hole are checked to be on dry land.
+     */
+    public static Course load(Path file, Function<TerrainSpec, HeightProbe> probes) throws CourseException {
+        String source = String.valueOf(file);
+        String json;
+        try {
+            json = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new CourseException(source, null, "cannot read: " + describe(e, file), e);
+        } catch (RuntimeException e) {
+            throw new CourseException(source, null, "cannot read: " + e, e);
+        }
+        return parse(json, source, probes);
+    }
+
+    /** Parses and validates course JSON; {@code sourceName} is used in error messages. No water check. */
+    public static Course parse(String json, String sourceName) throws CourseException {
+        return parse(json, sourceName, null);
+    }
+
+    /** Parses and validates course JSON; with a probe factory the start and hole are also checked for water. */
+    public static Course parse(String json, String sourceName, Function<TerrainSpec, HeightProbe> probes)
+            throws CourseException {
+        Course course = new Reader(sourceName).course(readTree(json, sourceName));
+        CourseValidator.checkInBounds(course, sourceName);
+        if (probes != null) {
+            HeightProbe probe;
+            try {
+                probe = probes.apply(course.terrain());
+            } catch (RuntimeException e) {
+                throw new CourseException(sourceName, "terrain", "cannot build the terrain: " + e.getMessage(), e);
+            }
+            if (probe == null) {
+                throw new CourseException(sourceName, "terrain", "the probe factory gave no height probe for this terrain");
+            }
+            CourseValidator.checkPlacement(course, probe, sourceName);
+        }
+        return course;
+    }
+
+    private static JsonNode readTree(String json, String source) throws CourseException {
+        if (json == null) throw new CourseException(source, null, "not valid JSON: no content");
+        if (json.startsWith("\uFEFF")) json = json.substring(1);
+        JsonNode root;
+        try {
+            root = MAPPER.readTree(json);
+        } catch (JsonProcessingException e) {
+            String msg = firstLine(e.getOriginalMessage());
+            JsonLocation loc = e.getLocation();
+            String where = loc != null && loc.getLineNr() > 0
+                    ? " at line " + loc.getLineNr() + ", column " + loc.getColumnNr() : "";
+            if (msg.startsWith("Duplicate field ")) {
+                // Jackson: "Duplicate field 'name' for `ObjectNode`: not allowed when ..."
+                int end = msg.indexOf(" for `");
+                String what = end > 0 ? msg.substring("Duplicate field ".length(), end) : "";
+                throw new CourseException(source, null, "not valid JSON" + where + ": duplicate field " + what, e);
+            }
+            throw new CourseException(source, null, "not valid JSON" + where + ": " + msg, e);
+        } catch (RuntimeException e) {
+            throw new CourseException(source, null, "not valid JSON: " + firstLine(String.valueOf(e.getMessage())), e);
+        }
+        if (root == null || root.isMissingNode()) {
+            throw new CourseException(source, null, "not valid JSON: the file is empty");
+        }
+        return root;
+    }
+
+    private static String firstLine(String s) {
+        if (s == null) return "";
+        int nl = s.indexOf('\n');
+        return (nl >= 0 ? s.substring(0, nl) : s).trim();
+    }
+
+    static String describe(Exception e, Path target) {
+        if (e instanceof NoSuchFileException f) {
+            return sameFile(f.getFile(), target) ? "no such file" : "no such file or directory: " + f.getFile();
+        }
+        if (e instanceof AccessDeniedException f) {
+            return sameFile(f.getFile(), target) ? "permission denied" : "permission denied: " + f.getFile();
+        }
+        if (e instanceof CharacterCodingException) {
+            return "not valid UTF-8 text";
+        }
+        if (e instanceof FileSystemException f && f.getReason() != null) {
+            return sameFile(f.getFile(), target) ? f.getReason() : f.getReason() + ": " + f.getFile();
+        }
+        String m = e.getMessage();
+        return m == null || m.isBlank() ? e.getClass().getSimpleName() : firstLine(m);
+    }
+
+    private static boolean sameFile(String name, Path target) {
+        return name == null || target == null || name.equals(target.toString())
+                || name.equals(target.toAbsolutePath().toString());
+    }
+
+    /** Walks the tree; every method gets the field path of the node it reads. */
+    private static final class Reader {
+        private final String source;
+
+        Reader(String source) {
+            this.source = source;
+        }
+
+        private CourseException error(String path, String problem) {
+            return new CourseException(source, path, problem);
+        }
+
+        Course course(JsonNode root) throws CourseException {
+            if (!root.isObject()) {
+                throw error(null, "expected a JSON object at the top level, got " + kind(root));
+            }
+            ObjectNode o = (ObjectNode) root;
+            // The format first: a file from a newer engine may well have fields this one does not know.
+            JsonNode f = required(o, "", "format");
+            if (!f.isNumber()) throw error("format", "expected a number, got " + kind(f));
+            if (!f.isIntegralNumber() || f.asLong() != Course.FORMAT || !f.canConvertToInt()) {
+                throw error("format", "unsupported format " + f + " (this engine reads format " + Course.FORMAT + ")");
+            }
+            knownFields(o, "", TOP_FIELDS);
+            String name = string(required(o, "", "name"), "name");
+            if (name.isBlank()) throw error("name", "must be a non-empty string");
+            TerrainSpec terrain = terrain(required(o, "", "terrain"), "terrain");
+            Bounds bounds = bounds(required(o, "", "bounds"), "bounds");
+            PhysicsSettings physics = physics(required(o, "", "physics"), "physics");
+            Vec2 start = vec(required(o, "", "start"), "start");
+            Hole hole = hole(required(o, "", "hole"), "hole");
+            List<Zone> zones = zones(o.get("zones"), "zones");
+            obstacles(o.get("obstacles"), "obstacles");
+            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones);
+        }
+
+        // ---- terrain ----
+
+        TerrainSpec terrain(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            knownFields(o, path, TERRAIN_FIELDS);
+            boolean hasHeight = o.has("height"), hasGrid = o.has("grid");
+            if (hasHeight == hasGrid) {
+                throw error(path, "expected exactly one of height, grid, got " + (hasHeight ? "both" : "neither"));
+            }
+            if (hasHeight) {
+                String p = join(path, "height");
+                String src = string(o.get("height"), p);
+                if (src.isBlank()) throw error(p, "must be a non-empty expression");
+                try {
+                    Expression.parse(src);
+                } catch (ExpressionException e) {
+                    String msg = String.valueOf(e.getMessage());
+                    throw error(p, msg.contains("column") ? msg : msg + " at column " + e.column());
+                } catch (RuntimeException e) {
+                    throw error(p, "invalid expression: " + e.getMessage());
+                }
+                return new TerrainSpec.HeightExpression(src);
+            }
+            return grid(o.get("grid"), join(path, "grid"));
+        }
+
+        TerrainSpec.HeightGrid grid(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            knownFields(o, path, GRID_FIELDS);
+            Vec2 origin = vec(required(o, path, "origin"), join(path, "origin"));
+            double spacing = positive(number(required(o, path, "spacing"), join(path, "spacing")), join(path, "spacing"));
+            String hp = join(path, "heights");
+            double[][] heights = matrix(required(o, path, "heights"), hp, -1, -1, false);
+            if (heights.length < 2 || heights[0].length < 2) {
+                throw error(hp, "must have at least 2 rows of at least 2 values (bicubic interpolation needs a 2x2 grid), got "
+                        + heights.length + " row" + (heights.length == 1 ? "" : "s") + " of "
+                        + (heights.length == 0 ? 0 : heights[0].length));
+            }
+            int rows = heights.length, cols = heights[0].length;
+            double[][] kinetic = o.has("kineticFriction")
+                    ? matrix(o.get("kineticFriction"), join(path, "kineticFriction"), rows, cols, true) : null;
+            double[][] stat = o.has("staticFriction")
+                    ? matrix(o.get("staticFriction"), join(path, "staticFriction"), rows, cols, true) : null;
+            return new TerrainSpec.HeightGrid(origin, spacing, heights, kinetic, stat);
+        }
+
+        /**
+         * An array of equally long rows of numbers. With rows/cols &ge; 0 the shape must be exactly
+         * that (the heights' shape); otherwise the first row sets the length.
+         */
+        double[][] matrix(JsonNode n, String path, int rows, int cols, boolean nonNegative) throws CourseException {
+            if (!n.isArray()) throw error(path, "expected an array of rows, got " + kind(n));
+            if (rows >= 0 && n.size() != rows) {
+                throw error(path, "has " + n.size() + " rows, expected " + rows + " (the shape of heights)");
+            }
+            double[][] m = new double[n.size()][];
+            int expected = cols;
+            for (int j = 0; j < n.size(); j++) {
+                String rp = path + "[" + j + "]";
+                JsonNode row = n.get(j);
+                if (!row.isArray()) throw error(rp, "expected a row (an array of numbers), got " + kind(row));
+                if (expected < 0) expected = row.size();
+                if (row.size() != expected) {
+                    throw error(rp, "row has " + row.size() + " values, expected " + expected);
+                }
+                double[] r = new double[row.size()];
+                for (int i = 0; i < r.length; i++) {
+                    String vp = rp + "[" + i + "]";
+                    r[i] = number(row.get(i), vp);
+                    if (nonNegative) nonNegative(r[i], vp);
+                }
+                m[j] = r;
+            }
+            return m;
+        }
+
+        // ---- bounds, physics, hole ----
+
+        Bounds bounds(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            knownFields(o, path, BOUNDS_FIELDS);
+            Vec2 min = vec(required(o, path, "min"), join(path, "min"));
+            Vec2 max = vec(required(o, path, "max"), join(path, "max"));
+            minBelowMax(min, max, path);
+            return new Bounds(min.x(), min.y(), max.x(), max.y());
+        }
+
+        private void minBelowMax(Vec2 min, Vec2 max, String path) throws CourseException {
+            if (!(min.x() < max.x() && min.y() < max.y())) {
+                throw error(path, "min must be < max in both axes, got min " + CourseValidator.point(min)
+                        + ", max " + CourseValidator.point(max));
+            }
+        }
+
+        PhysicsSettings physics(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            knownFields(o, path, PHYSICS_FIELDS);
+            double gravity = o.has("gravity")
+                    ? positive(number(o.get("gravity"), join(path, "gravity")), join(path, "gravity"))
+                    : PhysicsSettings.DEFAULT_GRAVITY;
+            double kinetic = nonNegative(number(required(o, path, "kineticFriction"), join(path, "kineticFriction")),
+                    join(path, "kineticFriction"));
+            double stat = nonNegative(number(required(o, path, "staticFriction"), join(path, "staticFriction")),
+                    join(path, "staticFriction"));
+            double maxSpeed = o.has("maxSpeed")
+                    ? positive(number(o.get("maxSpeed"), join(path, "maxSpeed")), join(path, "maxSpeed"))
+                    : PhysicsSettings.DEFAULT_MAX_SPEED;
+            PhysicsModel model = PhysicsModel.CLASSIC;
+            if (o.has("model")) {
+                String p = join(path, "model");
+                JsonNode m = o.get("model");
+                model = m.isTextual() ? PhysicsModel.fromJsonName(m.textValue()) : null;
+                if (model == null) throw error(p, "expected one of classic, complete, got " + show(m));
+            }
+            return new PhysicsSettings(gravity, kinetic, stat, maxSpeed, model);
+        }
+
+        Hole hole(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            knownFields(o, path, HOLE_FIELDS);
+            Vec2 position = vec(required(o, path, "position"), join(path, "position"));
+            String rp = join(path, "radius");
+            double radius = positive(number(required(o, path, "radius"), rp), rp);
+            HoleRule rule = HoleRule.REST;
+            if (o.has("rule")) {
+                JsonNode r = o.get("rule");
+                rule = r.isTextual() ? HoleRule.fromJsonName(r.textValue()) : null;
+                if (rule == null) throw error(join(path, "rule"), "expected one of rest, capture, got " + show(r));
+            }
+            Double capture = null;
+            if (o.has("captureSpeed")) {
+                String cp = join(path, "captureSpeed");
+                capture = positive(number(o.get("captureSpeed"), cp), cp);
+            }
+            return new Hole(position, radius, rule, capture);
+        }
+
+        // ---- zones, obstacles ----
+
+        List<Zone> zones(JsonNode n, String path) throws CourseException {
+            if (n == null) return List.of();
+            if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+            List<Zone> zones = new ArrayList<>(n.size());
+            for (int i = 0; i < n.size(); i++) {
+                String zp = path + "[" + i + "]";
+                ObjectNode o = object(n.get(i), zp);
+                knownFields(o, zp, ZONE_FIELDS);
+                Shape shape = shape(required(o, zp, "shape"), join(zp, "shape"));
+                String kp = join(zp, "kineticFriction"), sp = join(zp, "staticFriction");
+                double kinetic = nonNegative(number(required(o, zp, "kineticFriction"), kp), kp);
+                double stat = nonNegative(number(required(o, zp, "staticFriction"), sp), sp);
+                zones.add(new Zone(shape, kinetic, stat));
+            }
+            return zones;
+        }
+
+        Shape shape(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            String tp = join(path, "type");
+            JsonNode t = required(o, path, "type");
+            String type = t.isTextual() ? t.textValue() : null;
+            if (type == null || !(type.equals("rect") || type.equals("circle") || type.equals("polygon"))) {
+                throw error(tp, "expected one of rect, circle, polygon, got " + show(t));
+            }
+            switch (type) {
+                case "rect" -> {
+                    knownFields(o, path, RECT_FIELDS);
+                    Vec2 min = vec(required(o, path, "min"), join(path, "min"));
+                    Vec2 max = vec(required(o, path, "max"), join(path, "max"));
+                    minBelowMax(min, max, path);
+                    return new Shape.Rect(min, max);
+                }
+                case "circle" -> {
+                    knownFields(o, path, CIRCLE_FIELDS);
+                    Vec2 center = vec(required(o, path, "center"), join(path, "center"));
+                    String rp = join(path, "radius");
+                    return new Shape.Circle(center, positive(number(required(o, path, "radius"), rp), rp));
+                }
+                default -> {
+                    knownFields(o, path, POLYGON_FIELDS);
+                    String pp = join(path, "points");
+                    JsonNode pts = required(o, path, "points");
+                    if (!pts.isArray()) throw error(pp, "expected an array of [x, y] points, got " + kind(pts));
+                    if (pts.size() < 3) throw error(pp, "a polygon needs at least 3 points, got " + pts.size());
+                    List<Vec2> points = new ArrayList<>(pts.size());
+                    for (int i = 0; i < pts.size(); i++) points.add(vec(pts.get(i), pp + "[" + i + "]"));
+                    return new Shape.Polygon(points);
+                }
+            }
+        }
+
+        void obstacles(JsonNode n, String path) throws CourseException {
+            if (n == null) return;
+            if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+            if (n.size() > 0) throw error(path, "obstacles are not supported by this version of the engine");
+        }
+
+        // ---- primitives ----
+
+        ObjectNode object(JsonNode n, String path) throws CourseException {
+            if (!n.isObject()) throw error(path, "expected an object, got " + kind(n));
+            return (ObjectNode) n;
+        }
+
+        JsonNode required(ObjectNode o, String path, String field) throws CourseException {
+            JsonNode n = o.get(field);
+            if (n == null) throw error(join(path, field), "missing required field");
+            return n;
+        }
+
+        void knownFields(ObjectNode o, String path, List<String> known) throws CourseException {
+            for (Iterator<String> it = o.fieldNames(); it.hasNext(); ) {
+                String f = it.next();
+                if (!known.contains(f)) {
+                    throw error(join(path, f), "unknown field (known: " + String.join(", ", known) + ")");
+                }
+            }
+        }
+
+        String string(JsonNode n, String path) throws CourseException {
+            if (!n.isTextual()) throw error(path, "expected a string, got " + kind(n));
+            return n.textValue();
+        }
+
+        double number(JsonNode n, String path) throws CourseException {
+            if (!n.isNumber()) throw error(path, "expected a number, got " + kind(n));
+            double v = n.doubleValue();
+            if (!Double.isFinite(v)) throw error(path, "must be a finite number, got " + n.asText());
+            return v;
+        }
+
+        double positive(double v, String path) throws CourseException {
+            if (!(v > 0)) throw error(path, "must be > 0, got " + CourseValidator.number(v));
+            return v;
+        }
+
+        double nonNegative(double v, String path) throws CourseException {
+            if (!(v >= 0)) throw error(path, "must be >= 0, got " + CourseValidator.number(v));
+            return v;
+        }
+
+        Vec2 vec(JsonNode n, String path) throws CourseException {
+            if (!n.isArray() || n.size() != 2 || !n.get(0).isNumber() || !n.get(1).isNumber()) {
+                throw error(path, "expected [x, y], got " + show(n));
+            }
+            return new Vec2(number(n.get(0), path + "[0]"), number(n.get(1), path + "[1]"));
+        }
+
+        private static String join(String path, String field) {
+            return path.isEmpty() ? field : path + "." + field;
+        }
+
+        /** "a string", "an object", ... for "expected X, got Y". */
+        private static String kind(JsonNode n) {
+            switch (n.getNodeType()) {
+                case STRING: return "a string";
+                case NUMBER: return "a number";
+                case BOOLEAN: return "a boolean";
+                case NULL: return "null";
+                case ARRAY: return "an array";
+                case OBJECT: return "an object";
+                default: return n.getNodeType().toString().toLowerCase();
+            }
+        }
+
+        /** The value as compact JSON, cut short when long: "star", [1,"a"]. */
+        private static String show(JsonNode n) {
+            String s = n.toString();
+            return s.length() > 60 ? s.substring(0, 57) + "..." : s;
+        }
+    }
+}

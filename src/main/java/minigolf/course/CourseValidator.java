@@ -1,0 +1,69 @@
+package minigolf.course;
+
+import java.math.BigDecimal;
+import java.math.MathContext;
+
+/** Checks of a course that need more than its own fields: where the start and the hole lie on the terrain. */
+public final class CourseValidator {
+    private CourseValidator() {
+    }
+
+    /**
+     * Checks that the start and the hole's centre are inside the bounds and on dry land
+     * (h &ge; 0 according to {@code probe}). Errors read e.g.
+     * {@code courses/x.json: start: (-3, 0) is in water (h = -0.12)}.
+     */
+    public static void checkPlacement(Course course, HeightProbe probe, String sourceName) throws CourseException {
+        checkInBounds(course, sourceName);
+        checkDry(course.start(), "start", probe, sourceName);
+        checkDry(course.hole().position(), "hole.position", probe, sourceName);
+    }
+
+    /** The part of {@link #checkPlacement} that needs no terrain: start and hole centre inside the bounds. */
+    static void checkInBounds(Course course, String sourceName) throws CourseException {
+        checkInBounds(course.start(), "start", course.bounds(), sourceName);
+        checkInBounds(course.hole().position(), "hole.position", course.bounds(), sourceName);
+    }
+
+    private static void checkInBounds(Vec2 p, String path, Bounds bounds, String sourceName) throws CourseException {
+        if (!bounds.contains(p.x(), p.y())) {
+            throw new CourseException(sourceName, path, point(p) + " is outside the bounds");
+        }
+    }
+
+    private static void checkDry(Vec2 p, String path, HeightProbe probe, String sourceName) throws CourseException {
+        double h;
+        try {
+            h = probe.height(p.x(), p.y());
+        } catch (RuntimeException e) {
+            throw new CourseException(sourceName, path,
+                    "cannot evaluate the terrain height at " + point(p) + ": " + e.getMessage(), e);
+        }
+        if (Double.isNaN(h)) {
+            throw new CourseException(sourceName, path, "the terrain height at " + point(p) + " is not a number");
+        }
+        if (h < 0) {
+            throw new CourseException(sourceName, path, point(p) + " is in water (h = " + approx(h) + ")");
+        }
+    }
+
+    static String point(Vec2 p) {
+        return "(" + number(p.x()) + ", " + number(p.y()) + ")";
+    }
+
+    /** A number as it was written: 0.15, -3, 1.0E-5 (integers without ".0"). */
+    static String number(double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e15 && !(v == 0 && 1 / v < 0)) {
+            return Long.toString((long) v);
+        }
+        return Double.toString(v);
+    }
+
+    /** A computed value to 4 significant digits: -0.1234. */
+    static String approx(double v) {
+        if (!Double.isFinite(v) || v == 0) return number(v);
+        double a = Math.abs(v);
+        if (a < 1e-4 || a >= 1e9) return String.format(java.util.Locale.ROOT, "%.3e", v);
+        return new BigDecimal(v).round(new MathContext(4)).stripTrailingZeros().toPlainString();
+    }
+}

@@ -1,0 +1,276 @@
+package minigolf.course;
+
+import com.fasterxml.jackson.core.io.JsonStringEncoder;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFileAttributeView;
+import java.nio.file.attribute.PosixFilePermission;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * Writes courses in the course-file format (format 1), fields in the documented order, so that
+ * {@code CourseLoader.parse(CourseWriter.toJson(c), ...)} equals {@code c} exactly: every double is
+ * written in Java's round-trip representation and read back to the same bits.
+ */
+public final class CourseWriter {
+    private CourseWriter() {
+    }
+
+    /**
+     * The course as pretty-printed JSON (ending in a newline).
+     *
+     * @throws IllegalArgumentException if a number is NaN or infinite, or a component is missing
+     */
+    public static String toJson(Course course) {
+        StringBuilder sb = new StringBuilder(4096);
+        sb.append("{\n");
+        sb.append("  \"format\": ").append(course.format()).append(",\n");
+        sb.append("  \"name\": ").append(quote(require(course.name(), "name"))).append(",\n");
+        sb.append("  \"terrain\": ");
+        terrain(sb, require(course.terrain(), "terrain"));
+        sb.append(",\n");
+        Bounds b = require(course.bounds(), "bounds");
+        sb.append("  \"bounds\": { \"min\": ");
+        vec(sb, b.minX(), b.minY(), "bounds.min");
+        sb.append(", \"max\": ");
+        vec(sb, b.maxX(), b.maxY(), "bounds.max");
+        sb.append(" },\n");
+        PhysicsSettings p = require(course.physics(), "physics");
+        sb.append("  \"physics\": { \"gravity\": ").append(num(p.gravity(), "physics.gravity"))
+                .append(", \"kineticFriction\": ").append(num(p.kineticFriction(), "physics.kineticFriction"))
+                .append(", \"staticFriction\": ").append(num(p.staticFriction(), "physics.staticFriction"))
+                .append(", \"maxSpeed\": ").append(num(p.maxSpeed(), "physics.maxSpeed"))
+                .append(", \"model\": ").append(quote(require(p.model(), "physics.model").jsonName())).append(" },\n");
+        sb.append("  \"start\": ");
+        vec(sb, require(course.start(), "start"), "start");
+        sb.append(",\n");
+        Hole h = require(course.hole(), "hole");
+        sb.append("  \"hole\": { \"position\": ");
+        vec(sb, require(h.position(), "hole.position"), "hole.position");
+        sb.append(", \"radius\": ").append(num(h.radius(), "hole.radius"))
+                .append(", \"rule\": ").append(quote(require(h.rule(), "hole.rule").jsonName()));
+        if (h.captureSpeed() != null) {
+            sb.append(", \"captureSpeed\": ").append(num(h.captureSpeed(), "hole.captureSpeed"));
+        }
+        sb.append(" },\n");
+        List<Zone> zones = course.zones();
+        if (zones.isEmpty()) {
+            sb.append("  \"zones\": [],\n");
+        } else {
+            sb.append("  \"zones\": [\n");
+            for (int i = 0; i < zones.size(); i++) {
+                String zp = "zones[" + i + "]";
+                Zone z = zones.get(i);
+                sb.append("    { \"shape\": ");
+                shape(sb, require(z.shape(), zp + ".shape"), zp + ".shape");
+                sb.append(", \"kineticFriction\": ").append(num(z.kineticFriction(), zp + ".kineticFriction"))
+                        .append(", \"staticFriction\": ").append(num(z.staticFriction(), zp + ".staticFriction"))
+                        .append(" }").append(i + 1 < zones.size() ? ",\n" : "\n");
+            }
+            sb.append("  ],\n");
+        }
+        sb.append("  \"obstacles\": []\n");
+        sb.append("}\n");
+        return sb.toString();
+    }
+
+    /**
+     * Saves the course atomically: the JSON goes to a temporary file in the same directory, is
+     * forced to disk and then moved over {@code file} (an atomic rename where the file system has
+     * one). If anything fails the previous file is left as it was and the temporary file removed.
+     * A course that would not load again (e.g. a negative hole radius) is not written.
+     */
+    public static void save(Course course, Path file) throws CourseException {
+        String source = String.valueOf(file);
+        String json;
+        try {
+            json = toJson(course);
+        } catch (RuntimeException e) {
+            throw new CourseException(source, null, "cannot save: " + e.getMessage(), e);
+        }
+        try {
+            CourseLoader.parse(json, source);
+        } catch (CourseException e) {
+            throw new CourseException(source, null, "cannot save: " + e.detail(), e);
+        }
+        byte[] bytes = json.getBytes(StandardCharsets.UTF_8);
+        Path tmp = null;
+        String step = "cannot resolve the path";
+        try {
+            Path target = file.toAbsolutePath();
+            if (Files.isSymbolicLink(target)) target = target.toRealPath(); // replace the file, keep the link
+            Path dir = target.getParent();
+            step = "cannot create a temporary file in " + dir;
+            tmp = createTemp(dir, target.getFileName().toString());
+            copyPermissions(target, tmp);
+            step = "cannot write " + tmp.getFileName();
+            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE)) {
+                ByteBuffer buf = ByteBuffer.wrap(bytes);
+                while (buf.hasRemaining()) ch.write(buf);
+                ch.force(true);
+            }
+            step = "cannot replace the file";
+            try {
+                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+            tmp = null;
+            syncDirectory(dir);
+        } catch (IOException | RuntimeException e) {
+            throw new CourseException(source, null, "cannot save: " + step + ": " + reason(e), e);
+        } finally {
+            if (tmp != null) {
+                try {
+                    Files.deleteIfExists(tmp);
+                } catch (IOException | RuntimeException ignored) {
+                    // nothing more to do; the original file is untouched either way
+                }
+            }
+        }
+    }
+
+    /** The operating system's reason without the file names ("Permission denied", "Is a directory"). */
+    private static String reason(Exception e) {
+        if (e instanceof java.nio.file.NoSuchFileException) return "no such file or directory";
+        if (e instanceof java.nio.file.AccessDeniedException) return "permission denied";
+        if (e instanceof java.nio.file.FileSystemException f && f.getReason() != null) return f.getReason();
+        String m = e.getMessage();
+        return m == null || m.isBlank() ? e.getClass().getSimpleName() : m.lines().findFirst().orElse(m);
+    }
+
+    /** A new empty file ".name.<random>.tmp" next to the target, created with the default permissions. */
+    private static Path createTemp(Path dir, String name) throws IOException {
+        for (int attempt = 0; ; attempt++) {
+            String suffix = Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1);
+            Path tmp = dir.resolve("." + name + "." + suffix + ".tmp");
+            try {
+                Files.newByteChannel(tmp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
+                return tmp;
+            } catch (FileAlreadyExistsException e) {
+                if (attempt >= 10) throw e;
+            }
+        }
+    }
+
+    private static void copyPermissions(Path from, Path to) {
+        try {
+            PosixFileAttributeView src = Files.getFileAttributeView(from, PosixFileAttributeView.class);
+            PosixFileAttributeView dst = Files.getFileAttributeView(to, PosixFileAttributeView.class);
+            if (src == null || dst == null || !Files.exists(from)) return;
+            Set<PosixFilePermission> perms = src.readAttributes().permissions();
+            dst.setPermissions(perms);
+        } catch (IOException | RuntimeException ignored) {
+            // best effort: the file keeps the default permissions
+        }
+    }
+
+    /** Makes the rename itself durable where the platform allows it (Linux, macOS); best effort. */
+    private static void syncDirectory(Path dir) {
+        try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
+            ch.force(true);
+        } catch (IOException | RuntimeException ignored) {
+            // not supported on this platform (e.g. Windows)
+        }
+    }
+
+    // ---- pieces ----
+
+    private static void terrain(StringBuilder sb, TerrainSpec t) {
+        if (t instanceof TerrainSpec.HeightExpression e) {
+            sb.append("{ \"height\": ").append(quote(require(e.source(), "terrain.height"))).append(" }");
+            return;
+        }
+        TerrainSpec.HeightGrid g = (TerrainSpec.HeightGrid) t;
+        sb.append("{\n    \"grid\": {\n      \"origin\": ");
+        vec(sb, require(g.origin(), "terrain.grid.origin"), "terrain.grid.origin");
+        sb.append(",\n      \"spacing\": ").append(num(g.spacing(), "terrain.grid.spacing"));
+        sb.append(",\n      \"heights\": ");
+        matrix(sb, require(g.heights(), "terrain.grid.heights"), "terrain.grid.heights");
+        if (g.kineticFriction() != null) {
+            sb.append(",\n      \"kineticFriction\": ");
+            matrix(sb, g.kineticFriction(), "terrain.grid.kineticFriction");
+        }
+        if (g.staticFriction() != null) {
+            sb.append(",\n      \"staticFriction\": ");
+            matrix(sb, g.staticFriction(), "terrain.grid.staticFriction");
+        }
+        sb.append("\n    }\n  }");
+    }
+
+    /** One row per line. */
+    private static void matrix(StringBuilder sb, double[][] m, String path) {
+        sb.append("[\n");
+        for (int j = 0; j < m.length; j++) {
+            double[] row = require(m[j], path + "[" + j + "]");
+            sb.append("        [");
+            for (int i = 0; i < row.length; i++) {
+                if (i > 0) sb.append(", ");
+                sb.append(num(row[i], path));
+            }
+            sb.append(j + 1 < m.length ? "],\n" : "]\n");
+        }
+        sb.append("      ]");
+    }
+
+    private static void shape(StringBuilder sb, Shape s, String path) {
+        if (s instanceof Shape.Rect r) {
+            sb.append("{ \"type\": \"rect\", \"min\": ");
+            vec(sb, require(r.min(), path + ".min"), path + ".min");
+            sb.append(", \"max\": ");
+            vec(sb, require(r.max(), path + ".max"), path + ".max");
+            sb.append(" }");
+        } else if (s instanceof Shape.Circle c) {
+            sb.append("{ \"type\": \"circle\", \"center\": ");
+            vec(sb, require(c.center(), path + ".center"), path + ".center");
+            sb.append(", \"radius\": ").append(num(c.radius(), path + ".radius")).append(" }");
+        } else {
+            Shape.Polygon p = (Shape.Polygon) s;
+            sb.append("{ \"type\": \"polygon\", \"points\": [");
+            for (int i = 0; i < p.points().size(); i++) {
+                if (i > 0) sb.append(", ");
+                vec(sb, require(p.points().get(i), path + ".points"), path + ".points");
+            }
+            sb.append("] }");
+        }
+    }
+
+    private static void vec(StringBuilder sb, Vec2 v, String path) {
+        vec(sb, v.x(), v.y(), path);
+    }
+
+    private static void vec(StringBuilder sb, double x, double y, String path) {
+        sb.append('[').append(num(x, path)).append(", ").append(num(y, path)).append(']');
+    }
+
+    /**
+     * A double in a form Jackson reads back to the same bits: Java's round-trip repr, with a
+     * trailing ".0" dropped for integers (but -0.0 stays "-0.0": "-0" would read back as +0).
+     */
+    static String num(double v, String path) {
+        if (!Double.isFinite(v)) throw new IllegalArgumentException(path + ": not a finite number: " + v);
+        String s = Double.toString(v);
+        if (s.endsWith(".0") && !(v == 0 && 1 / v < 0)) s = s.substring(0, s.length() - 2);
+        return s;
+    }
+
+    private static String quote(String s) {
+        return '"' + new String(JsonStringEncoder.getInstance().quoteAsString(s)) + '"';
+    }
+
+    private static <T> T require(T value, String path) {
+        if (value == null) throw new IllegalArgumentException(path + ": missing (null)");
+        return value;
+    }
+}
