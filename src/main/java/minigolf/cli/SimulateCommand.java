@@ -1,0 +1,90 @@
+package minigolf.cli;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import minigolf.course.PhysicsModel;
+import minigolf.io.AtomicFile;
+import minigolf.physics.Integrator;
+import minigolf.physics.ShotResult;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.Simulator;
+import minigolf.physics.World;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+@Command(name = "simulate", description = "Simulates one shot from the course's start and prints the result as JSON.")
+final class SimulateCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
+    Path course;
+
+    @Option(names = "--velocity", required = true, split = ",", paramLabel = "VX,VY",
+            description = "The shot's velocity in m/s, e.g. 3.2,0.5")
+    double[] velocity;
+
+    @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator (default rk4).")
+    String integrator = "rk4";
+
+    @Option(names = "--dt", paramLabel = "S", description = "Time step in seconds (default 1/60).")
+    double dt = SimulationSettings.DEFAULT_DT;
+
+    @Option(names = "--model", paramLabel = "classic|complete", description = "Overrides the course's physics model.")
+    String model;
+
+    @Option(names = "--trajectory", paramLabel = "FILE.csv", description = "Writes t,x,y,vx,vy for every step.")
+    Path trajectory;
+
+    @Override
+    public Integer call() throws IOException {
+        if (velocity.length != 2) {
+            throw new UserError("--velocity: expected two components VX,VY, got " + velocity.length);
+        }
+        Integrator chosen = Integrator.fromName(integrator);
+        if (chosen == null) throw new UserError("--integrator: expected rk4, rk2 or euler, got '" + integrator + "'");
+        if (!(dt > 0) || dt > 0.1) throw new UserError("--dt: must be in (0, 0.1] seconds, got " + dt);
+        World world = CourseArgument.load(course);
+        if (model != null) {
+            PhysicsModel m = PhysicsModel.fromJsonName(model);
+            if (m == null) throw new UserError("--model: expected classic or complete, got '" + model + "'");
+            world = world.withModel(m);
+        }
+        Simulator simulator = new Simulator(world, SimulationSettings.DEFAULT.withIntegrator(chosen).withDt(dt));
+        StringBuilder csv = trajectory == null ? null : new StringBuilder("t,x,y,vx,vy\n");
+        double x0 = world.course().start().x(), y0 = world.course().start().y();
+        if (csv != null) appendRow(csv, 0, x0, y0, velocity[0], velocity[1]);
+        ShotResult result;
+        try {
+            result = simulator.simulate(x0, y0, velocity[0], velocity[1],
+                    csv == null ? null : (t, x, y, vx, vy) -> appendRow(csv, t, x, y, vx, vy));
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--velocity: " + e.getMessage());
+        }
+        if (csv != null) {
+            try {
+                AtomicFile.write(trajectory, csv.toString().getBytes(StandardCharsets.UTF_8));
+            } catch (IOException e) {
+                throw new UserError(trajectory + ": cannot write: " + e.getMessage());
+            }
+        }
+        ObjectNode out = Json.object();
+        out.put("outcome", result.outcome().jsonName());
+        out.set("end", Json.array(result.endX(), result.endY()));
+        out.put("time", result.time());
+        out.put("steps", result.steps());
+        spec.commandLine().getOut().println(Json.write(out));
+        return 0;
+    }
+
+    private static void appendRow(StringBuilder csv, double t, double x, double y, double vx, double vy) {
+        csv.append(String.format(Locale.ROOT, "%.6f,%.9f,%.9f,%.9f,%.9f%n", t, x, y, vx, vy));
+    }
+}
