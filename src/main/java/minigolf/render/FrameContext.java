@@ -1,0 +1,48 @@
+package minigolf.render;
+
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+
+/**
+ * What every pass needs for one frame: the camera matrices and eye, the sun, the viewport. Built
+ * once per frame by {@link SceneRenderer} and handed to the passes in order. Later passes (shadows,
+ * reflections) can add their products here.
+ */
+public final class FrameContext {
+    public final Matrix4f view = new Matrix4f();
+    public final Matrix4f projection = new Matrix4f();
+    public final Matrix4f viewProjection = new Matrix4f();
+    public final Matrix4f inverseViewProjection = new Matrix4f();
+    public final Vector3f eye = new Vector3f();
+    public final Sun sun;
+    public int viewportWidth;
+    public int viewportHeight;
+    /** Seconds since the renderer started; 0 in screenshots (deterministic frames). */
+    public float time;
+
+    public FrameContext(Sun sun) {
+        this.sun = sun;
+    }
+
+    /** Fills the camera part for a viewport of width x height pixels. */
+    public FrameContext update(OrbitCamera camera, int width, int height, float time) {
+        viewportWidth = width;
+        viewportHeight = height;
+        float aspect = (float) width / Math.max(1, height);
+        camera.view(view);
+        camera.projection(aspect, projection);
+        projection.mul(view, viewProjection);
+        viewProjection.invert(inverseViewProjection);
+        eye.set(camera.eye());
+        this.time = time;
+        return this;
+    }
+
+    /** One directional light. {@code direction} points from the ground towards the sun (unit length). */
+    public record Sun(Vector3f direction, Vector3f color, Vector3f skyAmbient, Vector3f groundAmbient) {
+        public static Sun afternoon() {
+            return new Sun(new Vector3f(-0.45f, -0.55f, 0.70f).normalize(), new Vector3f(1.0f, 0.96f, 0.88f),
+                    new Vector3f(0.40f, 0.46f, 0.56f), new Vector3f(0.24f, 0.22f, 0.16f));
+        }
+    }
+}

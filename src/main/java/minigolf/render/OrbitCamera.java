@@ -1,0 +1,227 @@
+package minigolf.render;
+
+import minigolf.course.Bounds;
+import minigolf.course.Course;
+import minigolf.terrain.Terrain;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A camera orbiting a target point (normally the ball) in a z-up world. The eye sits at
+ * {@code target + distance * (cos(pitch) cos(yaw), cos(pitch) sin(yaw), sin(pitch))}: yaw is the
+ * direction from the target towards the eye, pitch the eye's elevation. Pitch and distance are clamped.
+ */
+public final class OrbitCamera {
+    public static final float MIN_PITCH = (float) Math.toRadians(4);
+    public static final float MAX_PITCH = (float) Math.toRadians(89);
+    public static final float DEFAULT_PITCH = (float) Math.toRadians(34);
+    public static final float BALL_SCREEN_SHIFT = -0.4f;
+    public static final float FOV_Y = (float) Math.toRadians(45);
+
+    private final Vector3f target = new Vector3f();
+    private float yaw;
+    private float pitch;
+    private float distance;
+    /** Where the target appears vertically, in NDC (0 = centre, -0.4 = a fifth of the height below it). */
+    private float screenShiftY;
+    private float minDistance = 0.3f;
+    private float maxDistance = 200f;
+
+    private final Vector3f homeTarget = new Vector3f();
+    private float homeYaw, homePitch, homeDistance;
+
+    public OrbitCamera(Vector3f target, float yaw, float pitch, float distance) {
+        this.target.set(target);
+        this.yaw = yaw;
+        this.pitch = clampPitch(pitch);
+        this.distance = clampDistance(distance);
+        setHome();
+    }
+
+    /**
+     * The opening view of a course: behind the ball (the course start) looking towards the hole, at
+     * {@link #DEFAULT_PITCH}, far enough that the whole course fits an image of this aspect ratio.
+     */
+    public static OrbitCamera behindBall(Course course, Terrain terrain, float aspect) {
+        Vector3f ball = new Vector3f((float) course.start().x(), (float) course.start().y(),
+                (float) terrain.height(course.start().x(), course.start().y()));
+        double dx = course.hole().position().x() - course.start().x();
+        double dy = course.hole().position().y() - course.start().y();
+        if (Math.hypot(dx, dy) < 1e-9) {
+            dx = -1;
+            dy = 0;
+        }
+        float yaw = (float) Math.atan2(-dy, -dx);
+        OrbitCamera cam = new OrbitCamera(ball, yaw, DEFAULT_PITCH, 10);
+        // The ball sits in the lower part of the picture, leaving the room above it for the course ahead.
+        cam.screenShiftY = BALL_SCREEN_SHIFT;
+        cam.fit(courseOutline(course, terrain), aspect, 0.92f);
+        cam.maxDistance = Math.max(cam.distance * 3, 20);
+        cam.setHome();
+        return cam;
+    }
+
+    /** A view from straight above-ish (pitch 80 degrees) onto {@code target}, fitting the course. */
+    public static OrbitCamera topDown(Course course, Terrain terrain, Vector3f target, float aspect) {
+        OrbitCamera cam = new OrbitCamera(target, (float) (-Math.PI / 2), (float) Math.toRadians(80), 10);
+        cam.fit(courseOutline(course, terrain), aspect, 0.95f);
+        cam.setHome();
+        return cam;
+    }
+
+    /** Points that must be in view: the course's corners and edge midpoints, top and foot of the side walls, and the flag top. */
+    static List<Vector3f> courseOutline(Course course, Terrain terrain) {
+        Bounds b = course.bounds();
+        List<Vector3f> pts = new ArrayList<>();
+        for (int i = 0; i <= 4; i++) {
+            for (int j = 0; j <= 4; j++) {
+                if (i != 0 && i != 4 && j != 0 && j != 4) continue;
+                double x = b.minX() + b.width() * i / 4, y = b.minY() + b.depth() * j / 4;
+                float z = (float) terrain.height(x, y);
+                pts.add(new Vector3f((float) x, (float) y, Math.max(0, z)));
+                pts.add(new Vector3f((float) x, (float) y, Math.min(0, z) - 0.3f)); // the side wall's foot
+            }
+        }
+        double hx = course.hole().position().x(), hy = course.hole().position().y();
+        pts.add(new Vector3f((float) hx, (float) hy, (float) terrain.height(hx, hy) + (float) ObjectsPass.FLAG_HEIGHT));
+        return pts;
+    }
+
+    /** Sets the smallest distance at which every point projects inside [-margin, margin] in NDC. */
+    public void fit(List<Vector3f> points, float aspect, float margin) {
+        float lo = 0.2f, hi = 2000f;
+        float savedMax = maxDistance, savedMin = minDistance;
+        maxDistance = hi;
+        minDistance = lo;
+        Matrix4f vp = new Matrix4f();
+        Vector4f clip = new Vector4f();
+        for (int iter = 0; iter < 40; iter++) {
+            float mid = 0.5f * (lo + hi);
+            distance = mid;
+            viewProjection(aspect, vp);
+            boolean fits = true;
+            for (Vector3f p : points) {
+                clip.set(p, 1).mul(vp);
+                if (clip.w <= 0 || Math.abs(clip.x / clip.w) > margin || Math.abs(clip.y / clip.w) > margin) {
+                    fits = false;
+                    break;
+                }
+            }
+            if (fits) hi = mid;
+            else lo = mid;
+        }
+        distance = hi;
+        maxDistance = Math.max(savedMax, hi);
+        minDistance = Math.min(savedMin, hi);
+    }
+
+    private void setHome() {
+        homeTarget.set(target);
+        homeYaw = yaw;
+        homePitch = pitch;
+        homeDistance = distance;
+    }
+
+    /** Back to the view this camera was created (or framed) with. */
+    public void reset() {
+        target.set(homeTarget);
+        yaw = homeYaw;
+        pitch = homePitch;
+        distance = homeDistance;
+    }
+
+    public void rotate(float deltaYaw, float deltaPitch) {
+        yaw = (float) ((yaw + deltaYaw) % (2 * Math.PI));
+        pitch = clampPitch(pitch + deltaPitch);
+    }
+
+    /** Moves the target along the ground by a drag of (dx, dy) pixels in a viewport {@code viewportHeight} pixels tall. */
+    public void pan(float dxPixels, float dyPixels, int viewportHeight) {
+        float metresPerPixel = (float) (2 * distance * Math.tan(FOV_Y / 2) / Math.max(1, viewportHeight));
+        float c = (float) Math.cos(yaw), s = (float) Math.sin(yaw);
+        // Screen right on the ground is (-sin yaw, cos yaw); screen up on the ground is (-cos yaw, -sin yaw).
+        target.x += (s * dxPixels - c * dyPixels) * metresPerPixel;
+        target.y += (-c * dxPixels - s * dyPixels) * metresPerPixel;
+    }
+
+    /** Zooms in for positive steps (mouse wheel forward), out for negative; 10% per step. */
+    public void zoom(float steps) {
+        distance = clampDistance((float) (distance * Math.pow(0.9, steps)));
+    }
+
+    public void setTarget(Vector3f t) {
+        target.set(t);
+    }
+
+    public Vector3f target() {
+        return new Vector3f(target);
+    }
+
+    public float yaw() {
+        return yaw;
+    }
+
+    public float pitch() {
+        return pitch;
+    }
+
+    public float screenShiftY() {
+        return screenShiftY;
+    }
+
+    public void setScreenShiftY(float ndc) {
+        screenShiftY = ndc;
+    }
+
+    public float distance() {
+        return distance;
+    }
+
+    public Vector3f eye() {
+        float cp = (float) Math.cos(pitch);
+        return new Vector3f(target).add(distance * cp * (float) Math.cos(yaw), distance * cp * (float) Math.sin(yaw),
+                distance * (float) Math.sin(pitch));
+    }
+
+    public float near() {
+        return Math.max(0.01f, Math.min(0.5f, distance / 200));
+    }
+
+    public float far() {
+        return Math.max(150f, distance * 20);
+    }
+
+    public Matrix4f view(Matrix4f dest) {
+        return dest.setLookAt(eye(), target, new Vector3f(0, 0, 1));
+    }
+
+    public Matrix4f projection(float aspect, Matrix4f dest) {
+        // A lens shift: the image moves on screen, the view direction does not.
+        return dest.translation(0, screenShiftY, 0).perspective(FOV_Y, aspect, near(), far());
+    }
+
+    public Matrix4f viewProjection(float aspect, Matrix4f dest) {
+        Matrix4f v = view(new Matrix4f());
+        return projection(aspect, dest).mul(v);
+    }
+
+    /** Where a world point lands in a width x height image, in pixels from the top-left; null if behind the eye. */
+    public float[] project(Vector3f world, int width, int height) {
+        Vector4f clip = new Vector4f(world, 1).mul(viewProjection((float) width / height, new Matrix4f()));
+        if (clip.w <= 0) return null;
+        float nx = clip.x / clip.w, ny = clip.y / clip.w;
+        return new float[]{(nx * 0.5f + 0.5f) * width, (0.5f - ny * 0.5f) * height};
+    }
+
+    private float clampPitch(float p) {
+        return Math.max(MIN_PITCH, Math.min(MAX_PITCH, p));
+    }
+
+    private float clampDistance(float d) {
+        return Math.max(minDistance, Math.min(maxDistance, d));
+    }
+}

@@ -1,0 +1,160 @@
+package minigolf.render;
+
+import org.joml.Matrix3f;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+import org.lwjgl.system.MemoryStack;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import static org.lwjgl.opengl.GL20.*;
+
+/**
+ * A linked vertex + fragment program. Sources come from the classpath ({@code /shaders/NAME.vert} and
+ * {@code /shaders/NAME.frag}) without a {@code #version} line: {@code #version 330 core} is prepended
+ * here, as LWJGL's demos do, so one place decides the GLSL version. A line
+ * {@code #include "file.glsl"} is replaced by {@code /shaders/file.glsl} (shared lighting code).
+ */
+public final class ShaderProgram implements AutoCloseable {
+    public static final String VERSION_LINE = "#version 330 core\n";
+    private static final Pattern INCLUDE = Pattern.compile("(?m)^\\s*#include\\s+\"([^\"]+)\"\\s*$");
+
+    private final String name;
+    private final int program;
+    private final Map<String, Integer> locations = new HashMap<>();
+
+    private ShaderProgram(String name, int program) {
+        this.name = name;
+        this.program = program;
+    }
+
+    /** Loads, compiles and links {@code /shaders/NAME.vert} and {@code /shaders/NAME.frag}. */
+    public static ShaderProgram load(String name) {
+        return fromSource(name, readResource(name + ".vert"), readResource(name + ".frag"));
+    }
+
+    /** Compiles and links the given sources; errors name {@code NAME.vert} / {@code NAME.frag}. */
+    public static ShaderProgram fromSource(String name, String vertexSource, String fragmentSource) {
+        int vs = compile(name + ".vert", GL_VERTEX_SHADER, vertexSource);
+        int fs;
+        try {
+            fs = compile(name + ".frag", GL_FRAGMENT_SHADER, fragmentSource);
+        } catch (RuntimeException e) {
+            glDeleteShader(vs);
+            throw e;
+        }
+        int program = glCreateProgram();
+        glAttachShader(program, vs);
+        glAttachShader(program, fs);
+        glLinkProgram(program);
+        glDetachShader(program, vs);
+        glDetachShader(program, fs);
+        glDeleteShader(vs);
+        glDeleteShader(fs);
+        if (glGetProgrami(program, GL_LINK_STATUS) != GL_TRUE) {
+            String log = glGetProgramInfoLog(program);
+            glDeleteProgram(program);
+            throw new RenderException("Shader program '" + name + "' failed to link:\n" + log.strip());
+        }
+        return new ShaderProgram(name, program);
+    }
+
+    private static int compile(String shaderName, int type, String source) {
+        int shader = glCreateShader(type);
+        glShaderSource(shader, withVersion(source));
+        glCompileShader(shader);
+        if (glGetShaderi(shader, GL_COMPILE_STATUS) != GL_TRUE) {
+            String log = glGetShaderInfoLog(shader);
+            glDeleteShader(shader);
+            throw new RenderException("Shader '" + shaderName + "' failed to compile:\n" + log.strip());
+        }
+        return shader;
+    }
+
+    static String withVersion(String source) {
+        return source.stripLeading().startsWith("#version") ? source : VERSION_LINE + source;
+    }
+
+    /** The text of {@code /shaders/FILE} with its {@code #include}s expanded. */
+    public static String readResource(String file) {
+        return expandIncludes(file, new HashSet<>());
+    }
+
+    private static String expandIncludes(String file, Set<String> seen) {
+        if (!seen.add(file)) throw new RenderException("Shader include cycle at '" + file + "'");
+        String text;
+        try (InputStream in = ShaderProgram.class.getResourceAsStream("/shaders/" + file)) {
+            if (in == null) throw new RenderException("Shader source '/shaders/" + file + "' is not on the classpath");
+            text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new RenderException("Could not read shader source '/shaders/" + file + "'", e);
+        }
+        Matcher m = INCLUDE.matcher(text);
+        StringBuilder out = new StringBuilder();
+        while (m.find()) {
+            m.appendReplacement(out, Matcher.quoteReplacement(expandIncludes(m.group(1), seen)));
+        }
+        m.appendTail(out);
+        seen.remove(file);
+        return out.toString();
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public void use() {
+        glUseProgram(program);
+    }
+
+    /** The uniform's location, or -1 when the linker dropped it (setting -1 is a no-op in GL). */
+    public int location(String uniform) {
+        return locations.computeIfAbsent(uniform, u -> glGetUniformLocation(program, u));
+    }
+
+    public void set(String uniform, Matrix4f m) {
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            glUniformMatrix4fv(location(uniform), false, m.get(stack.mallocFloat(16)));
+        }
+    }
+
+    public void set(String uniform, Matrix3f m) {
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            glUniformMatrix3fv(location(uniform), false, m.get(stack.mallocFloat(9)));
+        }
+    }
+
+    public void set(String uniform, Vector3f v) {
+        glUniform3f(location(uniform), v.x, v.y, v.z);
+    }
+
+    public void set(String uniform, Vector4f v) {
+        glUniform4f(location(uniform), v.x, v.y, v.z, v.w);
+    }
+
+    public void set(String uniform, float x, float y, float z) {
+        glUniform3f(location(uniform), x, y, z);
+    }
+
+    public void set(String uniform, float v) {
+        glUniform1f(location(uniform), v);
+    }
+
+    public void set(String uniform, int v) {
+        glUniform1i(location(uniform), v);
+    }
+
+    @Override
+    public void close() {
+        glDeleteProgram(program);
+    }
+}

@@ -1,0 +1,163 @@
+package minigolf.render;
+
+import java.util.HashMap;
+import java.util.Map;
+import java.util.function.DoubleBinaryOperator;
+
+/** Small procedural meshes in the position/normal/colour layout ({@link MeshData#PNC}). */
+public final class Shapes {
+    private Shapes() {
+    }
+
+    /** A unit icosphere (radius 1, centred on the origin) subdivided {@code subdivisions} times. */
+    public static MeshData icosphere(int subdivisions, float r, float g, float b) {
+        double t = (1 + Math.sqrt(5)) / 2;
+        double[][] base = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+        int[] faces = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6,
+                7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+        java.util.List<double[]> pts = new java.util.ArrayList<>();
+        for (double[] p : base) pts.add(normalize(p));
+        for (int s = 0; s < subdivisions; s++) {
+            Map<Long, Integer> mid = new HashMap<>();
+            int[] next = new int[faces.length * 4];
+            int q = 0;
+            for (int f = 0; f < faces.length; f += 3) {
+                int a = faces[f], bb = faces[f + 1], c = faces[f + 2];
+                int ab = midpoint(pts, mid, a, bb), bc = midpoint(pts, mid, bb, c), ca = midpoint(pts, mid, c, a);
+                int[] tris = {a, ab, ca, bb, bc, ab, c, ca, bc, ab, bc, ca};
+                System.arraycopy(tris, 0, next, q, 12);
+                q += 12;
+            }
+            faces = next;
+        }
+        float[] v = new float[pts.size() * 9];
+        for (int i = 0; i < pts.size(); i++) {
+            double[] p = pts.get(i);
+            int o = i * 9;
+            v[o] = v[o + 3] = (float) p[0];
+            v[o + 1] = v[o + 4] = (float) p[1];
+            v[o + 2] = v[o + 5] = (float) p[2];
+            v[o + 6] = r;
+            v[o + 7] = g;
+            v[o + 8] = b;
+        }
+        return new MeshData(MeshData.PNC, v, faces);
+    }
+
+    private static int midpoint(java.util.List<double[]> pts, Map<Long, Integer> cache, int a, int b) {
+        long key = ((long) Math.min(a, b) << 32) | Math.max(a, b);
+        return cache.computeIfAbsent(key, k -> {
+            double[] p = pts.get(a), q = pts.get(b);
+            pts.add(normalize(new double[]{p[0] + q[0], p[1] + q[1], p[2] + q[2]}));
+            return pts.size() - 1;
+        });
+    }
+
+    private static double[] normalize(double[] p) {
+        double l = Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        return new double[]{p[0] / l, p[1] / l, p[2] / l};
+    }
+
+    /**
+     * A disc of {@code radius} around (cx, cy) draped over a surface: each vertex sits at
+     * {@code height(x, y) + lift}, so it follows slopes without sinking into them.
+     */
+    public static MeshData drapedDisc(double cx, double cy, double radius, int segments, int rings,
+                                      DoubleBinaryOperator height, double lift, float r, float g, float b) {
+        int count = 1 + rings * segments;
+        float[] v = new float[count * 9];
+        int p = 0;
+        p = putPnc(v, p, cx, cy, height.applyAsDouble(cx, cy) + lift, 0, 0, 1, r, g, b);
+        for (int ring = 1; ring <= rings; ring++) {
+            double rr = radius * ring / rings;
+            for (int s = 0; s < segments; s++) {
+                double a = 2 * Math.PI * s / segments;
+                double x = cx + rr * Math.cos(a), y = cy + rr * Math.sin(a);
+                p = putPnc(v, p, x, y, height.applyAsDouble(x, y) + lift, 0, 0, 1, r, g, b);
+            }
+        }
+        int[] idx = new int[3 * segments * (2 * rings - 1)];
+        int q = 0;
+        for (int s = 0; s < segments; s++) {
+            idx[q++] = 0;
+            idx[q++] = 1 + s;
+            idx[q++] = 1 + (s + 1) % segments;
+        }
+        for (int ring = 1; ring < rings; ring++) {
+            int inner = 1 + (ring - 1) * segments, outer = 1 + ring * segments;
+            for (int s = 0; s < segments; s++) {
+                int s1 = (s + 1) % segments;
+                idx[q++] = inner + s;
+                idx[q++] = outer + s;
+                idx[q++] = outer + s1;
+                idx[q++] = inner + s;
+                idx[q++] = outer + s1;
+                idx[q++] = inner + s1;
+            }
+        }
+        return new MeshData(MeshData.PNC, v, idx);
+    }
+
+    /** An open cylinder along +z from (x, y, z0) to (x, y, z1), with a flat top cap. */
+    public static MeshData cylinder(double x, double y, double z0, double z1, double radius, int segments,
+                                    float r, float g, float b) {
+        float[] v = new float[(2 * segments + segments + 1) * 9];
+        int p = 0;
+        for (int s = 0; s < segments; s++) {
+            double a = 2 * Math.PI * s / segments, c = Math.cos(a), sn = Math.sin(a);
+            p = putPnc(v, p, x + radius * c, y + radius * sn, z0, c, sn, 0, r, g, b);
+            p = putPnc(v, p, x + radius * c, y + radius * sn, z1, c, sn, 0, r, g, b);
+        }
+        int capCentre = 2 * segments;
+        p = putPnc(v, p, x, y, z1, 0, 0, 1, r, g, b);
+        for (int s = 0; s < segments; s++) {
+            double a = 2 * Math.PI * s / segments;
+            p = putPnc(v, p, x + radius * Math.cos(a), y + radius * Math.sin(a), z1, 0, 0, 1, r, g, b);
+        }
+        int[] idx = new int[segments * 9];
+        int q = 0;
+        for (int s = 0; s < segments; s++) {
+            int s1 = (s + 1) % segments;
+            int b0 = 2 * s, t0 = 2 * s + 1, b1 = 2 * s1, t1 = 2 * s1 + 1;
+            idx[q++] = b0;
+            idx[q++] = b1;
+            idx[q++] = t1;
+            idx[q++] = b0;
+            idx[q++] = t1;
+            idx[q++] = t0;
+            idx[q++] = capCentre;
+            idx[q++] = capCentre + 1 + s;
+            idx[q++] = capCentre + 1 + s1;
+        }
+        return new MeshData(MeshData.PNC, v, idx);
+    }
+
+    /** One flat triangle (drawn double-sided: back faces are lit with the flipped normal in the shader). */
+    public static MeshData triangle(double[] a, double[] b, double[] c, float r, float g, float bl) {
+        double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+        double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+        double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        double l = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        float[] v = new float[27];
+        int p = 0;
+        for (double[] pt : new double[][]{a, b, c}) {
+            p = putPnc(v, p, pt[0], pt[1], pt[2], nx / l, ny / l, nz / l, r, g, bl);
+        }
+        return new MeshData(MeshData.PNC, v, new int[]{0, 1, 2});
+    }
+
+    static int putPnc(float[] v, int p, double x, double y, double z, double nx, double ny, double nz,
+                      float r, float g, float b) {
+        v[p++] = (float) x;
+        v[p++] = (float) y;
+        v[p++] = (float) z;
+        v[p++] = (float) nx;
+        v[p++] = (float) ny;
+        v[p++] = (float) nz;
+        v[p++] = r;
+        v[p++] = g;
+        v[p++] = b;
+        return p;
+    }
+}

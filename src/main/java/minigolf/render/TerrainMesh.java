@@ -1,0 +1,241 @@
+package minigolf.render;
+
+import minigolf.course.Bounds;
+import minigolf.course.Course;
+import minigolf.course.Zone;
+import minigolf.terrain.Terrain;
+
+import java.util.List;
+
+/**
+ * The course surface as a triangle grid over the bounds (world z up: course x, y horizontal, height
+ * h up), plus earth-coloured side walls ("skirts") so the course reads as a solid slab. Normals come
+ * from the analytic gradient, n = normalize(-dh/dx, -dh/dy, 1). Built on the CPU; see {@link Mesh}.
+ */
+public final class TerrainMesh {
+    /** The finest sample spacing used, in metres (200 quads across a 10 m course). */
+    public static final double MIN_SPACING = 0.05;
+    /** The most quads along either axis. */
+    public static final int MAX_QUADS = 256;
+    /** Zones at least this rough are drawn as sand. */
+    public static final double SAND_FRICTION = 0.2;
+
+    /** How the surface is coloured. */
+    public enum ColorMode {
+        /** A putting green: darker low, lighter high, mowing stripes, sand and a muddy lake bed. */
+        GREEN,
+        /** A height map by altitude: blue (under water), green, yellow, brown, white. */
+        HEIGHT_MAP;
+
+        public ColorMode next() {
+            return values()[(ordinal() + 1) % values().length];
+        }
+    }
+
+    private final MeshData data;
+    private final int columns;
+    private final int rows;
+    private final double minHeight;
+    private final double maxHeight;
+
+    private TerrainMesh(MeshData data, int columns, int rows, double minHeight, double maxHeight) {
+        this.data = data;
+        this.columns = columns;
+        this.rows = rows;
+        this.minHeight = minHeight;
+        this.maxHeight = maxHeight;
+    }
+
+    /** The sample spacing for these bounds: {@link #MIN_SPACING}, coarser where needed to stay within {@link #MAX_QUADS}. */
+    public static double sampleSpacing(Bounds b) {
+        return Math.max(MIN_SPACING, Math.max(b.width(), b.depth()) / MAX_QUADS);
+    }
+
+    static int quads(double extent, double spacing) {
+        return Math.max(1, Math.min(MAX_QUADS, (int) Math.ceil(extent / spacing - 1e-9)));
+    }
+
+    public static TerrainMesh build(Course course, Terrain terrain, ColorMode mode) {
+        Bounds b = course.bounds();
+        double spacing = sampleSpacing(b);
+        int nx = quads(b.width(), spacing), ny = quads(b.depth(), spacing);
+        int cols = nx + 1, rows = ny + 1;
+        double dx = b.width() / nx, dy = b.depth() / ny;
+        double[] h = new double[cols * rows], gx = new double[cols * rows], gy = new double[cols * rows];
+        double[] s = new double[3];
+        double minH = Double.POSITIVE_INFINITY, maxH = Double.NEGATIVE_INFINITY;
+        for (int j = 0; j < rows; j++) {
+            for (int i = 0; i < cols; i++) {
+                terrain.sample(b.minX() + i * dx, b.minY() + j * dy, s);
+                int k = j * cols + i;
+                h[k] = s[0];
+                gx[k] = s[1];
+                gy[k] = s[2];
+                minH = Math.min(minH, s[0]);
+                maxH = Math.max(maxH, s[0]);
+            }
+        }
+        double base = Math.min(minH, 0) - Math.max(0.25, 0.015 * Math.max(b.width(), b.depth()));
+        int skirtVertices = 2 * 2 * (cols + rows);
+        float[] v = new float[(cols * rows + skirtVertices) * 9];
+        int[] idx = new int[nx * ny * 6 + 2 * 6 * (nx + ny)];
+        float[] rgb = new float[3];
+        int p = 0;
+        for (int j = 0; j < rows; j++) {
+            for (int i = 0; i < cols; i++) {
+                int k = j * cols + i;
+                double x = b.minX() + i * dx, y = b.minY() + j * dy;
+                double len = Math.sqrt(gx[k] * gx[k] + gy[k] * gy[k] + 1);
+                surfaceColor(mode, course.zones(), x, y, h[k], minH, maxH, b, rgb);
+                p = put(v, p, x, y, h[k], -gx[k] / len, -gy[k] / len, 1 / len, rgb);
+            }
+        }
+        int q = 0;
+        for (int j = 0; j < ny; j++) {
+            for (int i = 0; i < nx; i++) {
+                int a = j * cols + i, c = a + cols;
+                // Split each quad along the diagonal that better follows the surface.
+                if (Math.abs(h[a] - h[c + 1]) <= Math.abs(h[a + 1] - h[c])) {
+                    q = tri(idx, q, a, a + 1, c + 1);
+                    q = tri(idx, q, a, c + 1, c);
+                } else {
+                    q = tri(idx, q, a, a + 1, c);
+                    q = tri(idx, q, a + 1, c + 1, c);
+                }
+            }
+        }
+        // Skirts: for each edge, a strip from the surface down to the base, facing outwards.
+        int vertex = cols * rows;
+        int[][] edges = {
+                {0, 0, 1, 0, cols, 0, -1},          // y = minY, running +x, normal -y
+                {cols - 1, 0, 0, 1, rows, 1, 0},    // x = maxX, running +y, normal +x
+                {cols - 1, rows - 1, -1, 0, cols, 0, 1}, // y = maxY, running -x, normal +y
+                {0, rows - 1, 0, -1, rows, -1, 0}}; // x = minX, running -y, normal -x
+        for (int[] e : edges) {
+            int start = vertex;
+            for (int t = 0; t < e[4]; t++) {
+                int i = e[0] + t * e[2], j = e[1] + t * e[3];
+                double x = b.minX() + i * dx, y = b.minY() + j * dy, top = h[j * cols + i];
+                soil(top, top, rgb);
+                p = put(v, p, x, y, top, e[5], e[6], 0, rgb);
+                soil(top, base, rgb);
+                p = put(v, p, x, y, base, e[5], e[6], 0, rgb);
+                vertex += 2;
+            }
+            for (int t = 0; t + 1 < e[4]; t++) {
+                int top0 = start + 2 * t, bot0 = top0 + 1, top1 = top0 + 2, bot1 = top0 + 3;
+                q = tri(idx, q, top0, bot0, bot1);
+                q = tri(idx, q, top0, bot1, top1);
+            }
+        }
+        return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH);
+    }
+
+    private static int put(float[] v, int p, double x, double y, double z, double nx, double ny, double nz, float[] c) {
+        v[p++] = (float) x;
+        v[p++] = (float) y;
+        v[p++] = (float) z;
+        v[p++] = (float) nx;
+        v[p++] = (float) ny;
+        v[p++] = (float) nz;
+        v[p++] = c[0];
+        v[p++] = c[1];
+        v[p++] = c[2];
+        return p;
+    }
+
+    private static int tri(int[] idx, int q, int a, int b, int c) {
+        idx[q++] = a;
+        idx[q++] = b;
+        idx[q++] = c;
+        return q;
+    }
+
+    private static void soil(double top, double z, float[] out) {
+        double t = Math.min(1, Math.max(0, (top - z) / 0.6));
+        set(out, lerp(0.45, 0.26, t), lerp(0.33, 0.18, t), lerp(0.20, 0.11, t));
+    }
+
+    /** The colour of the surface at (x, y) with height h, for a terrain spanning [minH, maxH]. */
+    public static void surfaceColor(ColorMode mode, List<Zone> zones, double x, double y, double h,
+                                    double minH, double maxH, Bounds b, float[] out) {
+        if (mode == ColorMode.HEIGHT_MAP) {
+            heightMapColor(h, minH, maxH, out);
+            return;
+        }
+        if (h < 0) {
+            // Lake bed: wet mud, darker with depth.
+            double t = Math.min(1, -h / 0.3);
+            set(out, lerp(0.42, 0.24, t), lerp(0.37, 0.20, t), lerp(0.24, 0.12, t));
+            return;
+        }
+        Zone zone = null;
+        for (Zone z : zones) {
+            if (z.shape().contains(x, y)) zone = z; // later zones win
+        }
+        // Mowing stripes across x, 0.5 m wide, as on a real green.
+        double stripe = Math.floorMod((long) Math.floor((x - b.minX()) / 0.5), 2) == 0 ? 1.0 : 0.92;
+        if (zone != null && zone.kineticFriction() >= SAND_FRICTION) {
+            double grain = 0.97 + 0.03 * Math.sin(x * 41.0) * Math.sin(y * 37.0);
+            set(out, 0.87 * grain, 0.78 * grain, 0.53 * grain);
+            return;
+        }
+        double range = maxH - Math.max(minH, 0);
+        double t = range > 1e-6 ? (h - Math.max(minH, 0)) / range : 0.5;
+        t = Math.min(1, Math.max(0, t));
+        set(out, lerp(0.13, 0.50, t) * stripe, lerp(0.38, 0.76, t) * stripe, lerp(0.11, 0.28, t) * stripe);
+    }
+
+    private static final float[][] HEIGHT_STOPS = {
+            {0.16f, 0.62f, 0.22f}, // green
+            {0.93f, 0.86f, 0.32f}, // yellow
+            {0.55f, 0.36f, 0.18f}, // brown
+            {0.97f, 0.97f, 0.97f}, // white
+    };
+
+    /** Course-map colouring: blue under water (darker when deeper), then green, yellow, brown, white up to maxH. */
+    public static void heightMapColor(double h, double minH, double maxH, float[] out) {
+        if (h < 0) {
+            double t = minH < 0 ? Math.min(1, h / minH) : 0;
+            set(out, lerp(0.35, 0.08, t), lerp(0.60, 0.22, t), lerp(0.95, 0.62, t));
+            return;
+        }
+        double t = maxH > 1e-6 ? Math.min(1, h / maxH) : 0;
+        double f = t * (HEIGHT_STOPS.length - 1);
+        int i = Math.min(HEIGHT_STOPS.length - 2, (int) f);
+        double u = f - i;
+        float[] a = HEIGHT_STOPS[i], c = HEIGHT_STOPS[i + 1];
+        set(out, lerp(a[0], c[0], u), lerp(a[1], c[1], u), lerp(a[2], c[2], u));
+    }
+
+    private static double lerp(double a, double b, double t) {
+        return a + (b - a) * t;
+    }
+
+    private static void set(float[] out, double r, double g, double b) {
+        out[0] = (float) r;
+        out[1] = (float) g;
+        out[2] = (float) b;
+    }
+
+    public MeshData data() {
+        return data;
+    }
+
+    /** Grid vertices along x (quads + 1); vertex (i, j) of the surface is vertex j*columns + i. */
+    public int columns() {
+        return columns;
+    }
+
+    public int rows() {
+        return rows;
+    }
+
+    public double minHeight() {
+        return minHeight;
+    }
+
+    public double maxHeight() {
+        return maxHeight;
+    }
+}

@@ -1,0 +1,48 @@
+package minigolf.render;
+
+import minigolf.course.Course;
+import minigolf.terrain.Terrain;
+
+/** The course surface and its side walls, lit by the sun. */
+public final class TerrainPass implements RenderPass {
+    private final Course course;
+    private final Terrain terrain;
+    private final ShaderProgram shader = ShaderProgram.load("terrain");
+    private TerrainMesh.ColorMode mode;
+    private Mesh mesh;
+
+    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
+        this.course = course;
+        this.terrain = terrain;
+        setColorMode(mode);
+    }
+
+    public TerrainMesh.ColorMode colorMode() {
+        return mode;
+    }
+
+    /** Rebuilds the mesh with the other colouring (a few milliseconds for 256x256 quads). */
+    public void setColorMode(TerrainMesh.ColorMode newMode) {
+        if (newMode == mode && mesh != null) return;
+        Mesh built = new Mesh(TerrainMesh.build(course, terrain, newMode).data());
+        if (mesh != null) mesh.close();
+        mesh = built;
+        mode = newMode;
+    }
+
+    @Override
+    public void render(FrameContext frame) {
+        shader.use();
+        shader.set("uViewProjection", frame.viewProjection);
+        Lighting.apply(shader, frame);
+        shader.set("uShininess", 24f);
+        shader.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
+        mesh.draw();
+    }
+
+    @Override
+    public void close() {
+        if (mesh != null) mesh.close();
+        shader.close();
+    }
+}

@@ -1,0 +1,189 @@
+package minigolf.render;
+
+import org.lwjgl.glfw.GLFWErrorCallback;
+import org.lwjgl.opengl.GL;
+import org.lwjgl.system.MemoryStack;
+
+import java.nio.IntBuffer;
+
+import static org.lwjgl.glfw.Callbacks.glfwFreeCallbacks;
+import static org.lwjgl.glfw.GLFW.*;
+import static org.lwjgl.system.MemoryUtil.NULL;
+
+/**
+ * A GLFW window with an OpenGL 3.3 core (forward-compatible) context, current on the thread that
+ * created it. GLFW is initialised by the first open window and terminated when the last one closes.
+ * The viewport size to use is {@link #framebufferWidth()} x {@link #framebufferHeight()}: pixels, not
+ * screen coordinates, so HiDPI screens render at full resolution; it follows resizes.
+ */
+public final class Window implements AutoCloseable {
+
+    /** How to open the window. {@code samples} 0 means no multisampling for the default framebuffer. */
+    public record Options(boolean visible, boolean vsync, int samples, boolean resizable,
+                          int glMajor, int glMinor) {
+        public static Options visibleDefaults() {
+            return new Options(true, true, 4, true, 3, 3);
+        }
+
+        /** A hidden window for off-screen rendering (screenshots, tests). */
+        public static Options hidden() {
+            return new Options(false, false, 0, false, 3, 3);
+        }
+
+        public Options withGlVersion(int major, int minor) {
+            return new Options(visible, vsync, samples, resizable, major, minor);
+        }
+    }
+
+    private static int openWindows;
+    private static GLFWErrorCallback errorCallback;
+    private static volatile String lastError = "";
+
+    private final long handle;
+    private int fbWidth;
+    private int fbHeight;
+    private boolean closed;
+
+    public Window(String title, int width, int height, Options options) {
+        if (width <= 0 || height <= 0) {
+            throw new IllegalArgumentException("window size must be positive: " + width + "x" + height);
+        }
+        acquireGlfw();
+        boolean ok = false;
+        try {
+            glfwDefaultWindowHints();
+            glfwWindowHint(GLFW_VISIBLE, options.visible() ? GLFW_TRUE : GLFW_FALSE);
+            glfwWindowHint(GLFW_RESIZABLE, options.resizable() ? GLFW_TRUE : GLFW_FALSE);
+            glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, options.glMajor());
+            glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, options.glMinor());
+            glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+            glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+            glfwWindowHint(GLFW_SAMPLES, Math.max(0, options.samples()));
+            glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+            lastError = "";
+            handle = glfwCreateWindow(width, height, title, NULL, NULL);
+            if (handle == NULL) {
+                throw new RenderException("Could not create a window with an OpenGL " + options.glMajor() + "."
+                        + options.glMinor() + " core context: " + describeLastError());
+            }
+            glfwMakeContextCurrent(handle);
+            try {
+                GL.createCapabilities();
+            } catch (RuntimeException e) {
+                glfwDestroyWindow(handle);
+                throw new RenderException("OpenGL functions could not be loaded for the new context: " + e.getMessage(), e);
+            }
+            glfwSwapInterval(options.vsync() ? 1 : 0);
+            try (MemoryStack stack = MemoryStack.stackPush()) {
+                IntBuffer w = stack.mallocInt(1);
+                IntBuffer h = stack.mallocInt(1);
+                glfwGetFramebufferSize(handle, w, h);
+                fbWidth = w.get(0);
+                fbHeight = h.get(0);
+            }
+            glfwSetFramebufferSizeCallback(handle, (win, w, h) -> {
+                fbWidth = w;
+                fbHeight = h;
+            });
+            ok = true;
+        } finally {
+            if (!ok) releaseGlfw();
+        }
+    }
+
+    private static synchronized void acquireGlfw() {
+        if (openWindows == 0) {
+            // The error callback goes first so that a failing glfwInit can say why.
+            errorCallback = GLFWErrorCallback.create((code, description) ->
+                    lastError = String.format("GLFW error 0x%X: %s", code, GLFWErrorCallback.getDescription(description)));
+            GLFWErrorCallback previous = glfwSetErrorCallback(errorCallback);
+            if (previous != null) previous.free();
+            boolean ok = glfwInit();
+            if (!ok && System.getenv("DISPLAY") != null && glfwPlatformSupported(GLFW_PLATFORM_X11)) {
+                // A stale WAYLAND_DISPLAY (no compositor) makes auto-detection fail though X11 would work.
+                String first = describeLastError();
+                glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
+                ok = glfwInit();
+                glfwInitHint(GLFW_PLATFORM, GLFW_ANY_PLATFORM);
+                if (!ok) lastError = first + "; with X11 forced: " + describeLastError();
+            }
+            if (!ok) {
+                String why = describeLastError();
+                glfwSetErrorCallback(null);
+                errorCallback.free();
+                errorCallback = null;
+                throw new RenderException("GLFW could not be initialised (is there a display? DISPLAY="
+                        + System.getenv("DISPLAY") + "): " + why + staleXauthorityHint());
+            }
+        }
+        openWindows++;
+    }
+
+    private static synchronized void releaseGlfw() {
+        if (--openWindows == 0) {
+            glfwTerminate();
+            GLFWErrorCallback cb = glfwSetErrorCallback(null);
+            if (cb != null) cb.free();
+            errorCallback = null;
+        }
+    }
+
+    /** A Gradle daemon started under an earlier xvfb-run keeps that run's (deleted) XAUTHORITY file. */
+    private static String staleXauthorityHint() {
+        String xauth = System.getenv("XAUTHORITY");
+        if (xauth != null && !new java.io.File(xauth).exists()) {
+            return ". XAUTHORITY=" + xauth + " does not exist: this process inherited the environment of an"
+                    + " earlier X session (a long-lived Gradle daemon? try --no-daemon)";
+        }
+        return "";
+    }
+
+    private static String describeLastError() {
+        return lastError.isEmpty() ? "no GLFW error reported" : lastError;
+    }
+
+    public long handle() {
+        return handle;
+    }
+
+    public int framebufferWidth() {
+        return fbWidth;
+    }
+
+    public int framebufferHeight() {
+        return fbHeight;
+    }
+
+    public boolean shouldClose() {
+        return glfwWindowShouldClose(handle);
+    }
+
+    public void requestClose() {
+        glfwSetWindowShouldClose(handle, true);
+    }
+
+    public void swapBuffers() {
+        glfwSwapBuffers(handle);
+    }
+
+    public void pollEvents() {
+        glfwPollEvents();
+    }
+
+    public void setTitle(String title) {
+        glfwSetWindowTitle(handle, title);
+    }
+
+    @Override
+    public void close() {
+        if (closed) return;
+        closed = true;
+        if (glfwGetCurrentContext() == handle) {
+            GL.setCapabilities(null);
+            glfwMakeContextCurrent(NULL);
+        }
+        glfwFreeCallbacks(handle);
+        glfwDestroyWindow(handle);
+        releaseGlfw();
+    }
+}

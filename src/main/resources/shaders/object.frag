@@ -1,0 +1,17 @@
+#include "lighting.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec3 vColor;
+
+uniform float uSpecularStrength;
+uniform float uShininess;
+
+out vec4 fragColor;
+
+void main() {
+    vec3 n = normalize(vNormal);
+    // Thin things (the flag's cloth) are seen from both sides.
+    if (dot(n, uEye - vWorld) < 0.0) n = -n;
+    fragColor = vec4(haze(shade(vColor, n, vWorld, uSpecularStrength, uShininess), vWorld), 1.0);
+}

@@ -1,0 +1,16 @@
+#include "lighting.glsl"
+
+in vec3 vWorld;
+in vec3 vNormal;
+in vec3 vColor;
+
+uniform float uSpecularStrength;
+uniform float uShininess;
+
+out vec4 fragColor;
+
+void main() {
+    vec3 n = normalize(vNormal);
+    vec3 color = shade(vColor, n, vWorld, uSpecularStrength, uShininess);
+    fragColor = vec4(haze(color, vWorld), 1.0);
+}

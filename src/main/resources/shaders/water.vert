@@ -1,0 +1,13 @@
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in float aDepth;
+
+uniform mat4 uViewProjection;
+
+out vec3 vWorld;
+out float vDepth;
+
+void main() {
+    vWorld = aPosition;
+    vDepth = aDepth;
+    gl_Position = uViewProjection * vec4(aPosition, 1.0);
+}

@@ -1,0 +1,73 @@
+package minigolf.render;
+
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** Needs a GL context (a hidden window; run under xvfb-run). */
+class ShaderProgramTest {
+    static Window window;
+
+    @BeforeAll
+    static void open() {
+        window = new Window("shader test", 64, 64, Window.Options.hidden());
+    }
+
+    @AfterAll
+    static void close() {
+        if (window != null) window.close();
+    }
+
+    static final String VERT = "layout(location = 0) in vec3 aPosition;\nvoid main() { gl_Position = vec4(aPosition, 1.0); }\n";
+
+    @Test
+    void compileErrorNamesTheShader() {
+        RenderException e = assertThrows(RenderException.class,
+                () -> ShaderProgram.fromSource("broken", VERT, "out vec4 c;\nvoid main() { c = vec4(undefinedThing, 1.0); }\n"));
+        assertTrue(e.getMessage().contains("'broken.frag'"), e.getMessage());
+        assertTrue(e.getMessage().contains("failed to compile"), e.getMessage());
+        assertTrue(e.getMessage().length() > "Shader 'broken.frag' failed to compile:".length() + 5,
+                "no compiler log in: " + e.getMessage());
+    }
+
+    @Test
+    void vertexErrorNamesTheVertexShader() {
+        RenderException e = assertThrows(RenderException.class,
+                () -> ShaderProgram.fromSource("bad", "void main() { gl_Position = nonsense; }", "out vec4 c; void main() { c = vec4(1.0); }"));
+        assertTrue(e.getMessage().contains("'bad.vert'"), e.getMessage());
+    }
+
+    @Test
+    void linkErrorNamesTheProgram() {
+        // Each stage compiles alone; the vertex shader calls a function that nothing defines.
+        RenderException e = assertThrows(RenderException.class, () -> ShaderProgram.fromSource("unresolved",
+                "vec4 elsewhere();\nvoid main() { gl_Position = elsewhere(); }\n",
+                "out vec4 c;\nvoid main() { c = vec4(1.0); }\n"));
+        assertTrue(e.getMessage().contains("'unresolved' failed to link"), e.getMessage());
+    }
+
+    @Test
+    void projectShadersCompileAndLink() {
+        for (String name : new String[]{"sky", "terrain", "water", "object"}) {
+            try (ShaderProgram p = ShaderProgram.load(name)) {
+                assertEquals(name, p.name());
+                assertNotEquals(-1, p.location(name.equals("sky") ? "uInverseViewProjection" : "uViewProjection"), name);
+            }
+        }
+    }
+
+    @Test
+    void missingSourceIsAClearError() {
+        RenderException e = assertThrows(RenderException.class, () -> ShaderProgram.load("no-such-shader"));
+        assertTrue(e.getMessage().contains("/shaders/no-such-shader.vert"), e.getMessage());
+    }
+
+    @Test
+    void versionLineIsPrependedOnce() {
+        assertTrue(ShaderProgram.withVersion("void main(){}").startsWith("#version 330 core\n"));
+        assertEquals("#version 330 core\nx", ShaderProgram.withVersion("#version 330 core\nx"));
+        assertTrue(ShaderProgram.readResource("terrain.frag").contains("vec3 shade("), "include not expanded");
+    }
+}

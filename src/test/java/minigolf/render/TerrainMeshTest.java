@@ -1,0 +1,93 @@
+package minigolf.render;
+
+import minigolf.course.Bounds;
+import minigolf.course.Course;
+import org.junit.jupiter.api.Test;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** CPU-only: no GL needed. */
+class TerrainMeshTest {
+    static final int POS = 0, NORMAL = 1, COLOR = 2;
+
+    @Test
+    void tenMetreCourseIsSampledEveryFiveCentimetres() {
+        TerrainMesh m = TerrainMesh.build(TestCourses.lake(), TestCourses.LAKE, TerrainMesh.ColorMode.GREEN);
+        assertEquals(0.05, TerrainMesh.sampleSpacing(TestCourses.lake().bounds()), 1e-12);
+        assertEquals(201, m.columns());
+        assertEquals(201, m.rows());
+        // Surface vertex (i, j) lies on the terrain.
+        int k = 37 * m.columns() + 120;
+        double x = m.data().get(k, POS, 0), y = m.data().get(k, POS, 1);
+        assertEquals(-5 + 120 * 0.05, x, 1e-5);
+        assertEquals(-5 + 37 * 0.05, y, 1e-5);
+        assertEquals(TestCourses.LAKE.height(x, y), m.data().get(k, POS, 2), 1e-5);
+    }
+
+    @Test
+    void bigCoursesAreCappedAt256QuadsPerSide() {
+        Bounds big = new Bounds(0, 0, 50, 30);
+        Course c = new Course(1, "big", TestCourses.flat().terrain(), big, TestCourses.PHYSICS,
+                TestCourses.flat().start(), TestCourses.flat().hole(), java.util.List.of());
+        TerrainMesh m = TerrainMesh.build(c, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN);
+        assertTrue(m.columns() - 1 <= TerrainMesh.MAX_QUADS && m.rows() - 1 <= TerrainMesh.MAX_QUADS,
+                m.columns() + "x" + m.rows());
+        assertEquals(257, m.columns());
+        assertEquals(50.0 / 256, TerrainMesh.sampleSpacing(big), 1e-12);
+    }
+
+    @Test
+    void normalsComeFromTheAnalyticGradient() {
+        TerrainMesh m = TerrainMesh.build(TestCourses.lake(), TestCourses.LAKE, TerrainMesh.ColorMode.GREEN);
+        double[] s = new double[3];
+        for (int k : new int[]{0, 5000, 20000, 40400}) {
+            double x = m.data().get(k, POS, 0), y = m.data().get(k, POS, 1);
+            TestCourses.LAKE.sample(x, y, s);
+            double len = Math.sqrt(s[1] * s[1] + s[2] * s[2] + 1);
+            assertEquals(-s[1] / len, m.data().get(k, NORMAL, 0), 1e-5);
+            assertEquals(-s[2] / len, m.data().get(k, NORMAL, 1), 1e-5);
+            assertEquals(1 / len, m.data().get(k, NORMAL, 2), 1e-5);
+        }
+        // On the slope east of the pond the surface rises with x: the normal leans towards -x.
+        int east = 100 * m.columns() + 150; // (2.5, 0)
+        assertTrue(m.data().get(east, NORMAL, 0) < -0.01);
+    }
+
+    @Test
+    void greenIsLighterHighSandIsYellowLakeBedIsMud() {
+        Course lake = TestCourses.lake();
+        float[] low = color(lake, 1.0, 0.2), high = color(lake, -4.9, 4.9), sand = color(lake, 2.4, -2.6), bed = color(lake, 0, 0);
+        assertTrue(low[1] > low[0] && low[1] > low[2], "low grass not green");
+        assertTrue(high[1] > high[0] && high[1] > high[2], "high grass not green");
+        assertTrue(high[1] > low[1] + 0.1f, "higher grass should be lighter: " + high[1] + " vs " + low[1]);
+        assertTrue(sand[0] > 0.7f && sand[0] > sand[1] && sand[1] > sand[2] + 0.1f, "sand not sand-yellow");
+        assertTrue(bed[0] > bed[2] && bed[1] < 0.45f && bed[0] < 0.5f, "lake bed not muddy");
+    }
+
+    @Test
+    void heightMapGoesFromBlueUnderWaterToWhiteAtTheTop() {
+        float[] c = new float[3];
+        TerrainMesh.heightMapColor(-0.04, -0.04, 0.36, c);
+        assertTrue(c[2] > c[0] + 0.3f && c[2] > c[1], "under water not blue");
+        TerrainMesh.heightMapColor(0.01, -0.04, 0.36, c);
+        assertTrue(c[1] > c[0] && c[1] > c[2], "low ground not green");
+        TerrainMesh.heightMapColor(0.36, -0.04, 0.36, c);
+        assertTrue(c[0] > 0.9f && c[1] > 0.9f && c[2] > 0.9f, "top not white");
+    }
+
+    @Test
+    void sideWallsReachBelowTheLowestPoint() {
+        TerrainMesh m = TerrainMesh.build(TestCourses.lake(), TestCourses.LAKE, TerrainMesh.ColorMode.GREEN);
+        float minZ = Float.MAX_VALUE;
+        for (int v = 0; v < m.data().vertexCount(); v++) minZ = Math.min(minZ, m.data().get(v, POS, 2));
+        assertTrue(minZ < m.minHeight() - 0.2, "no side walls: lowest vertex " + minZ);
+        assertEquals(m.data().triangleCount(), 200 * 200 * 2 + 4 * 200 * 2);
+    }
+
+    private static float[] color(Course c, double x, double y) {
+        float[] out = new float[3];
+        TerrainMesh.surfaceColor(TerrainMesh.ColorMode.GREEN, c.zones(), x, y, TestCourses.LAKE.height(x, y),
+                -0.04, 0.36, c.bounds(), out);
+        return out;
+    }
+}
