@@ -1,8 +1,5 @@
 package minigolf.expr;
 
-import java.util.IdentityHashMap;
-import java.util.Map;
-
 /**
  * A terrain height formula h(x, y) in a small, closed grammar (see {@link Parser}). Safe to parse
  * from untrusted course files: nothing but arithmetic and a fixed set of java.lang.Math functions
@@ -10,8 +7,14 @@ import java.util.Map;
  * Instances are immutable and thread-safe.
  */
 public final class Expression {
-    /** Derivatives grow their tree; this keeps every tree walk well inside the default stack. */
-    private static final int MAX_DERIVED_HEIGHT = 8 * Parser.MAX_HEIGHT;
+    /**
+     * Derivatives grow their tree. These bounds keep every recursive tree walk well inside a default
+     * thread stack and the printed form to some megabytes. The height bound holds for the first
+     * derivative of anything the parser accepts (at most three levels per input level, plus a few);
+     * the size bound only stops pathological inputs, such as long chains of quotients of large terms.
+     */
+    static final int MAX_DERIVED_HEIGHT = 1_000;
+    static final long MAX_DERIVED_SIZE = 2_000_000;
 
     private final String source;
     /** The tree as written, for printing. */
@@ -52,9 +55,14 @@ public final class Expression {
             throw new IllegalArgumentException("can only differentiate by 'x' or 'y', not '" + variable + "'");
         }
         Node derived = Differentiator.derivative(folded, variable);
-        if (height(derived, new IdentityHashMap<>()) > MAX_DERIVED_HEIGHT) {
+        TreeMeasure measure = new TreeMeasure();
+        if (measure.height(derived) > MAX_DERIVED_HEIGHT) {
             throw new ExpressionException("derivative too complex", 1,
                     "its tree would be more than " + MAX_DERIVED_HEIGHT + " levels deep");
+        }
+        if (measure.size(derived) > MAX_DERIVED_SIZE) {
+            throw new ExpressionException("derivative too complex", 1,
+                    "it would have more than " + MAX_DERIVED_SIZE + " operations");
         }
         return new Expression(Printer.print(derived), derived);
     }
@@ -72,24 +80,5 @@ public final class Expression {
     @Override
     public String toString() {
         return Printer.print(tree);
-    }
-
-    private static int height(Node node, Map<Node, Integer> memo) {
-        Integer known = memo.get(node);
-        if (known != null) {
-            return known;
-        }
-        int height = 1;
-        if (node instanceof Node.Negate negate) {
-            height += height(negate.operand(), memo);
-        } else if (node instanceof Node.Binary binary) {
-            height += Math.max(height(binary.left(), memo), height(binary.right(), memo));
-        } else if (node instanceof Node.Call call) {
-            for (Node argument : call.arguments()) {
-                height = Math.max(height, 1 + height(argument, memo));
-            }
-        }
-        memo.put(node, height);
-        return height;
     }
 }

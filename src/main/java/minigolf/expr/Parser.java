@@ -21,7 +21,7 @@ final class Parser {
     /** Levels of parentheses, signs, exponents and calls inside one another. */
     static final int MAX_NESTING = 200;
     /** Height of the tree, which long chains like 1+1+1+... grow without nesting. */
-    static final int MAX_HEIGHT = 1_000;
+    static final int MAX_HEIGHT = 300;
 
     /** A subtree with its height, tracked while parsing so the limit is checked where it is exceeded. */
     private record Parsed(Node node, int height) {
