@@ -27,9 +27,9 @@ final class SimulateCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--velocity", required = true, split = ",", paramLabel = "VX,VY",
+    @Option(names = "--velocity", required = true, paramLabel = "VX,VY",
             description = "The shot's velocity in m/s, e.g. 3.2,0.5")
-    double[] velocity;
+    String velocityText;
 
     @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator (default rk4).")
     String integrator = "rk4";
@@ -45,9 +45,7 @@ final class SimulateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (velocity.length != 2) {
-            throw new UserError("--velocity: expected two components VX,VY, got " + velocity.length);
-        }
+        double[] velocity = Vectors.parse("--velocity", velocityText, 2);
         Integrator chosen = Integrator.fromName(integrator);
         if (chosen == null) throw new UserError("--integrator: expected rk4, rk2 or euler, got '" + integrator + "'");
         if (!(dt > 0) || dt > 0.1) throw new UserError("--dt: must be in (0, 0.1] seconds, got " + dt);

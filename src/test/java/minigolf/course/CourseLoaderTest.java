@@ -268,7 +268,8 @@ class CourseLoaderTest {
 
     @Test
     void badExpressionNamesTheColumn() {
-        assertEquals("courses/x.json: terrain.height: unknown function 'foo' at column 5",
+        assertEquals("courses/x.json: terrain.height: unknown function 'foo' at column 5"
+                + " (allowed: sin, cos, tan, asin, acos, atan, atan2, exp, log, sqrt, abs, min, max, pow)",
                 error(edit("\"0.4*(0.9-exp(-(x^2+y^2)/8))\"", "\"0.1+foo(x)\"")));
     }
 

@@ -1,0 +1,138 @@
+package minigolf.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The command line as a user meets it: JSON on stdout, one-line errors and exit code 2. */
+class CommandLineTest {
+    private static final Path COURSES = Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses");
+
+    private record Run(int code, String out, String err) {
+        JsonNode json() throws IOException {
+            return new ObjectMapper().readTree(out);
+        }
+    }
+
+    private static Run run(String... args) {
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        int code = MinigolfCommand.execute(args, new PrintWriter(out), new PrintWriter(err));
+        return new Run(code, out.toString(), err.toString());
+    }
+
+    private static String course(String name) {
+        return COURSES.resolve(name).toString();
+    }
+
+    @Test
+    void simulatePrintsTheFlatGroundClosedForm() throws IOException {
+        // courses/flat.json: flat, the shot stops after v^2 / (2 mu_k g).
+        Run r = run("simulate", course("flat.json"), "--velocity", "2,0");
+        assertEquals(0, r.code(), r.err());
+        JsonNode json = r.json();
+        assertEquals("stopped", json.get("outcome").asText());
+        double muK = new ObjectMapper().readTree(COURSES.resolve("flat.json").toFile())
+                .get("physics").get("kineticFriction").asDouble();
+        double startX = new ObjectMapper().readTree(COURSES.resolve("flat.json").toFile()).get("start").get(0).asDouble();
+        assertEquals(startX + 4 / (2 * muK * 9.81), json.get("end").get(0).asDouble(), 1e-3);
+        assertEquals(2 / (muK * 9.81), json.get("time").asDouble(), 1e-6);
+        assertTrue(json.get("steps").asInt() > 0);
+        assertEquals(List.of("outcome", "end", "time", "steps"), fieldNames(json));
+    }
+
+    @Test
+    void simulateOnTheLakeAimedAtTheCentreEndsInWater() throws IOException {
+        Run r = run("simulate", course("lake.json"), "--velocity", "3,0");
+        assertEquals(0, r.code(), r.err());
+        JsonNode json = r.json();
+        assertEquals("water", json.get("outcome").asText());
+        double x = json.get("end").get(0).asDouble(), y = json.get("end").get(1).asDouble();
+        // The lake's shore: 0.4 (0.9 - exp(-r^2/8)) = 0 at r = sqrt(-8 ln 0.9) = 0.9181 m.
+        assertEquals(Math.sqrt(-8 * Math.log(0.9)), Math.hypot(x, y), 1e-6);
+    }
+
+    @Test
+    void integratorModelAndTrajectoryOptionsWork(@TempDir Path dir) throws IOException {
+        Path csv = dir.resolve("path.csv");
+        Run r = run("simulate", course("sine-hills.json"), "--velocity", "1.5,-0.5", "--integrator", "euler",
+                "--dt", "0.005", "--model", "complete", "--trajectory", csv.toString());
+        assertEquals(0, r.code(), r.err());
+        List<String> lines = Files.readAllLines(csv);
+        assertEquals("t,x,y,vx,vy", lines.get(0));
+        assertEquals(r.json().get("steps").asInt() + 2, lines.size());
+        String[] last = lines.get(lines.size() - 1).split(",");
+        assertEquals(r.json().get("end").get(0).asDouble(), Double.parseDouble(last[1]), 1e-8);
+    }
+
+    @Test
+    void badInputGivesOneLineAndExitCodeTwo(@TempDir Path dir) throws IOException {
+        Path broken = dir.resolve("broken.json");
+        Files.writeString(broken, "{ \"format\": 1, ");
+        String[][] cases = {
+            {"simulate", course("lake.json"), "--velocity", "6,0"},
+            {"simulate", course("lake.json"), "--velocity", "1"},
+            {"simulate", course("lake.json"), "--velocity", "a,1"},
+            {"simulate", course("lake.json"), "--velocity", "1,1", "--integrator", "verlet"},
+            {"simulate", course("lake.json"), "--velocity", "1,1", "--model", "magic"},
+            {"simulate", course("lake.json"), "--velocity", "1,1", "--dt", "-1"},
+            {"simulate", dir.resolve("missing.json").toString(), "--velocity", "1,1"},
+            {"simulate", broken.toString(), "--velocity", "1,1"},
+            {"simulate", course("lake.json")},
+            {"bench-physics", course("lake.json"), "--shots", "0"},
+            {"no-such-command"},
+        };
+        String[] expected = {
+            "exceeds the course's maxSpeed of 5.0 m/s",
+            "--velocity: expected 2 comma-separated numbers, got '1'",
+            "--velocity: 'a' is not a number",
+            "--integrator: expected rk4, rk2 or euler, got 'verlet'",
+            "--model: expected classic or complete, got 'magic'",
+            "--dt: must be in (0, 0.1] seconds, got -1.0",
+            "missing.json: cannot read: no such file",
+            "broken.json: not valid JSON",
+            "Missing required option: '--velocity=VX,VY'",
+            "--shots: must be at least 1, got 0",
+            "Unmatched argument at index 0: 'no-such-command'",
+        };
+        for (int i = 0; i < cases.length; i++) {
+            Run r = run(cases[i]);
+            assertEquals(2, r.code(), String.join(" ", cases[i]));
+            assertTrue(r.err().contains(expected[i]), r.err());
+            assertFalse(r.err().contains("\tat "), "no stack trace: " + r.err());
+            assertEquals("", r.out());
+        }
+    }
+
+    @Test
+    void benchPhysicsReportsShotsPerSecond() throws IOException {
+        Run r = run("bench-physics", course("flat.json"), "--shots", "200");
+        assertEquals(0, r.code(), r.err());
+        assertEquals(200, r.json().get("shots").asInt());
+        assertTrue(r.json().get("shotsPerSecond").asDouble() > 0);
+    }
+
+    @Test
+    void benchAccuracyFindsRk4AtOneSixtiethWithinAMillimetre() throws IOException {
+        Run r = run("bench-accuracy", course("sine-hills.json"), "--shots", "3");
+        assertEquals(0, r.code(), r.err());
+        assertEquals(3, r.json().get("withinOneMm").asInt(), r.out());
+        assertTrue(r.json().get("maxErrorMm").asDouble() < 1, r.out());
+    }
+
+    private static List<String> fieldNames(JsonNode json) {
+        List<String> names = new java.util.ArrayList<>();
+        json.fieldNames().forEachRemaining(names::add);
+        return names;
+    }
+}
