@@ -131,25 +131,40 @@ public final class Stroke {
         double a1x = ax, a1y = ay;
         if (speed > 0) {
             double decelerationAlongV = -(a1x * vx + a1y * vy) / speed;
-            if (decelerationAlongV > 0 && speed <= decelerationAlongV * dt) {
-                finishStep(speed / decelerationAlongV, true, true, a1x, a1y, speed);
+            if (decelerationAlongV > 0 && speed <= decelerationAlongV * dt && comesToRest(speed)) {
+                finishStep(speed / decelerationAlongV, StepKind.STOP, a1x, a1y, speed);
                 return;
             }
-            // A slow, braking ball: friction would flip direction inside the integrator's stages
-            // (they can cancel and make the ball creep for ever), so take this step at the
-            // constant acceleration of its start. The error is O(da/dt dt^3), micrometres at most.
-            if (decelerationAlongV > 0 && speed * speed <= (a1x * a1x + a1y * a1y) * dt * dt) {
-                finishStep(dt, true, false, a1x, a1y, speed);
+            // A slow, braking ball: the friction direction would flip inside the integrator's
+            // stages (they can cancel and make the ball creep for ever) and, explicit, it would
+            // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
+            // in a step. Such steps treat friction implicitly (see subStep).
+            double maxChange = gravity * (Math.sqrt(hx * hx + hy * hy) + muK) * dt;
+            if (decelerationAlongV > 0 && speed <= maxChange) {
+                finishStep(dt, StepKind.SLOW, a1x, a1y, speed);
                 return;
             }
         }
-        finishStep(dt, false, false, a1x, a1y, speed);
+        finishStep(dt, StepKind.INTEGRATOR, a1x, a1y, speed);
     }
 
     /** Runs the stroke to its end. */
     public ShotResult run() {
         while (outcome == null) step();
         return result();
+    }
+
+    /**
+     * Whether the continuous model really brings the braking ball to v = 0. Where the slope is
+     * steeper than mu_k, gravity turns a ball with any sideways motion round before it stops, and
+     * it rolls back down; only a ball moving straight up the slope stops (then mu_s decides).
+     */
+    private boolean comesToRest(double speed) {
+        double slopeSquared = hx * hx + hy * hy;
+        if (slopeSquared <= muK * muK) return true;
+        double cross = vx * hy - vy * hx;
+        double dot = vx * hx + vy * hy;
+        return dot > 0 && Math.abs(cross) <= 1e-9 * speed * Math.sqrt(slopeSquared);
     }
 
     private boolean staysAtRest() {
@@ -162,18 +177,29 @@ public final class Stroke {
         return dx * dx + dy * dy <= holeRadius * holeRadius;
     }
 
-    /**
-     * Completes a step of length tau: a regular integrator step, or a piece of motion at the
-     * constant acceleration a1, which (stopping) is the analytic last piece that ends with v = 0.
-     */
-    private void finishStep(double tau, boolean constantAcceleration, boolean stopping,
-                            double a1x, double a1y, double speed0) {
-        subStep(tau, constantAcceleration, a1x, a1y);
+    /** How a step advances the ball. */
+    private enum StepKind {
+        /** The chosen integrator (Euler, RK2, RK4). */
+        INTEGRATOR,
+        /** The analytic last piece of motion at constant acceleration; it ends with v = 0. */
+        STOP,
+        /** A slow braking ball: gravity explicit, friction implicit (never flips, never chatters). */
+        SLOW
+    }
+
+    /** Completes a step of length tau of the given kind, with events, and commits it. */
+    private void finishStep(double tau, StepKind kind, double a1x, double a1y, double speed0) {
+        subStep(tau, kind, a1x, a1y);
+        if (kind == StepKind.SLOW && nvx == 0 && nvy == 0) {
+            // Friction held the ball within this step: it stops where the slow step ends.
+            kind = StepKind.STOP;
+        }
+        boolean stopping = kind == StepKind.STOP;
         double endTau = tau;
         Outcome event = hazardAt(nx, ny);
         if (event != null) {
-            endTau = locateHazard(tau, constantAcceleration, a1x, a1y);
-            subStep(endTau, constantAcceleration, a1x, a1y);
+            endTau = locateHazard(tau, kind, a1x, a1y);
+            subStep(endTau, kind, a1x, a1y);
             event = hazardAt(nx, ny);
         }
         double speed1 = stopping && event == null ? 0 : Math.sqrt(nvx * nvx + nvy * nvy);
@@ -196,12 +222,16 @@ public final class Stroke {
     }
 
     /** Writes the state after a sub-step of length tau from the current state into n*. */
-    private void subStep(double tau, boolean constantAcceleration, double a1x, double a1y) {
-        if (constantAcceleration) {
+    private void subStep(double tau, StepKind kind, double a1x, double a1y) {
+        if (kind == StepKind.STOP) {
             nx = x + vx * tau + 0.5 * a1x * tau * tau;
             ny = y + vy * tau + 0.5 * a1y * tau * tau;
             nvx = vx + a1x * tau;
             nvy = vy + a1y * tau;
+            return;
+        }
+        if (kind == StepKind.SLOW) {
+            slowSubStep(tau);
             return;
         }
         switch (integrator) {
@@ -239,6 +269,37 @@ public final class Stroke {
         }
     }
 
+    /**
+     * Semi-implicit step for a slow ball: w = v + tau G (gravity's part G of the acceleration),
+     * then friction of magnitude F along -v_end, which shortens w by tau F or stops the ball if
+     * |w| &lt;= tau F (Coulomb friction as physics engines treat it). Position by the trapezoid rule.
+     */
+    private void slowSubStep(double tau) {
+        double normalisation = complete ? 1 + hx * hx + hy * hy : 1;
+        double gx = -gravity * hx / normalisation, gy = -gravity * hy / normalisation;
+        double wx = vx + tau * gx, wy = vy + tau * gy;
+        double w = Math.sqrt(wx * wx + wy * wy);
+        double friction = muK * gravity;
+        if (complete) {
+            double along = w > 0 ? (hx * wx + hy * wy) / w : Math.sqrt(normalisation - 1);
+            friction /= Math.sqrt(normalisation) * Math.sqrt(1 + along * along);
+        }
+        if (w > tau * friction) {
+            double keep = 1 - tau * friction / w;
+            nvx = wx * keep;
+            nvy = wy * keep;
+        } else {
+            double pull = Math.sqrt(gx * gx + gy * gy);
+            // Friction stops the ball within the step, unless the slope is steeper than kinetic
+            // friction can hold: then the ball turns round and starts back down it.
+            double net = pull > friction ? 0.5 * tau * (pull - friction) / pull : 0;
+            nvx = gx * net;
+            nvy = gy * net;
+        }
+        nx = x + 0.5 * tau * (vx + nvx);
+        ny = y + 0.5 * tau * (vy + nvy);
+    }
+
     private Outcome hazardAt(double px, double py) {
         if (!bounds.contains(px, py)) return Outcome.OUT;
         if (terrain.height(px, py) < 0) return Outcome.WATER;
@@ -246,11 +307,11 @@ public final class Stroke {
     }
 
     /** The first sub-step length at which the ball is in a hazard, found by bisection. */
-    private double locateHazard(double tau, boolean constantAcceleration, double a1x, double a1y) {
+    private double locateHazard(double tau, StepKind kind, double a1x, double a1y) {
         double safe = 0, hazard = tau;
         for (int k = 0; k < LOCATE_ITERATIONS; k++) {
             double mid = 0.5 * (safe + hazard);
-            subStep(mid, constantAcceleration, a1x, a1y);
+            subStep(mid, kind, a1x, a1y);
             if (hazardAt(nx, ny) != null) hazard = mid; else safe = mid;
         }
         return hazard;

@@ -4,7 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import java.util.Random;
+import minigolf.course.PhysicsModel;
+import minigolf.terrain.Terrain;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -85,5 +88,51 @@ class ConvergenceTest {
 
     private static double distance(double[] a, double[] b) {
         return Math.hypot(a[0] - b[0], a[1] - b[1]);
+    }
+
+    @Test
+    void aBallPushedUpASlopeSteeperThanKineticFrictionTurnsBackAsInTheContinuousModel() {
+        // On the lake at r = 3.33 the slope is 0.083 > mu_k 0.08: with a little sideways motion the
+        // ball never reaches v = 0; it turns round and rolls back into the water at every step size.
+        World lake = TestWorlds.world(TestWorlds.lake(), 0.08, 0.2, 5);
+        for (double dt : new double[] {1.0 / 60, 1e-3, 1e-5}) {
+            ShotResult r = new Simulator(lake, SimulationSettings.DEFAULT.withDt(dt))
+                    .simulate(-3, 0, -1.053636851465158, 0.02728162072030483);
+            assertEquals(Outcome.WATER, r.outcome(), "dt " + dt);
+            assertEquals(Math.sqrt(-8 * Math.log(0.9)), Math.hypot(r.endX(), r.endY()), 1e-6);
+        }
+    }
+
+    @Test
+    void aBallRollingStraightUpASlopeBetweenTheFrictionsStopsAndStays() {
+        // Slope 0.15: above mu_k 0.1, below mu_s 0.2. Straight up, v reaches 0 and static friction holds.
+        World plane = TestWorlds.world(TestWorlds.plane(0.15, 0, 5), 0.1, 0.2, 20);
+        ShotResult r = TestWorlds.rk4(plane).simulate(-5, 0, 2, 0);
+        assertEquals(Outcome.STOPPED, r.outcome());
+        assertEquals(-5 + 4 / (2 * TestWorlds.G * 0.25), r.endX(), 1e-9);
+    }
+
+    @Test
+    void aSlowBallOnANearCriticalSlopeDoesNotCreepEvenAtTinySteps() {
+        // Complete model, slope 0.0996 against mu_k 0.1: explicit friction would chatter sideways
+        // and creep for ever at dt = 1e-5; the implicit slow step stops it.
+        Terrain crossSlope = new Terrain() {
+            public double height(double x, double y) {
+                return 0.5 + 0.15 * Math.sin(0.8 * y) + 0.02 * x;
+            }
+
+            public void sample(double x, double y, double[] out) {
+                out[0] = height(x, y);
+                out[1] = 0.02;
+                out[2] = 0.12 * Math.cos(0.8 * y);
+            }
+        };
+        World world = TestWorlds.world(crossSlope, 0.1, 0.25, 6, PhysicsModel.COMPLETE, TestWorlds.farHole(6), List.of());
+        ShotResult reference = new Simulator(world, SimulationSettings.DEFAULT.withDt(1e-5))
+                .simulate(-4, -3, 0.2719865323628711, -0.7444444263380493);
+        assertEquals(Outcome.STOPPED, reference.outcome());
+        assertTrue(reference.time() < 3, "stopped after " + reference.time() + " s");
+        ShotResult game = TestWorlds.rk4(world).simulate(-4, -3, 0.2719865323628711, -0.7444444263380493);
+        assertEquals(0, Math.hypot(game.endX() - reference.endX(), game.endY() - reference.endY()), 5e-3);
     }
 }
