@@ -3,20 +3,10 @@ package minigolf.course;
 import com.fasterxml.jackson.core.io.JsonStringEncoder;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.FileAlreadyExistsException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.PosixFileAttributeView;
-import java.nio.file.attribute.PosixFilePermission;
 import java.util.List;
-import java.util.Set;
-import java.util.concurrent.ThreadLocalRandom;
+import minigolf.io.AtomicFile;
 
 /**
  * Writes courses in the course-file format (format 1), fields in the documented order, so that
@@ -104,84 +94,10 @@ public final class CourseWriter {
         } catch (CourseException e) {
             throw new CourseException(source, null, "cannot save: " + e.detail(), e);
         }
-        byte[] bytes = json.getBytes(StandardCharsets.UTF_8);
-        Path tmp = null;
-        String step = "cannot resolve the path";
         try {
-            Path target = file.toAbsolutePath();
-            if (Files.isSymbolicLink(target)) target = target.toRealPath(); // replace the file, keep the link
-            Path dir = target.getParent();
-            step = "cannot create a temporary file in " + dir;
-            tmp = createTemp(dir, target.getFileName().toString());
-            copyPermissions(target, tmp);
-            step = "cannot write " + tmp.getFileName();
-            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE)) {
-                ByteBuffer buf = ByteBuffer.wrap(bytes);
-                while (buf.hasRemaining()) ch.write(buf);
-                ch.force(true);
-            }
-            step = "cannot replace the file";
-            try {
-                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-            tmp = null;
-            syncDirectory(dir);
-        } catch (IOException | RuntimeException e) {
-            throw new CourseException(source, null, "cannot save: " + step + ": " + reason(e), e);
-        } finally {
-            if (tmp != null) {
-                try {
-                    Files.deleteIfExists(tmp);
-                } catch (IOException | RuntimeException ignored) {
-                    // nothing more to do; the original file is untouched either way
-                }
-            }
-        }
-    }
-
-    /** The operating system's reason without the file names ("Permission denied", "Is a directory"). */
-    private static String reason(Exception e) {
-        if (e instanceof java.nio.file.NoSuchFileException) return "no such file or directory";
-        if (e instanceof java.nio.file.AccessDeniedException) return "permission denied";
-        if (e instanceof java.nio.file.FileSystemException f && f.getReason() != null) return f.getReason();
-        String m = e.getMessage();
-        return m == null || m.isBlank() ? e.getClass().getSimpleName() : m.lines().findFirst().orElse(m);
-    }
-
-    /** A new empty file ".name.<random>.tmp" next to the target, created with the default permissions. */
-    private static Path createTemp(Path dir, String name) throws IOException {
-        for (int attempt = 0; ; attempt++) {
-            String suffix = Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1);
-            Path tmp = dir.resolve("." + name + "." + suffix + ".tmp");
-            try {
-                Files.newByteChannel(tmp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
-                return tmp;
-            } catch (FileAlreadyExistsException e) {
-                if (attempt >= 10) throw e;
-            }
-        }
-    }
-
-    private static void copyPermissions(Path from, Path to) {
-        try {
-            PosixFileAttributeView src = Files.getFileAttributeView(from, PosixFileAttributeView.class);
-            PosixFileAttributeView dst = Files.getFileAttributeView(to, PosixFileAttributeView.class);
-            if (src == null || dst == null || !Files.exists(from)) return;
-            Set<PosixFilePermission> perms = src.readAttributes().permissions();
-            dst.setPermissions(perms);
-        } catch (IOException | RuntimeException ignored) {
-            // best effort: the file keeps the default permissions
-        }
-    }
-
-    /** Makes the rename itself durable where the platform allows it (Linux, macOS); best effort. */
-    private static void syncDirectory(Path dir) {
-        try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
-            ch.force(true);
-        } catch (IOException | RuntimeException ignored) {
-            // not supported on this platform (e.g. Windows)
+            AtomicFile.write(file, json.getBytes(StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new CourseException(source, null, "cannot save: " + e.getMessage(), e);
         }
     }
 
