@@ -25,6 +25,19 @@ public final class FrictionField {
         this.uniform = this.zones.length == 0 && grid == null;
     }
 
+    /** Whether friction can jump somewhere (zone edges), so that strokes must split steps there. */
+    public boolean hasZones() {
+        return zones.length > 0;
+    }
+
+    /** The index of the zone that decides the friction at (x, y), or -1 outside every zone. */
+    public int zoneAt(double x, double y) {
+        for (int k = zones.length - 1; k >= 0; k--) {
+            if (zones[k].shape().contains(x, y)) return k;
+        }
+        return -1;
+    }
+
     public double kinetic(double x, double y) {
         if (uniform) return defaultKinetic;
         for (int k = zones.length - 1; k >= 0; k--) {

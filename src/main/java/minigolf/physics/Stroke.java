@@ -39,6 +39,7 @@ public final class Stroke {
     private final boolean captureRule;
     private final double captureSpeed;
     private final TrajectoryListener listener;
+    private final boolean zoned;
 
     // The ball's state and the terrain sample at it (reused as the first stage of the next step).
     private double x, y, vx, vy, t;
@@ -51,6 +52,8 @@ public final class Stroke {
     // Scratch: the last acceleration and the state a sub-step produced.
     private final double[] sample = new double[3];
     private double ax, ay;
+    /** While not NaN, the kinetic friction every stage uses (a step that ends at a zone's edge). */
+    private double frozenMuK = Double.NaN;
     private double nx, ny, nvx, nvy;
 
     /**
@@ -84,6 +87,7 @@ public final class Stroke {
         this.captureRule = hole.rule() == HoleRule.CAPTURE;
         this.captureSpeed = hole.effectiveCaptureSpeed();
         this.listener = listener;
+        this.zoned = friction.hasZones();
         this.x = x0;
         this.y = y0;
         this.vx = vx0;
@@ -189,6 +193,34 @@ public final class Stroke {
 
     /** Completes a step of length tau of the given kind, with events, and commits it. */
     private void finishStep(double tau, StepKind kind, double a1x, double a1y, double speed0) {
+        try {
+            if (zoned && kind == StepKind.INTEGRATOR) tau = stopAtZoneEdge(tau, a1x, a1y);
+            commitStep(tau, kind, a1x, a1y, speed0);
+        } finally {
+            frozenMuK = Double.NaN;
+        }
+    }
+
+    /**
+     * Friction jumps at a zone's edge, and an integrator step across the jump loses its order.
+     * If the step would end in another zone, it is shortened to end just past the edge, with the
+     * friction of the zone it started in; the next step starts with the new zone's friction.
+     */
+    private double stopAtZoneEdge(double tau, double a1x, double a1y) {
+        int zone = friction.zoneAt(x, y);
+        subStep(tau, StepKind.INTEGRATOR, a1x, a1y);
+        if (friction.zoneAt(nx, ny) == zone) return tau;
+        frozenMuK = muK;
+        double inside = 0, beyond = tau;
+        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
+            double mid = 0.5 * (inside + beyond);
+            subStep(mid, StepKind.INTEGRATOR, a1x, a1y);
+            if (friction.zoneAt(nx, ny) == zone) inside = mid; else beyond = mid;
+        }
+        return beyond;
+    }
+
+    private void commitStep(double tau, StepKind kind, double a1x, double a1y, double speed0) {
         subStep(tau, kind, a1x, a1y);
         if (kind == StepKind.SLOW && nvx == 0 && nvy == 0) {
             // Friction held the ball within this step: it stops where the slow step ends.
@@ -363,7 +395,8 @@ public final class Stroke {
 
     private void accelerationAt(double px, double py, double pvx, double pvy) {
         terrain.sample(px, py, sample);
-        acceleration(sample[1], sample[2], friction.kinetic(px, py), pvx, pvy);
+        double mu = Double.isNaN(frozenMuK) ? friction.kinetic(px, py) : frozenMuK;
+        acceleration(sample[1], sample[2], mu, pvx, pvy);
     }
 
     /** The equations of motion: writes (ax, ay) for slope (gx, gy), friction mu and velocity v. */

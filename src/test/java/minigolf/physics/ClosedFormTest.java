@@ -142,6 +142,19 @@ class ClosedFormTest {
     }
 
     @Test
+    void crossingIntoASandZoneSplitsTheStepAtTheEdge() {
+        // Grass (mu 0.1) up to x = 1.003, sand (mu 0.5) beyond: v1^2 = v0^2 - 2 mu1 g d, then v1^2 / (2 mu2 g).
+        Zone sand = new Zone(new Shape.Rect(new Vec2(1.003, -20), new Vec2(20, 20)), 0.5, 0.6);
+        World world = TestWorlds.world(TestWorlds.plane(0, 0, 0.1), 0.1, 0.2, 20, PhysicsModel.CLASSIC,
+                TestWorlds.farHole(20), List.of(sand));
+        double v1Squared = 9 - 2 * 0.1 * G * 1.003;
+        ShotResult r = TestWorlds.rk4(world).simulate(0, 0, 3, 0);
+        assertEquals(1.003 + v1Squared / (2 * 0.5 * G), r.endX(), 1e-9);
+        double time = (3 - Math.sqrt(v1Squared)) / (0.1 * G) + Math.sqrt(v1Squared) / (0.5 * G);
+        assertEquals(time, r.time(), 1e-9);
+    }
+
+    @Test
     void restRuleHolesABallThatStopsInsideTheRadius() {
         double distance = 4 / (2 * 0.1 * G);
         Hole hole = new Hole(new Vec2(distance + 0.05, 0), 0.1, HoleRule.REST, null);
