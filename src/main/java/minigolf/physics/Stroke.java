@@ -222,11 +222,8 @@ public final class Stroke {
 
     private void commitStep(double tau, StepKind kind, double a1x, double a1y, double speed0) {
         subStep(tau, kind, a1x, a1y);
-        if (kind == StepKind.SLOW && nvx == 0 && nvy == 0) {
-            // Friction held the ball within this step: it stops where the slow step ends.
-            kind = StepKind.STOP;
-        }
-        boolean stopping = kind == StepKind.STOP;
+        // A stop step ends at rest, and so does a slow step in which friction held the ball.
+        boolean stopping = kind == StepKind.STOP || (kind == StepKind.SLOW && nvx == 0 && nvy == 0);
         double endTau = tau;
         Outcome event = hazardAt(nx, ny);
         if (event != null) {
