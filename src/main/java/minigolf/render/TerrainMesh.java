@@ -132,16 +132,7 @@ public final class TerrainMesh {
     }
 
     private static int put(float[] v, int p, double x, double y, double z, double nx, double ny, double nz, float[] c) {
-        v[p++] = (float) x;
-        v[p++] = (float) y;
-        v[p++] = (float) z;
-        v[p++] = (float) nx;
-        v[p++] = (float) ny;
-        v[p++] = (float) nz;
-        v[p++] = c[0];
-        v[p++] = c[1];
-        v[p++] = c[2];
-        return p;
+        return Shapes.putPnc(v, p, x, y, z, nx, ny, nz, c[0], c[1], c[2]);
     }
 
     private static int tri(int[] idx, int q, int a, int b, int c) {
