@@ -40,18 +40,16 @@ public final class FrictionField {
 
     public double kinetic(double x, double y) {
         if (uniform) return defaultKinetic;
-        for (int k = zones.length - 1; k >= 0; k--) {
-            if (zones[k].shape().contains(x, y)) return zones[k].kineticFriction();
-        }
+        int zone = zoneAt(x, y);
+        if (zone >= 0) return zones[zone].kineticFriction();
         return grid != null && grid.kineticFriction() != null
                 ? bilinear(grid.kineticFriction(), x, y) : defaultKinetic;
     }
 
     public double staticFriction(double x, double y) {
         if (uniform) return defaultStatic;
-        for (int k = zones.length - 1; k >= 0; k--) {
-            if (zones[k].shape().contains(x, y)) return zones[k].staticFriction();
-        }
+        int zone = zoneAt(x, y);
+        if (zone >= 0) return zones[zone].staticFriction();
         return grid != null && grid.staticFriction() != null
                 ? bilinear(grid.staticFriction(), x, y) : defaultStatic;
     }

@@ -75,11 +75,6 @@ public final class World {
         return course.physics();
     }
 
-    /** True where a ball would end its stroke: in water (h < 0) or outside the bounds. */
-    public boolean isHazard(double x, double y) {
-        return !course.bounds().contains(x, y) || terrain.height(x, y) < 0;
-    }
-
     /** Compiles the terrain once: the loader's water check and the world share it. */
     private static final class TerrainBuilder {
         private TerrainSpec spec;
