@@ -41,12 +41,17 @@ public final class CourseLoader {
     static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
     static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction");
     static final List<String> BOUNDS_FIELDS = List.of("min", "max");
-    static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model");
+    static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model",
+            "ballRadius", "ballMass", "dragCoefficient", "airDensity", "groundRestitution");
     static final List<String> HOLE_FIELDS = List.of("position", "radius", "rule", "captureSpeed");
     static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction");
     static final List<String> RECT_FIELDS = List.of("type", "min", "max");
     static final List<String> CIRCLE_FIELDS = List.of("type", "center", "radius");
     static final List<String> POLYGON_FIELDS = List.of("type", "points");
+    static final List<String> WALL_FIELDS = List.of("type", "from", "to", "thickness", "height", "restitution");
+    static final List<String> TREE_FIELDS = List.of("type", "position", "radius", "height", "restitution");
+    static final List<String> BOX_FIELDS = List.of("type", "min", "max", "rotationDeg", "restitution");
+    static final List<String> MODEL_FIELDS = List.of("type", "file", "position", "rotationDeg", "scale", "restitution");
 
     /** Strict JSON: no NaN/Infinity literals, no comments, no duplicate keys, nothing after the object. */
     private static final ObjectMapper MAPPER = JsonMapper.builder()
@@ -78,7 +83,7 @@ public final class CourseLoader {
         } catch (RuntimeException e) {
             throw new CourseException(source, null, "cannot read: " + e, e);
         }
-        return parse(json, source, probes);
+        return parse(json, source, probes, ModelFiles.beside(file));
     }
 
     /** Parses and validates course JSON; {@code sourceName} is used in error messages. No water check. */
@@ -89,7 +94,13 @@ public final class CourseLoader {
     /** Parses and validates course JSON; with a probe factory the start and hole are also checked for water. */
     public static Course parse(String json, String sourceName, Function<TerrainSpec, HeightProbe> probes)
             throws CourseException {
-        Course course = new Reader(sourceName).course(readTree(json, sourceName));
+        return parse(json, sourceName, probes, ModelFiles.besideSource(sourceName));
+    }
+
+    /** As {@link #parse(String, String, Function)}, with the .obj files of model obstacles read through {@code models}. */
+    static Course parse(String json, String sourceName, Function<TerrainSpec, HeightProbe> probes, ModelFiles models)
+            throws CourseException {
+        Course course = new Reader(sourceName, models).course(readTree(json, sourceName));
         CourseValidator.checkInBounds(course, sourceName);
         if (probes != null) {
             HeightProbe probe;
@@ -164,9 +175,11 @@ public final class CourseLoader {
     /** Walks the tree; every method gets the field path of the node it reads. */
     private static final class Reader {
         private final String source;
+        private final ModelFiles models;
 
-        Reader(String source) {
+        Reader(String source, ModelFiles models) {
             this.source = source;
+            this.models = models;
         }
 
         private CourseException error(String path, String problem) {
@@ -193,8 +206,8 @@ public final class CourseLoader {
             Vec2 start = vec(required(o, "", "start"), "start");
             Hole hole = hole(required(o, "", "hole"), "hole");
             List<Zone> zones = zones(o.get("zones"), "zones");
-            obstacles(o.get("obstacles"), "obstacles");
-            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones);
+            List<Obstacle> obstacles = obstacles(o.get("obstacles"), "obstacles");
+            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles);
         }
 
         // ---- terrain ----
@@ -311,7 +324,18 @@ public final class CourseLoader {
                 model = m.isTextual() ? PhysicsModel.fromJsonName(m.textValue()) : null;
                 if (model == null) throw error(p, "expected one of classic, complete, got " + show(m));
             }
-            return new PhysicsSettings(gravity, kinetic, stat, maxSpeed, model);
+            double ballRadius = optionalPositive(o, path, "ballRadius", PhysicsSettings.DEFAULT_BALL_RADIUS);
+            double ballMass = optionalPositive(o, path, "ballMass", PhysicsSettings.DEFAULT_BALL_MASS);
+            double drag = o.has("dragCoefficient")
+                    ? nonNegative(number(o.get("dragCoefficient"), join(path, "dragCoefficient")), join(path, "dragCoefficient"))
+                    : PhysicsSettings.DEFAULT_DRAG_COEFFICIENT;
+            double air = o.has("airDensity")
+                    ? nonNegative(number(o.get("airDensity"), join(path, "airDensity")), join(path, "airDensity"))
+                    : PhysicsSettings.DEFAULT_AIR_DENSITY;
+            Double ground = o.has("groundRestitution")
+                    ? unit(number(o.get("groundRestitution"), join(path, "groundRestitution")), join(path, "groundRestitution"))
+                    : null;
+            return new PhysicsSettings(gravity, kinetic, stat, maxSpeed, model, ballRadius, ballMass, drag, air, ground);
         }
 
         Hole hole(JsonNode n, String path) throws CourseException {
@@ -388,10 +412,98 @@ public final class CourseLoader {
             }
         }
 
-        void obstacles(JsonNode n, String path) throws CourseException {
-            if (n == null) return;
+        List<Obstacle> obstacles(JsonNode n, String path) throws CourseException {
+            if (n == null) return List.of();
             if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
-            if (n.size() > 0) throw error(path, "obstacles are not supported by this version of the engine");
+            List<Obstacle> obstacles = new ArrayList<>(n.size());
+            for (int i = 0; i < n.size(); i++) obstacles.add(obstacle(n.get(i), path + "[" + i + "]"));
+            return obstacles;
+        }
+
+        Obstacle obstacle(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            JsonNode t = required(o, path, "type");
+            String type = t.isTextual() ? t.textValue() : "";
+            switch (type) {
+                case "wall" -> {
+                    knownFields(o, path, WALL_FIELDS);
+                    Vec2 from = vec(required(o, path, "from"), join(path, "from"));
+                    Vec2 to = vec(required(o, path, "to"), join(path, "to"));
+                    String tp = join(path, "thickness");
+                    double thickness = nonNegative(number(required(o, path, "thickness"), tp), tp);
+                    if (thickness == 0 && from.equals(to)) {
+                        throw error(path, "from and to are the same point and thickness is 0: the wall has no extent");
+                    }
+                    String hp = join(path, "height");
+                    double height = positive(number(required(o, path, "height"), hp), hp);
+                    return new Obstacle.Wall(from, to, thickness, height, restitution(o, path));
+                }
+                case "tree" -> {
+                    knownFields(o, path, TREE_FIELDS);
+                    Vec2 position = vec(required(o, path, "position"), join(path, "position"));
+                    String rp = join(path, "radius"), hp = join(path, "height");
+                    double radius = positive(number(required(o, path, "radius"), rp), rp);
+                    double height = positive(number(required(o, path, "height"), hp), hp);
+                    return new Obstacle.Tree(position, radius, height, restitution(o, path));
+                }
+                case "box" -> {
+                    knownFields(o, path, BOX_FIELDS);
+                    Vec3 min = vec3(required(o, path, "min"), join(path, "min"));
+                    Vec3 max = vec3(required(o, path, "max"), join(path, "max"));
+                    if (!(min.x() < max.x() && min.y() < max.y() && min.z() < max.z())) {
+                        throw error(path, "min must be < max in all three axes, got min " + point3(min) + ", max " + point3(max));
+                    }
+                    double rotation = o.has("rotationDeg") ? number(o.get("rotationDeg"), join(path, "rotationDeg")) : 0;
+                    return new Obstacle.Box(min, max, rotation, restitution(o, path));
+                }
+                case "model" -> {
+                    knownFields(o, path, MODEL_FIELDS);
+                    String fp = join(path, "file");
+                    String file = string(required(o, path, "file"), fp);
+                    if (file.isBlank()) throw error(fp, "must be a non-empty file name");
+                    Vec3 position = vec3(required(o, path, "position"), join(path, "position"));
+                    double rotation = o.has("rotationDeg") ? number(o.get("rotationDeg"), join(path, "rotationDeg")) : 0;
+                    double scale = optionalPositive(o, path, "scale", 1);
+                    double restitution = restitution(o, path);
+                    minigolf.mesh.TriangleMesh mesh;
+                    try {
+                        mesh = models.load(file);
+                    } catch (ModelFiles.ModelException e) {
+                        throw error(fp, e.getMessage());
+                    }
+                    return new Obstacle.Model(file, position, rotation, scale, restitution, mesh);
+                }
+                default -> throw error(join(path, "type"), "expected one of wall, tree, box, model, got " + show(t));
+            }
+        }
+
+        private double restitution(ObjectNode o, String path) throws CourseException {
+            if (!o.has("restitution")) return Obstacle.DEFAULT_RESTITUTION;
+            String p = join(path, "restitution");
+            return unit(number(o.get("restitution"), p), p);
+        }
+
+        private double optionalPositive(ObjectNode o, String path, String field, double fallback) throws CourseException {
+            if (!o.has(field)) return fallback;
+            String p = join(path, field);
+            return positive(number(o.get(field), p), p);
+        }
+
+        double unit(double v, String path) throws CourseException {
+            if (!(v >= 0 && v <= 1)) throw error(path, "must be between 0 and 1, got " + CourseValidator.number(v));
+            return v;
+        }
+
+        Vec3 vec3(JsonNode n, String path) throws CourseException {
+            if (!n.isArray() || n.size() != 3 || !n.get(0).isNumber() || !n.get(1).isNumber() || !n.get(2).isNumber()) {
+                throw error(path, "expected [x, y, z], got " + show(n));
+            }
+            return new Vec3(number(n.get(0), path + "[0]"), number(n.get(1), path + "[1]"), number(n.get(2), path + "[2]"));
+        }
+
+        private static String point3(Vec3 p) {
+            return "(" + CourseValidator.number(p.x()) + ", " + CourseValidator.number(p.y()) + ", "
+                    + CourseValidator.number(p.z()) + ")";
         }
 
         // ---- primitives ----

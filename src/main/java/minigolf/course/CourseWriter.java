@@ -41,7 +41,16 @@ public final class CourseWriter {
                 .append(", \"kineticFriction\": ").append(num(p.kineticFriction(), "physics.kineticFriction"))
                 .append(", \"staticFriction\": ").append(num(p.staticFriction(), "physics.staticFriction"))
                 .append(", \"maxSpeed\": ").append(num(p.maxSpeed(), "physics.maxSpeed"))
-                .append(", \"model\": ").append(quote(require(p.model(), "physics.model").jsonName())).append(" },\n");
+                .append(", \"model\": ").append(quote(require(p.model(), "physics.model").jsonName()));
+        // The ball and flight fields only where they differ from the defaults: old files stay as they were.
+        optional(sb, "ballRadius", p.ballRadius(), PhysicsSettings.DEFAULT_BALL_RADIUS);
+        optional(sb, "ballMass", p.ballMass(), PhysicsSettings.DEFAULT_BALL_MASS);
+        optional(sb, "dragCoefficient", p.dragCoefficient(), PhysicsSettings.DEFAULT_DRAG_COEFFICIENT);
+        optional(sb, "airDensity", p.airDensity(), PhysicsSettings.DEFAULT_AIR_DENSITY);
+        if (p.groundRestitution() != null) {
+            sb.append(", \"groundRestitution\": ").append(num(p.groundRestitution(), "physics.groundRestitution"));
+        }
+        sb.append(" },\n");
         sb.append("  \"start\": ");
         vec(sb, require(course.start(), "start"), "start");
         sb.append(",\n");
@@ -70,7 +79,18 @@ public final class CourseWriter {
             }
             sb.append("  ],\n");
         }
-        sb.append("  \"obstacles\": []\n");
+        List<Obstacle> obstacles = course.obstacles();
+        if (obstacles.isEmpty()) {
+            sb.append("  \"obstacles\": []\n");
+        } else {
+            sb.append("  \"obstacles\": [\n");
+            for (int i = 0; i < obstacles.size(); i++) {
+                sb.append("    ");
+                obstacle(sb, require(obstacles.get(i), "obstacles[" + i + "]"), "obstacles[" + i + "]");
+                sb.append(i + 1 < obstacles.size() ? ",\n" : "\n");
+            }
+            sb.append("  ]\n");
+        }
         sb.append("}\n");
         return sb.toString();
     }
@@ -90,7 +110,12 @@ public final class CourseWriter {
             throw new CourseException(source, null, "cannot save: " + e.getMessage(), e);
         }
         try {
-            CourseLoader.parse(json, source);
+            // Model files are checked as the course holds them: the target folder need not have them yet.
+            java.util.Map<String, minigolf.mesh.TriangleMesh> meshes = new java.util.HashMap<>();
+            for (Obstacle o : course.obstacles()) {
+                if (o instanceof Obstacle.Model m && m.mesh() != null) meshes.put(m.file(), m.mesh());
+            }
+            CourseLoader.parse(json, source, null, ModelFiles.known(meshes, ModelFiles.beside(file)));
         } catch (CourseException e) {
             throw new CourseException(source, null, "cannot save: " + e.detail(), e);
         }
@@ -160,6 +185,45 @@ public final class CourseWriter {
             }
             sb.append("] }");
         }
+    }
+
+    private static void optional(StringBuilder sb, String field, double value, double fallback) {
+        if (Double.compare(value, fallback) != 0) sb.append(", \"").append(field).append("\": ").append(num(value, "physics." + field));
+    }
+
+    private static void obstacle(StringBuilder sb, Obstacle o, String path) {
+        if (o instanceof Obstacle.Wall w) {
+            sb.append("{ \"type\": \"wall\", \"from\": ");
+            vec(sb, require(w.from(), path + ".from"), path + ".from");
+            sb.append(", \"to\": ");
+            vec(sb, require(w.to(), path + ".to"), path + ".to");
+            sb.append(", \"thickness\": ").append(num(w.thickness(), path + ".thickness"))
+                    .append(", \"height\": ").append(num(w.height(), path + ".height"));
+        } else if (o instanceof Obstacle.Tree t) {
+            sb.append("{ \"type\": \"tree\", \"position\": ");
+            vec(sb, require(t.position(), path + ".position"), path + ".position");
+            sb.append(", \"radius\": ").append(num(t.radius(), path + ".radius"))
+                    .append(", \"height\": ").append(num(t.height(), path + ".height"));
+        } else if (o instanceof Obstacle.Box b) {
+            sb.append("{ \"type\": \"box\", \"min\": ");
+            vec3(sb, require(b.min(), path + ".min"), path + ".min");
+            sb.append(", \"max\": ");
+            vec3(sb, require(b.max(), path + ".max"), path + ".max");
+            sb.append(", \"rotationDeg\": ").append(num(b.rotationDeg(), path + ".rotationDeg"));
+        } else {
+            Obstacle.Model m = (Obstacle.Model) o;
+            sb.append("{ \"type\": \"model\", \"file\": ").append(quote(require(m.file(), path + ".file")))
+                    .append(", \"position\": ");
+            vec3(sb, require(m.position(), path + ".position"), path + ".position");
+            sb.append(", \"rotationDeg\": ").append(num(m.rotationDeg(), path + ".rotationDeg"))
+                    .append(", \"scale\": ").append(num(m.scale(), path + ".scale"));
+        }
+        sb.append(", \"restitution\": ").append(num(o.restitution(), path + ".restitution")).append(" }");
+    }
+
+    private static void vec3(StringBuilder sb, Vec3 v, String path) {
+        sb.append('[').append(num(v.x(), path)).append(", ").append(num(v.y(), path)).append(", ")
+                .append(num(v.z(), path)).append(']');
     }
 
     private static void vec(StringBuilder sb, Vec2 v, String path) {

@@ -164,7 +164,7 @@ class CourseLoaderTest {
 
     @Test
     void unknownFieldListsTheKnownOnes() {
-        assertEquals("courses/x.json: physics.frction: unknown field (known: gravity, kineticFriction, staticFriction, maxSpeed, model)",
+        assertEquals("courses/x.json: physics.frction: unknown field (known: gravity, kineticFriction, staticFriction, maxSpeed, model, ballRadius, ballMass, dragCoefficient, airDensity, groundRestitution)",
                 error(edit("\"gravity\": 9.81,", "\"gravity\": 9.81, \"frction\": 0.1,")));
         assertEquals("courses/x.json: colour: unknown field (known: format, name, terrain, bounds, physics, start, hole, zones, obstacles)",
                 error(edit("\"name\": \"Lake\",", "\"name\": \"Lake\", \"colour\": \"green\",")));
@@ -251,8 +251,8 @@ class CourseLoaderTest {
     }
 
     @Test
-    void obstaclesAreNotSupportedYet() {
-        assertEquals("courses/x.json: obstacles: obstacles are not supported by this version of the engine",
+    void anObstacleNeedsItsFields() {
+        assertEquals("courses/x.json: obstacles[0].from: missing required field",
                 error(edit("\"obstacles\": []", "\"obstacles\": [ { \"type\": \"wall\" } ]")));
     }
 
