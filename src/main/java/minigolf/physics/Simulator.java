@@ -25,4 +25,14 @@ public final class Simulator {
     public ShotResult simulate(double x0, double y0, double vx, double vy, TrajectoryListener listener) {
         return new Stroke(world, settings, x0, y0, vx, vy, listener).run();
     }
+
+    /** A shot with a vertical component (a chip when vz &gt; 0); no events recorded. */
+    public ShotResult simulate(double x0, double y0, double vx, double vy, double vz) {
+        return new Stroke(world, settings, x0, y0, vx, vy, vz, null, false).run();
+    }
+
+    /** A shot with a vertical component, its events recorded in the result ({@link ShotResult#events()}). */
+    public ShotResult simulate(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener) {
+        return new Stroke(world, settings, x0, y0, vx, vy, vz, listener, true).run();
+    }
 }

@@ -1,5 +1,9 @@
 package minigolf.physics;
 
+import java.util.ArrayList;
+import java.util.List;
+import minigolf.collision.CollisionScene;
+import minigolf.collision.Hit;
 import minigolf.course.Bounds;
 import minigolf.course.Hole;
 import minigolf.course.HoleRule;
@@ -20,10 +24,27 @@ import minigolf.terrain.Terrain;
  * and v is set to 0. At rest the ball stays if mu_s &gt; |grad h| (or kinetic friction alone
  * holds it), else it starts rolling down the slope. Water entry and leaving the bounds are
  * located inside the step by bisection on the integrator's own sub-step.
+ *
+ * <p>Obstacles and flight (docs/physics.md): the state is 3-D, (x, y, z) being the ball's contact
+ * point. Each step's path (a chord from start to end) is swept with the ball's sphere against the
+ * obstacles; at the first contact the step is cut, the velocity reflected (normal part times the
+ * restitution, tangential part kept) and the rest of the step integrated, up to
+ * {@link #MAX_PIECES} contacts per step. A flying ball moves under gravity and quadratic drag
+ * (always RK4) until it lands, bounces or settles back into rolling.
  */
 public final class Stroke {
     /** Bisection halvings when locating an event inside a step: dt / 2^50 is far below 1 mm. */
     private static final int LOCATE_ITERATIONS = 50;
+    /** Most contacts, launches and landings handled within one step; a ball wedged harder than that stops. */
+    static final int MAX_PIECES = 16;
+    /** A ball leaving a surface slower than this (a hop under 1 mm: v^2 / 2g) stays on it. */
+    static final double HOP_SPEED = Math.sqrt(2 * 9.81 * 0.001);
+    /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
+    static final double LIFT_TOLERANCE = 1e-6;
+    /** A ball stops this far short of its contact point along its path, so it never ends a step touching. */
+    static final double SKIN = 1e-7;
+    /** Coulomb friction of a landing ball on turf; the tangential loss is at most 2/7 (the ball then rolls). */
+    static final double IMPACT_FRICTION = 0.4;
 
     private final Terrain terrain;
     private final FrictionField friction;
@@ -40,14 +61,32 @@ public final class Stroke {
     private final double captureSpeed;
     private final TrajectoryListener listener;
     private final boolean zoned;
+    private final CollisionScene scene;
+    private final double ballRadius;
+    private final double drag;
+    private final Double groundRestitution;
+    private final List<StrokeEvent> events;
+    private final Hit hit = new Hit();
+    private final double[] scratch = new double[3];
 
     // The ball's state and the terrain sample at it (reused as the first stage of the next step).
     private double x, y, vx, vy, t;
     private double h, hx, hy, muK;
     private int steps;
+    // The third dimension: z is the contact point's height (h while rolling), vz its rate of change.
+    private double z, vz;
+    private boolean flying;
+    /** Set by a piece of a step (a contact, a launch, a landing) when the rest of the step is to be integrated. */
+    private boolean resume;
+    private double pieceTime;
+    // The state at the start of the last rolling step, for a take-off found at its end.
+    private double px, py, pvx, pvy, pt, ph, phx, phy, pMuK;
+    private int pSteps;
 
     private Outcome outcome;
-    private double endX, endY;
+    private double endX, endY, endZ;
+    // Flight scratch: the state a flight sub-step produced.
+    private double fx, fy, fz, fvx, fvy, fvz;
 
     // Scratch: the last acceleration and the state a sub-step produced.
     private final double[] sample = new double[3];
@@ -63,8 +102,21 @@ public final class Stroke {
      */
     public Stroke(World world, SimulationSettings settings, double x0, double y0, double vx0, double vy0,
                   TrajectoryListener listener) {
+        this(world, settings, x0, y0, vx0, vy0, 0, listener, false);
+    }
+
+    /**
+     * Starts a stroke from (x0, y0) on the ground with velocity (vx0, vy0, vz0). The ball flies if
+     * vz0 &gt; 0 and it rises faster than the ground does along (vx0, vy0); otherwise it rolls with
+     * (vx0, vy0). The speed limit applies to the whole vector. Events are recorded (for
+     * {@link ShotResult#events()}) only if {@code recordEvents}; the listener receives them anyway.
+     *
+     * @throws IllegalArgumentException if the shot is faster than the course's maxSpeed
+     */
+    public Stroke(World world, SimulationSettings settings, double x0, double y0, double vx0, double vy0, double vz0,
+                  TrajectoryListener listener, boolean recordEvents) {
         PhysicsSettings physics = world.physics();
-        double speed = Math.sqrt(vx0 * vx0 + vy0 * vy0);
+        double speed = Math.sqrt(vx0 * vx0 + vy0 * vy0 + vz0 * vz0);
         if (!Double.isFinite(speed)) {
             throw new IllegalArgumentException("shot velocity must be finite numbers");
         }
@@ -88,15 +140,25 @@ public final class Stroke {
         this.captureSpeed = hole.effectiveCaptureSpeed();
         this.listener = listener;
         this.zoned = friction.hasZones();
+        this.scene = world.obstacles();
+        this.ballRadius = physics.ballRadius();
+        this.drag = physics.dragFactor();
+        this.groundRestitution = physics.groundRestitution();
+        this.events = recordEvents ? new ArrayList<>() : null;
         this.x = x0;
         this.y = y0;
         this.vx = vx0;
         this.vy = vy0;
         sampleCurrent();
+        this.z = h;
         if (!bounds.contains(x, y)) {
-            finish(Outcome.OUT, x, y);
+            finish(Outcome.OUT, x, y, z);
         } else if (h < 0) {
-            finish(Outcome.WATER, x, y);
+            finish(Outcome.WATER, x, y, z);
+        } else if (vz0 > 0 && vz0 > hx * vx0 + hy * vy0) {
+            flying = true;
+            vz = vz0;
+            event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
         }
     }
 
@@ -107,13 +169,18 @@ public final class Stroke {
     /** The result; only valid once {@link #isFinished()}. */
     public ShotResult result() {
         if (outcome == null) throw new IllegalStateException("the stroke has not finished");
-        return new ShotResult(outcome, endX, endY, t, steps);
+        return new ShotResult(outcome, endX, endY, t, steps, endZ, events == null ? List.of() : events);
     }
 
     public double x() { return x; }
     public double y() { return y; }
     public double vx() { return vx; }
     public double vy() { return vy; }
+    /** Height of the ball's contact point (its lowest point): the terrain height while it rolls. */
+    public double z() { return z; }
+    /** Vertical velocity: in flight its own, while rolling the rate at which the ground under it rises. */
+    public double vz() { return flying ? vz : hx * vx + hy * vy; }
+    public boolean isFlying() { return flying; }
     public double time() { return t; }
     public int steps() { return steps; }
     /** The terrain height under the ball. */
@@ -122,34 +189,51 @@ public final class Stroke {
     /** Advances the ball by one step (or ends the stroke). Does nothing once finished. */
     public void step() {
         if (outcome != null) return;
+        double remaining = dt;
+        for (int piece = 0; piece < MAX_PIECES; piece++) {
+            resume = false;
+            remaining -= flying ? flightPiece(remaining) : rollingPiece(remaining);
+            if (!resume || outcome != null || remaining <= 1e-9 * dt) return;
+        }
+        // Wedged: more contacts in one step than we follow. The ball stops where it is for the rest of it.
+        t += remaining;
+        vx = 0;
+        vy = 0;
+        vz = 0;
+    }
+
+    /** One rolling piece of at most tau seconds; returns the time it took. */
+    private double rollingPiece(double tau) {
         if (t >= maxTime) {
-            finish(Outcome.TIMEOUT, x, y);
-            return;
+            finish(Outcome.TIMEOUT, x, y, z);
+            return 0;
         }
         double speed = Math.sqrt(vx * vx + vy * vy);
         if (speed == 0 && staysAtRest()) {
-            finish(isInHole(x, y) ? Outcome.HOLED : Outcome.STOPPED, x, y);
-            return;
+            finish(isInHole(x, y) ? Outcome.HOLED : Outcome.STOPPED, x, y, z);
+            return 0;
         }
+        pieceTime = tau;
         acceleration(hx, hy, muK, vx, vy);
         double a1x = ax, a1y = ay;
         if (speed > 0) {
             double decelerationAlongV = -(a1x * vx + a1y * vy) / speed;
-            if (decelerationAlongV > 0 && speed <= decelerationAlongV * dt && comesToRest(speed)) {
+            if (decelerationAlongV > 0 && speed <= decelerationAlongV * tau && comesToRest(speed)) {
                 finishStep(speed / decelerationAlongV, StepKind.STOP, a1x, a1y, speed);
-                return;
+                return pieceTime;
             }
             // A slow, braking ball: the friction direction would flip inside the integrator's
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
             // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
             // in a step. Such steps treat friction implicitly (see subStep).
-            double maxChange = gravity * (Math.sqrt(hx * hx + hy * hy) + muK) * dt;
+            double maxChange = gravity * (Math.sqrt(hx * hx + hy * hy) + muK) * tau;
             if (decelerationAlongV > 0 && speed <= maxChange) {
-                finishStep(dt, StepKind.SLOW, a1x, a1y, speed);
-                return;
+                finishStep(tau, StepKind.SLOW, a1x, a1y, speed);
+                return pieceTime;
             }
         }
-        finishStep(dt, StepKind.INTEGRATOR, a1x, a1y, speed);
+        finishStep(tau, StepKind.INTEGRATOR, a1x, a1y, speed);
+        return pieceTime;
     }
 
     /** Runs the stroke to its end. */
@@ -231,23 +315,322 @@ public final class Stroke {
             subStep(endTau, kind, a1x, a1y);
             event = hazardAt(nx, ny);
         }
+        boolean collided = false;
+        if (scene != null && rollingContact()) {
+            // The ball reaches an obstacle first: the step ends there (on the swept chord).
+            double f = hit.fraction;
+            double cx = x + f * (nx - x), cy = y + f * (ny - y);
+            endTau *= f;
+            subStep(endTau, kind, a1x, a1y);
+            nx = cx;
+            ny = cy;
+            stopping = false;
+            event = null;
+            collided = true;
+        }
         double speed1 = stopping && event == null ? 0 : Math.sqrt(nvx * nvx + nvy * nvy);
-        boolean pathEndsHere = stopping || event != null;
+        boolean pathEndsHere = stopping || event != null || collided;
         if (captureRule && captureOnSegment(nx, ny, speed0, speed1, endTau, pathEndsHere)) {
             return;
         }
+        px = x;
+        py = y;
+        pvx = vx;
+        pvy = vy;
+        pt = t;
+        ph = h;
+        phx = hx;
+        phy = hy;
+        pMuK = muK;
+        pSteps = steps;
         x = nx;
         y = ny;
         vx = stopping && event == null ? 0 : nvx;
         vy = stopping && event == null ? 0 : nvy;
         t += endTau;
         steps++;
-        if (listener != null) listener.onStep(t, x, y, vx, vy);
+        pieceTime = endTau;
         if (event != null) {
-            finish(event, x, y);
+            z = terrain.height(x, y);
+            notifyListener();
+            finish(event, x, y, z);
             return;
         }
         sampleCurrent();
+        z = h;
+        if (collided) {
+            bounceOffObstacleWhileRolling();
+            notifyListener();
+            resume = true;
+            return;
+        }
+        if (kind == StepKind.INTEGRATOR && takesOff(endTau)) {
+            // The ground fell away faster than gravity can pull the ball down: it flew this step.
+            x = px;
+            y = py;
+            vx = pvx;
+            vy = pvy;
+            t = pt;
+            h = ph;
+            hx = phx;
+            hy = phy;
+            muK = pMuK;
+            steps = pSteps;
+            z = h;
+            vz = hx * vx + hy * vy;
+            flying = true;
+            event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
+            pieceTime = 0;
+            resume = true;
+            return;
+        }
+        notifyListener();
+    }
+
+    /** Whether a ball thrown from the step's start along the ground would be above the ground at its end. */
+    private boolean takesOff(double tau) {
+        double free = ph + (phx * pvx + phy * pvy) * tau - 0.5 * gravity * tau * tau;
+        return h < free - LIFT_TOLERANCE;
+    }
+
+    /** Sweeps the rolling ball from (x, y) to (nx, ny); true with {@link #hit} set on a contact. */
+    private boolean rollingContact() {
+        if (!scene.anyNear(Math.min(x, nx), Math.min(y, ny), Math.max(x, nx), Math.max(y, ny))) return false;
+        double r = ballRadius;
+        double z1 = terrain.height(nx, ny);
+        if (!scene.sweep(x, y, h + r, nx, ny, z1 + r, hit, scratch)) return false;
+        backOff(Math.sqrt((nx - x) * (nx - x) + (ny - y) * (ny - y) + (z1 - h) * (z1 - h)));
+        return true;
+    }
+
+    /** Moves the contact fraction back by {@link #SKIN} along a sweep of the given length. */
+    private void backOff(double length) {
+        if (length > 0) hit.fraction = Math.max(0, hit.fraction - SKIN / length);
+    }
+
+    /**
+     * A rolling ball at an obstacle: its velocity along the ground, (vx, vy, grad h . v), is
+     * reflected about the contact normal. If it then leaves the ground faster than a 1 mm hop, it
+     * flies; otherwise the part into or off the ground is dropped and it rolls on.
+     */
+    private void bounceOffObstacleWhileRolling() {
+        double wz = hx * vx + hy * vy;
+        double before = Math.sqrt(vx * vx + vy * vy + wz * wz);
+        double vn = vx * hit.nx + vy * hit.ny + wz * hit.nz;
+        if (vn < 0) {
+            double j = (1 + hit.restitution) * vn;
+            vx -= j * hit.nx;
+            vy -= j * hit.ny;
+            wz -= j * hit.nz;
+        }
+        double norm = Math.sqrt(1 + hx * hx + hy * hy);
+        double away = (wz - hx * vx - hy * vy) / norm; // speed off the ground along its normal
+        if (away > HOP_SPEED) {
+            vz = wz;
+            flying = true;
+            event(StrokeEvent.Type.COLLISION, before, Math.sqrt(vx * vx + vy * vy + wz * wz));
+            event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
+            return;
+        }
+        // Project onto the ground's tangent plane (the ground takes the normal part).
+        double gx = -hx / norm, gy = -hy / norm, gz = 1 / norm;
+        double into = vx * gx + vy * gy + wz * gz;
+        vx -= into * gx;
+        vy -= into * gy;
+        wz = hx * vx + hy * vy;
+        event(StrokeEvent.Type.COLLISION, before, Math.sqrt(vx * vx + vy * vy + wz * wz));
+    }
+
+    // ---- flight ----
+
+    /** One flying piece of at most tau seconds; returns the time it took. */
+    private double flightPiece(double tau) {
+        if (t >= maxTime) {
+            finish(Outcome.TIMEOUT, x, y, z);
+            return 0;
+        }
+        flightSub(tau);
+        double endTau = tau;
+        boolean lands = false;
+        if (fz < groundAt(fx, fy)) {
+            endTau = locateLanding(tau);
+            flightSub(endTau);
+            lands = true;
+        }
+        boolean collided = false;
+        if (scene != null) {
+            double r = ballRadius;
+            if (scene.anyNear(Math.min(x, fx), Math.min(y, fy), Math.max(x, fx), Math.max(y, fy))
+                    && scene.sweep(x, y, z + r, fx, fy, fz + r, hit, scratch)) {
+                backOff(Math.sqrt((fx - x) * (fx - x) + (fy - y) * (fy - y) + (fz - z) * (fz - z)));
+                double f = hit.fraction;
+                double cx = x + f * (fx - x), cy = y + f * (fy - y), cz = z + f * (fz - z);
+                endTau *= f;
+                flightSub(endTau);
+                fx = cx;
+                fy = cy;
+                fz = cz;
+                lands = false;
+                collided = true;
+            }
+        }
+        x = fx;
+        y = fy;
+        z = fz;
+        vx = fvx;
+        vy = fvy;
+        vz = fvz;
+        t += endTau;
+        steps++;
+        if (collided) {
+            bounceOffObstacleInFlight();
+            resume = outcome == null;
+        } else if (lands) {
+            land();
+        }
+        if (outcome == null) notifyListener();
+        return endTau;
+    }
+
+    /** The surface a flying ball comes down on: the terrain, or the water's surface (z = 0) above it. */
+    private double groundAt(double px, double py) {
+        return Math.max(terrain.height(px, py), 0);
+    }
+
+    /** The first sub-step length at which the ball is below the ground, found by bisection. */
+    private double locateLanding(double tau) {
+        double above = 0, below = tau;
+        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
+            double mid = 0.5 * (above + below);
+            flightSub(mid);
+            if (fz < groundAt(fx, fy)) below = mid; else above = mid;
+        }
+        return below;
+    }
+
+    private void bounceOffObstacleInFlight() {
+        double before = Math.sqrt(vx * vx + vy * vy + vz * vz);
+        double vn = vx * hit.nx + vy * hit.ny + vz * hit.nz;
+        if (vn < 0) {
+            double j = (1 + hit.restitution) * vn;
+            vx -= j * hit.nx;
+            vy -= j * hit.ny;
+            vz -= j * hit.nz;
+        }
+        double after = Math.sqrt(vx * vx + vy * vy + vz * vz);
+        event(StrokeEvent.Type.COLLISION, before, after);
+        // Come to rest on top of an obstacle: the ball is unplayable there, which counts as out.
+        if (hit.nz > 0.5 && -vn * hit.restitution < HOP_SPEED && after < HOP_SPEED / hit.nz) {
+            finish(Outcome.OUT, x, y, z);
+        }
+    }
+
+    /**
+     * The ball reaches the ground. Water or outside the bounds ends the stroke; inside the hole's
+     * radius at a horizontal speed below v_c (1 - (delta/r)^2) it drops. Otherwise it bounces:
+     * normal speed times e (the course's groundRestitution or Penner's turf model), tangential
+     * speed reduced by Coulomb friction (at most to 5/7, where the ball rolls). A bounce lower than
+     * 1 mm settles the ball into rolling.
+     */
+    private void land() {
+        if (!bounds.contains(x, y)) {
+            finish(Outcome.OUT, x, y, z);
+            return;
+        }
+        sampleCurrent();
+        if (h < 0) {
+            z = 0;
+            finish(Outcome.WATER, x, y, z);
+            return;
+        }
+        z = h;
+        double horizontal = Math.sqrt(vx * vx + vy * vy);
+        double delta = Math.hypot(x - holeX, y - holeY);
+        if (delta <= holeRadius) {
+            double ratio = delta / holeRadius;
+            if (horizontal < captureSpeed * (1 - ratio * ratio)) {
+                finish(Outcome.HOLED, x, y, z);
+                return;
+            }
+        }
+        double norm = Math.sqrt(1 + hx * hx + hy * hy);
+        double gx = -hx / norm, gy = -hy / norm, gz = 1 / norm;
+        double before = Math.sqrt(vx * vx + vy * vy + vz * vz);
+        double vn = -(vx * gx + vy * gy + vz * gz); // speed into the ground
+        if (vn < 0) vn = 0;
+        double e = groundRestitution != null ? groundRestitution : pennerRestitution(vn);
+        double tx = vx + vn * gx, ty = vy + vn * gy, tz = vz + vn * gz;
+        double tangential = Math.sqrt(tx * tx + ty * ty + tz * tz);
+        if (tangential > 0) {
+            double loss = Math.min(IMPACT_FRICTION * (1 + e) * vn, 2.0 / 7.0 * tangential);
+            double keep = 1 - loss / tangential;
+            tx *= keep;
+            ty *= keep;
+            tz *= keep;
+        }
+        double up = e * vn;
+        if (up < HOP_SPEED) {
+            flying = false;
+            vx = tx;
+            vy = ty;
+            vz = 0;
+            event(StrokeEvent.Type.LAND, before, Math.sqrt(tx * tx + ty * ty + tz * tz));
+        } else {
+            vx = tx + up * gx;
+            vy = ty + up * gy;
+            vz = tz + up * gz;
+            event(StrokeEvent.Type.BOUNCE, before, Math.sqrt(vx * vx + vy * vy + vz * vz));
+        }
+        resume = true;
+    }
+
+    /** Penner's turf restitution e = 0.510 - 0.0375 vn + 0.000903 vn^2 (fitted for vn up to 20 m/s), kept in [0, 1]. */
+    static double pennerRestitution(double vn) {
+        double v = Math.min(vn, 20);
+        return Math.max(0, Math.min(1, 0.510 - 0.0375 * v + 0.000903 * v * v));
+    }
+
+    /** RK4 flight sub-step of length tau from the current state into f*: gravity and quadratic drag. */
+    private void flightSub(double tau) {
+        double half = 0.5 * tau;
+        flightAcceleration(vx, vy, vz);
+        double k1x = ax, k1y = ay, k1z = azScratch;
+        double v2x = vx + half * k1x, v2y = vy + half * k1y, v2z = vz + half * k1z;
+        flightAcceleration(v2x, v2y, v2z);
+        double k2x = ax, k2y = ay, k2z = azScratch;
+        double v3x = vx + half * k2x, v3y = vy + half * k2y, v3z = vz + half * k2z;
+        flightAcceleration(v3x, v3y, v3z);
+        double k3x = ax, k3y = ay, k3z = azScratch;
+        double v4x = vx + tau * k3x, v4y = vy + tau * k3y, v4z = vz + tau * k3z;
+        flightAcceleration(v4x, v4y, v4z);
+        double sixth = tau / 6;
+        fx = x + sixth * (vx + 2 * v2x + 2 * v3x + v4x);
+        fy = y + sixth * (vy + 2 * v2y + 2 * v3y + v4y);
+        fz = z + sixth * (vz + 2 * v2z + 2 * v3z + v4z);
+        fvx = vx + sixth * (k1x + 2 * k2x + 2 * k3x + ax);
+        fvy = vy + sixth * (k1y + 2 * k2y + 2 * k3y + ay);
+        fvz = vz + sixth * (k1z + 2 * k2z + 2 * k3z + azScratch);
+    }
+
+    private double azScratch;
+
+    /** a = -g z - k |v| v. */
+    private void flightAcceleration(double ux, double uy, double uz) {
+        double k = drag * Math.sqrt(ux * ux + uy * uy + uz * uz);
+        ax = -k * ux;
+        ay = -k * uy;
+        azScratch = -gravity - k * uz;
+    }
+
+    private void notifyListener() {
+        if (listener != null) listener.onState(t, x, y, z, vx, vy, vz());
+    }
+
+    private void event(StrokeEvent.Type type, double speedBefore, double speedAfter) {
+        if (events == null && listener == null) return;
+        StrokeEvent e = new StrokeEvent(t, type, x, y, z, speedBefore, speedAfter);
+        if (events != null) events.add(e);
+        if (listener != null) listener.onEvent(e);
     }
 
     /** Writes the state after a sub-step of length tau from the current state into n*. */
@@ -369,17 +752,32 @@ public final class Stroke {
         y = cy;
         t += f * tau;
         steps++;
-        if (listener != null) listener.onStep(t, x, y, 0, 0);
-        finish(Outcome.HOLED, cx, cy);
+        pieceTime = f * tau;
+        z = terrain.height(cx, cy);
+        vx = 0;
+        vy = 0;
+        if (listener != null) listener.onState(t, x, y, z, 0, 0, 0);
+        finish(Outcome.HOLED, cx, cy, z);
         return true;
     }
 
-    private void finish(Outcome result, double px, double py) {
+    private void finish(Outcome result, double ex, double ey, double ez) {
         outcome = result;
-        endX = px;
-        endY = py;
+        endX = ex;
+        endY = ey;
+        endZ = ez;
         vx = 0;
         vy = 0;
+        vz = 0;
+        flying = false;
+        StrokeEvent.Type type = switch (result) {
+            case HOLED -> StrokeEvent.Type.HOLED;
+            case STOPPED -> StrokeEvent.Type.STOP;
+            case WATER -> StrokeEvent.Type.WATER;
+            case OUT -> StrokeEvent.Type.OUT;
+            case TIMEOUT -> null;
+        };
+        if (type != null) event(type, Double.NaN, Double.NaN);
     }
 
     private void sampleCurrent() {

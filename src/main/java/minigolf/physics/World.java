@@ -1,6 +1,7 @@
 package minigolf.physics;
 
 import java.nio.file.Path;
+import minigolf.collision.CollisionScene;
 import minigolf.course.Bounds;
 import minigolf.course.Course;
 import minigolf.course.CourseException;
@@ -20,11 +21,14 @@ public final class World {
     private final Course course;
     private final Terrain terrain;
     private final FrictionField friction;
+    private final CollisionScene obstacles;
 
     public World(Course course, Terrain terrain) {
         this.course = course;
         this.terrain = terrain;
         this.friction = new FrictionField(course.physics(), course.zones(), course.terrain());
+        this.obstacles = course.obstacles().isEmpty() ? null
+                : CollisionScene.build(course.obstacles(), terrain::height, course.bounds(), course.physics().ballRadius());
     }
 
     /** Builds the terrain from the course's own terrain description. */
@@ -61,6 +65,11 @@ public final class World {
 
     public FrictionField friction() {
         return friction;
+    }
+
+    /** The obstacles as collision geometry, or null when the course has none. */
+    public CollisionScene obstacles() {
+        return obstacles;
     }
 
     public Bounds bounds() {

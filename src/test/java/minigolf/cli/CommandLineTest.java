@@ -48,7 +48,9 @@ class CommandLineTest {
         assertEquals(startX + 4 / (2 * muK * 9.81), json.get("end").get(0).asDouble(), 1e-3);
         assertEquals(2 / (muK * 9.81), json.get("time").asDouble(), 1e-6);
         assertTrue(json.get("steps").asInt() > 0);
-        assertEquals(List.of("outcome", "end", "time", "steps"), fieldNames(json));
+        assertEquals(List.of("outcome", "end", "time", "steps", "events"), fieldNames(json));
+        assertEquals(0.1, json.get("end").get(2).asDouble(), 1e-12, "z: the ball rests on the ground, h = 0.1");
+        assertEquals("stop", json.get("events").get(0).get("type").asText());
     }
 
     @Test
@@ -69,7 +71,7 @@ class CommandLineTest {
                 "--dt", "0.005", "--model", "complete", "--trajectory", csv.toString());
         assertEquals(0, r.code(), r.err());
         List<String> lines = Files.readAllLines(csv);
-        assertEquals("t,x,y,vx,vy", lines.get(0));
+        assertEquals("t,x,y,vx,vy,z,vz", lines.get(0));
         assertEquals(r.json().get("steps").asInt() + 2, lines.size());
         String[] last = lines.get(lines.size() - 1).split(",");
         assertEquals(r.json().get("end").get(0).asDouble(), Double.parseDouble(last[1]), 1e-8);
@@ -94,14 +96,14 @@ class CommandLineTest {
         };
         String[] expected = {
             "exceeds the course's maxSpeed of 5.0 m/s",
-            "--velocity: expected 2 comma-separated numbers, got '1'",
+            "--velocity: expected 2 or 3 comma-separated numbers (VX,VY or VX,VY,VZ), got '1'",
             "--velocity: 'a' is not a number",
             "--integrator: expected rk4, rk2 or euler, got 'verlet'",
             "--model: expected classic or complete, got 'magic'",
             "--dt: must be in (0, 0.1] seconds, got -1.0",
             "missing.json: cannot read: no such file",
             "broken.json: not valid JSON",
-            "Missing required option: '--velocity=VX,VY'",
+            "Missing required option: '--velocity=VX,VY[,VZ]'",
             "--shots: must be at least 1, got 0",
             "Unmatched argument at index 0: 'no-such-command'",
         };

@@ -93,7 +93,7 @@ class ClosedFormTest {
     void ballOnSlopeFlatterThanStaticFrictionStays() {
         World gentle = TestWorlds.world(TestWorlds.plane(0.15, 0, 10), 0.1, 0.2, 20);
         ShotResult r = TestWorlds.rk4(gentle).simulate(1, 2, 0, 0);
-        assertEquals(new ShotResult(Outcome.STOPPED, 1, 2, 0, 0), r);
+        assertEquals(new ShotResult(Outcome.STOPPED, 1, 2, 0, 0, 0.15 + 10, java.util.List.of()), r);
     }
 
     @Test
