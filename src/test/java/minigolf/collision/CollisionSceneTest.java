@@ -1,0 +1,103 @@
+package minigolf.collision;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import minigolf.course.Bounds;
+import minigolf.course.Obstacle;
+import minigolf.course.Vec2;
+import minigolf.course.Vec3;
+import org.junit.jupiter.api.Test;
+
+/** Times of impact of a swept sphere against each kind of shape, against closed forms. */
+class CollisionSceneTest {
+    private static final double R = 0.02;
+    private static final Bounds BOUNDS = new Bounds(-10, -10, 10, 10);
+
+    private static CollisionScene scene(Obstacle... obstacles) {
+        return CollisionScene.build(List.of(obstacles), (x, y) -> 0, BOUNDS, R);
+    }
+
+    private static Obstacle.Box unitBox(double rotation) {
+        return new Obstacle.Box(new Vec3(-0.5, -0.5, 0), new Vec3(0.5, 0.5, 1), rotation, 0.7);
+    }
+
+    @Test
+    void headOnIntoAFaceStopsAtTheRadius() {
+        Hit hit = new Hit();
+        assertTrue(scene(unitBox(0)).sweep(-2, 0, 0.5, 0, 0, 0.5, hit, new double[3]));
+        // The centre reaches x = -0.5 - R after travelling 1.5 - R of 2 m.
+        assertEquals((1.5 - R) / 2, hit.fraction, 1e-12);
+        assertEquals(-1, hit.nx, 1e-12);
+        assertEquals(0, hit.ny, 1e-12);
+        assertEquals(0, hit.nz, 1e-12);
+    }
+
+    @Test
+    void cornerOfARotatedBoxIsHitOnItsVerticalEdge() {
+        // Turned 45 degrees, the box's edge points at -x: at x = -sqrt(0.5).
+        Hit hit = new Hit();
+        assertTrue(scene(unitBox(45)).sweep(-2, 0, 0.5, 0, 0, 0.5, hit, new double[3]));
+        assertEquals((2 - Math.sqrt(0.5) - R) / 2, hit.fraction, 1e-12);
+        assertEquals(-1, hit.nx, 1e-9);
+    }
+
+    @Test
+    void topCornerIsHitOnItsVertexFromAbove() {
+        // Falling straight onto the corner (0.5, 0.5, 1), offset so that only the vertex is touched.
+        double off = 0.01;
+        Hit hit = new Hit();
+        assertTrue(scene(unitBox(0)).sweep(0.5 + off, 0.5 + off, 3, 0.5 + off, 0.5 + off, 0, hit, new double[3]));
+        double drop = Math.sqrt(R * R - 2 * off * off); // the centre's height above the vertex at contact
+        assertEquals((2 - drop) / 3, hit.fraction, 1e-12);
+        assertEquals(off / R, hit.nx, 1e-9);
+        assertEquals(drop / R, hit.nz, 1e-9);
+    }
+
+    @Test
+    void aThinFenceStopsAFastSweepAndAGrazingOneSlidesAlong() {
+        CollisionScene fence = scene(new Obstacle.Wall(new Vec2(0, -1), new Vec2(0, 1), 0, 0.3, 0.7));
+        Hit hit = new Hit();
+        assertTrue(fence.sweep(-1, 0.3, R, 1, 0.3, R, hit, new double[3]));
+        assertEquals((1 - R) / 2, hit.fraction, 1e-12);
+        // Touching the fence and moving along it: no contact, whatever the triangles' inner edges.
+        assertFalse(fence.sweep(-R, -0.8, 0.1, -R, 0.8, 0.1, hit, new double[3]));
+        // A ball flying above the fence's top (0.3) passes.
+        assertFalse(fence.sweep(-1, 0, 0.3 + R + 1e-9, 1, 0, 0.3 + R + 1e-9, hit, new double[3]));
+    }
+
+    @Test
+    void treeSideAndTop() {
+        CollisionScene tree = scene(new Obstacle.Tree(new Vec2(0, 0), 0.1, 1, 0.6));
+        Hit hit = new Hit();
+        assertTrue(tree.sweep(-1, 0.05, 0.5, 1, 0.05, 0.5, hit, new double[3]));
+        double x = -Math.sqrt((0.1 + R) * (0.1 + R) - 0.05 * 0.05);
+        assertEquals((x + 1) / 2, hit.fraction, 1e-12);
+        assertEquals(0.6, hit.restitution);
+        assertEquals(x / (0.1 + R), hit.nx, 1e-12);
+        assertTrue(tree.sweep(0.02, 0, 2, 0.02, 0, 0, hit, new double[3]));
+        assertEquals((1 - R) / 2, hit.fraction, 1e-12);
+        assertEquals(1, hit.nz, 1e-12);
+    }
+
+    @Test
+    void fiveHundredObstaclesGiveTheSameHitsAsOneAndTheGridKeepsCandidatesFew() {
+        Obstacle.Wall wall = new Obstacle.Wall(new Vec2(1, -1), new Vec2(1, 1), 0.05, 0.2, 0.7);
+        List<Obstacle> many = new ArrayList<>(List.of(wall));
+        for (int k = 0; k < 499; k++) {
+            double x = -9 + (k % 25) * 0.5, y = 3 + (k / 25) * 0.3;
+            many.add(new Obstacle.Tree(new Vec2(x, y), 0.05, 1, 0.7));
+        }
+        CollisionScene one = scene(wall), all = CollisionScene.build(many, (x, y) -> 0, BOUNDS, R);
+        Hit a = new Hit(), b = new Hit();
+        for (double y = -1.5; y <= 1.5; y += 0.01) {
+            boolean hitOne = one.sweep(0, y, R, 2, y + 0.1, R, a, new double[3]);
+            assertEquals(hitOne, all.sweep(0, y, R, 2, y + 0.1, R, b, new double[3]), "y " + y);
+            if (hitOne) assertEquals(a.fraction, b.fraction, 0, "y " + y);
+        }
+        assertFalse(all.anyNear(-1, -1, -0.5, -0.5), "nothing is listed near the origin");
+    }
+}
