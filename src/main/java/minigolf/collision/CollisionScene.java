@@ -165,8 +165,9 @@ public final class CollisionScene {
 
     /** Whether any shape is listed in the grid cells under the rectangle (a cheap test before a sweep). */
     public boolean anyNear(double minX, double minY, double maxX, double maxY) {
-        int i0 = column(minX - radius), i1 = column(maxX + radius);
-        int j0 = row(minY - radius), j1 = row(maxY + radius);
+        // Shapes are listed in every cell within a ball radius of them: the centre's own cells suffice.
+        int i0 = column(minX), i1 = column(maxX);
+        int j0 = row(minY), j1 = row(maxY);
         for (int j = j0; j <= j1; j++) {
             int c = j * columns;
             if (cellStart[c + i1 + 1] > cellStart[c + i0]) return true;
@@ -184,7 +185,7 @@ public final class CollisionScene {
         double minX = Math.min(x0, x1) - r, maxX = Math.max(x0, x1) + r;
         double minY = Math.min(y0, y1) - r, maxY = Math.max(y0, y1) + r;
         double minZ = Math.min(z0, z1) - r, maxZ = Math.max(z0, z1) + r;
-        int i0 = column(minX), i1 = column(maxX), j0 = row(minY), j1 = row(maxY);
+        int i0 = column(minX + r), i1 = column(maxX - r), j0 = row(minY + r), j1 = row(maxY - r);
         double best = Double.POSITIVE_INFINITY;
         for (int j = j0; j <= j1; j++) {
             for (int i = i0; i <= i1; i++) {
