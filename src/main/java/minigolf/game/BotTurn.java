@@ -17,8 +17,10 @@ public final class BotTurn {
     private volatile double[] shot;
     private volatile String failure;
     private volatile boolean done;
+    private final java.util.List<Runnable> cancelActions = new java.util.concurrent.CopyOnWriteArrayList<>();
 
-    public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y) {
+    public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
+                   long seed) {
         ShotPlanner.Control control = new ShotPlanner.Control() {
             @Override
             public void progress(double fraction, String text) {
@@ -30,10 +32,16 @@ public final class BotTurn {
             public boolean isCancelled() {
                 return cancelled.get();
             }
+
+            @Override
+            public void whenCancelled(Runnable action) {
+                cancelActions.add(action);
+                if (cancelled.get()) action.run();
+            }
         };
         thread = new Thread(() -> {
             try {
-                double[] v = planner.plan(world, settings, x, y, control);
+                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, control);
                 if (cancelled.get()) {
                     failure = "cancelled";
                 } else if (v == null || v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
@@ -43,7 +51,7 @@ public final class BotTurn {
                     // A bot may round just past the limit; the game never hits harder than maxSpeed.
                     shot = speed > max ? new double[]{v[0] * max / speed, v[1] * max / speed} : v.clone();
                 }
-            } catch (CancellationException e) {
+            } catch (CancellationException | minigolf.bot.BotCancelledException e) {
                 failure = "cancelled";
             } catch (RuntimeException | StackOverflowError e) {
                 failure = planner.name() + " failed: " + e.getMessage();
@@ -79,7 +87,7 @@ public final class BotTurn {
     }
 
     public void cancel() {
-        cancelled.set(true);
+        if (!cancelled.getAndSet(true)) cancelActions.forEach(Runnable::run);
     }
 
     /** Waits for the worker (tests, shutdown). */

@@ -14,14 +14,18 @@ public interface ShotPlanner {
         void progress(double fraction, String message);
 
         boolean isCancelled();
+
+        /** Runs {@code action} when the turn is cancelled (at once if it already is); for bots with their own token. */
+        void whenCancelled(Runnable action);
     }
 
     String name();
 
     /**
      * The velocity (vx, vy) to hit the ball at (x, y) with; it must not exceed the course's maxSpeed.
+     * The same arguments (seed included) give the same shot.
      *
      * @throws java.util.concurrent.CancellationException if {@code control.isCancelled()} became true
      */
-    double[] plan(World world, SimulationSettings settings, double x, double y, Control control);
+    double[] plan(World world, SimulationSettings settings, double x, double y, int strokesTaken, long seed, Control control);
 }

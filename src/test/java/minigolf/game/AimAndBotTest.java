@@ -29,7 +29,7 @@ class AimAndBotTest {
             return "bisect";
         }
 
-        public double[] plan(World world, SimulationSettings settings, double x, double y, Control control) {
+        public double[] plan(World world, SimulationSettings settings, double x, double y, int n, long seed, Control control) {
             double hx = world.hole().position().x() - x, hy = world.hole().position().y() - y, d = Math.hypot(hx, hy);
             var sim = new minigolf.physics.Simulator(world, settings);
             double lo = 0, hi = world.physics().maxSpeed();
@@ -49,7 +49,7 @@ class AimAndBotTest {
     void aBotPlaysItsTurnOnAWorkerThread() throws Exception {
         Game g = new Game(GameTest.FLAT, SimulationSettings.DEFAULT, List.of(Player.bot("Robo", "bisect")), 10);
         PlayerState s = g.player(0);
-        BotTurn turn = new BotTurn(new BisectingPlanner(), g.world(), g.settings(), s.x(), s.y());
+        BotTurn turn = new BotTurn(new BisectingPlanner(), g.world(), g.settings(), s.x(), s.y(), 0, 1L);
         turn.join(10_000);
         assertTrue(turn.isDone());
         assertNull(turn.failure());
@@ -64,12 +64,12 @@ class AimAndBotTest {
                 return "forever";
             }
 
-            public double[] plan(World w, SimulationSettings s, double x, double y, Control c) {
+            public double[] plan(World w, SimulationSettings s, double x, double y, int n, long seed, Control c) {
                 while (!c.isCancelled()) Thread.onSpinWait();
                 throw new CancellationException();
             }
         };
-        BotTurn turn = new BotTurn(forever, GameTest.FLAT, SimulationSettings.DEFAULT, -3, 0);
+        BotTurn turn = new BotTurn(forever, GameTest.FLAT, SimulationSettings.DEFAULT, -3, 0, 0, 1L);
         assertTrue(!turn.isDone());
         turn.cancel();
         turn.join(5_000);
@@ -82,11 +82,11 @@ class AimAndBotTest {
                 return "greedy";
             }
 
-            public double[] plan(World w, SimulationSettings s, double x, double y, Control c) {
+            public double[] plan(World w, SimulationSettings s, double x, double y, int n, long seed, Control c) {
                 return new double[]{30, 40};
             }
         };
-        BotTurn capped = new BotTurn(greedy, GameTest.FLAT, SimulationSettings.DEFAULT, -3, 0);
+        BotTurn capped = new BotTurn(greedy, GameTest.FLAT, SimulationSettings.DEFAULT, -3, 0, 0, 1L);
         capped.join(5_000);
         assertArrayEquals(new double[]{2.4, 3.2}, capped.shot(), 1e-12, "scaled to maxSpeed 4");
     }
