@@ -60,9 +60,10 @@ import static org.lwjgl.system.MemoryUtil.memFree;
 public final class GameApp implements UiActions, UiView {
     /** How the game is started (the command line and tests fill it). */
     public record Options(Path coursePath, Path screenshot, int frames, List<Player> startPlayers,
-                          List<double[]> scriptedShots, double timeScale, SettingsStore store, boolean visible) {
+                          List<double[]> scriptedShots, double timeScale, SettingsStore store, boolean visible,
+                          boolean exitWhenOver) {
         public static Options interactive(Path coursePath) {
-            return new Options(coursePath, null, 0, null, List.of(), 1, SettingsStore.forUser(), true);
+            return new Options(coursePath, null, 0, null, List.of(), 1, SettingsStore.forUser(), true, false);
         }
     }
 
@@ -133,7 +134,7 @@ public final class GameApp implements UiActions, UiView {
 
     private void loop() {
         double last = glfwGetTime(), start = last;
-        int frame = 0;
+        int frame = 0, overFrames = 0;
         while (!window.shouldClose()) {
             double now = glfwGetTime(), elapsed = Math.min(0.25, now - last);
             last = now;
@@ -147,7 +148,10 @@ public final class GameApp implements UiActions, UiView {
             if (rebuildScene) buildScene();
             drawFrame(fw, fh, (float) (now - start));
             frame++;
-            if (options.frames() > 0 && frame >= options.frames()) {
+            overFrames = screens.screen() == Screen.SCORECARD ? overFrames + 1 : 0;
+            // ImGui sizes a new window in its first frames: stop once the scorecard has been drawn.
+            boolean over = options.exitWhenOver() && overFrames >= 3;
+            if ((options.frames() > 0 && frame >= options.frames()) || over) {
                 if (options.screenshot() != null) saveScreenshot(options.screenshot(), fw, fh);
                 window.swapBuffers();
                 break;

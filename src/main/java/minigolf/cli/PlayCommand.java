@@ -57,7 +57,7 @@ final class PlayCommand implements Callable<Integer> {
         List<double[]> script = shots == null ? List.of() : shots.stream().map(PlayCommand::parseShot).toList();
         if (!script.isEmpty() && seats == null) throw new UserError("--shots needs --players");
         GameApp.Options options = new GameApp.Options(course, screenshot, frames, seats, script, timeScale,
-                SettingsStore.forUser(), true);
+                SettingsStore.forUser(), true, false);
         Game game = new GameApp(world, options).run();
         if (frames > 0 && game != null) System.out.print(game.scorecard().toText());
         return 0;

@@ -16,7 +16,8 @@ import minigolf.physics.World;
  *
  * <p>Rules: every hit is a stroke. Water or out of bounds adds one penalty stroke and the ball
  * goes back to where the stroke began. Turn order is golf's: the player farthest from the hole
- * plays next (ties go to the lower seat), so at the start the players go in seat order. Holed
+ * plays next; at equal distance (within a millimetre) the one with fewer strokes, then the lower
+ * seat, so at the start the players go in seat order. Holed
  * players are skipped. A player whose hits plus penalties reach the stroke limit without holing
  * picks up and scores the limit plus one. The game is over when nobody is still playing. Balls
  * do not collide with each other.
@@ -25,6 +26,8 @@ public final class Game {
     public static final int MAX_PLAYERS = 4;
     public static final int DEFAULT_STROKE_LIMIT = 10;
     public static final int MAX_STROKE_LIMIT = 99;
+    /** Distances to the hole closer than this count as equal for the turn order. */
+    public static final double TIE_DISTANCE = 0.001;
 
     private final World world;
     private final SimulationSettings settings;
@@ -107,7 +110,7 @@ public final class Game {
 
     /**
      * The seat whose turn it is: while a stroke rolls, its player; otherwise the playing player
-     * farthest from the hole (ties: lower seat). -1 when the game is over.
+     * farthest from the hole (ties: fewer strokes, then lower seat). -1 when the game is over.
      */
     public int currentPlayer() {
         if (stroke != null) return strokePlayer;
@@ -118,7 +121,9 @@ public final class Game {
             PlayerState s = states.get(i);
             if (!s.isPlaying()) continue;
             double d = Math.hypot(s.x() - hx, s.y() - hy);
-            if (d > bestDistance) {
+            boolean farther = d > bestDistance + TIE_DISTANCE;
+            boolean tie = !farther && d >= bestDistance - TIE_DISTANCE;
+            if (best < 0 || farther || (tie && s.total() < states.get(best).total())) {
                 best = i;
                 bestDistance = d;
             }

@@ -266,9 +266,9 @@ public final class Screens {
             for (int i = 0; i < g.players().size(); i++) {
                 PlayerState s = g.player(i);
                 float[] c = PlayerColors.of(i);
-                ImGui.textColored(c[0], c[1], c[2], 1f, "\u25CF");
+                ImGui.textColored(c[0], c[1], c[2], 1f, String.format(Locale.ROOT, "%-12s", g.players().get(i).name()));
                 ImGui.sameLine();
-                ImGui.text(String.format(Locale.ROOT, "%-12s strokes %d%s%s", g.players().get(i).name(), s.total(),
+                ImGui.text(String.format(Locale.ROOT, "strokes %d%s%s", s.total(),
                         s.penalties() > 0 ? " (" + s.penalties() + " penalty)" : "",
                         s.status() == minigolf.game.PlayerStatus.PLAYING ? "" : ", " + s.status().jsonName()));
             }

@@ -78,6 +78,16 @@ class GameTest {
     }
 
     @Test
+    void atEqualDistanceThePlayerWithFewerStrokesGoes() {
+        World lake = GameLauncher.loadBundled("/courses/lake.json");
+        Game g = new Game(lake, SimulationSettings.DEFAULT, List.of(Player.human("Ann"), Player.human("Bob")), 10);
+        assertEquals(Outcome.WATER, g.play(2, 0).outcome());
+        assertEquals(1, g.currentPlayer(), "both at the start; Bob has 0 strokes, Ann 2");
+        g.play(0.5, 0); // Bob rolls 0.5^2 / (2 mu g) ~ 0.16 m, downhill a bit further, nearer the hole
+        assertEquals(0, g.currentPlayer(), "Ann is farther now");
+    }
+
+    @Test
     void strokeLimitPicksUpAndScoresLimitPlusOne() {
         Game g = new Game(FLAT, SimulationSettings.DEFAULT, List.of(Player.human("A"), Player.human("B")), 3);
         // Seat 0 dribbles 0.5 m each time; seat 1 holes in one.
