@@ -6,6 +6,7 @@ in vec3 vColor;
 
 uniform float uSpecularStrength;
 uniform float uShininess;
+uniform vec3 uTint;      // multiplies the vertex colour (ball colours)
 
 out vec4 fragColor;
 
@@ -13,5 +14,5 @@ void main() {
     vec3 n = normalize(vNormal);
     // Thin things (the flag's cloth) are seen from both sides.
     if (dot(n, uEye - vWorld) < 0.0) n = -n;
-    fragColor = vec4(haze(shade(vColor, n, vWorld, uSpecularStrength, uShininess), vWorld), 1.0);
+    fragColor = vec4(haze(shade(vColor * uTint, n, vWorld, uSpecularStrength, uShininess), vWorld), 1.0);
 }

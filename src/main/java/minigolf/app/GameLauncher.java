@@ -16,7 +16,7 @@ public final class GameLauncher {
 
     public static void playDefaultCourse() {
         World world = loadBundled(DEFAULT_COURSE);
-        GameWindow.show(world.course(), world.terrain());
+        GameWindow.show(world, null);
     }
 
     /** Loads a course that is packaged on the classpath (the courses/ folder is copied into the jar). */

@@ -1,45 +1,75 @@
 package minigolf.cli;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
+import minigolf.app.GameApp;
 import minigolf.app.GameLauncher;
-import minigolf.app.GameWindow;
+import minigolf.game.Game;
+import minigolf.game.Player;
+import minigolf.game.SettingsStore;
 import minigolf.physics.World;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
-@Command(name = "play", description = "Opens the game window on a course (default: the lake).")
+@Command(name = "play", description = {"Opens the game on a course (default: the lake).",
+        "With --frames N it runs the real game N frames (with --players, straight into a game) and exits;"
+                + " --screenshot saves what the window shows at the last frame."})
 final class PlayCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--screenshot", paramLabel = "FILE.png",
-            description = "Renders one frame off-screen, saves it as PNG and exits.")
+    @Option(names = "--screenshot", paramLabel = "FILE.png", description = "Saves the last frame's window as PNG (needs --frames).")
     Path screenshot;
 
-    @Option(names = "--size", paramLabel = "WxH", description = "Screenshot size (default 1280x720).")
-    String size = "1280x720";
+    @Option(names = "--frames", paramLabel = "N", description = "Runs the game N frames, then exits.")
+    int frames;
+
+    @Option(names = "--players", paramLabel = "NAME", split = ",",
+            description = "Starts a game at once with these human players (1 to 4), e.g. --players Ann,Bob.")
+    List<String> players;
+
+    @Option(names = "--shots", paramLabel = "VX:VY", split = ",",
+            description = "Scripted shots for the human players, through the game's HIT input, e.g. 1.5:0.2,2:0.")
+    List<String> shots;
+
+    @Option(names = "--time-scale", paramLabel = "K", description = "Animation speed (1 = real time; default 1).")
+    double timeScale = 1;
 
     @Override
     public Integer call() {
         World world = course == null ? GameLauncher.loadBundled(GameLauncher.DEFAULT_COURSE) : CourseArgument.load(course);
-        if (screenshot == null) {
-            GameWindow.show(world.course(), world.terrain());
-            return 0;
+        if (frames < 0) throw new UserError("--frames: must be >= 0, got " + frames);
+        if (screenshot != null && frames == 0) throw new UserError("--screenshot needs --frames N (N >= 1)");
+        if (!(timeScale > 0 && timeScale <= 1000)) throw new UserError("--time-scale: must be in (0, 1000], got " + timeScale);
+        List<Player> seats = null;
+        if (players != null) {
+            if (players.isEmpty() || players.size() > Game.MAX_PLAYERS) {
+                throw new UserError("--players: 1 to " + Game.MAX_PLAYERS + " names, got " + players.size());
+            }
+            try {
+                seats = players.stream().map(n -> Player.human(n.trim())).toList();
+            } catch (IllegalArgumentException e) {
+                throw new UserError("--players: " + e.getMessage());
+            }
         }
-        String[] parts = size.toLowerCase(java.util.Locale.ROOT).split("x");
-        int width, height;
-        try {
-            width = Integer.parseInt(parts[0]);
-            height = Integer.parseInt(parts[1]);
-        } catch (RuntimeException e) {
-            throw new UserError("--size: expected WxH such as 1280x720, got '" + size + "'");
-        }
-        if (parts.length != 2 || width < 16 || height < 16 || width > 8192 || height > 8192) {
-            throw new UserError("--size: expected WxH between 16x16 and 8192x8192, got '" + size + "'");
-        }
-        GameWindow.screenshot(world.course(), world.terrain(), width, height, screenshot);
+        List<double[]> script = shots == null ? List.of() : shots.stream().map(PlayCommand::parseShot).toList();
+        if (!script.isEmpty() && seats == null) throw new UserError("--shots needs --players");
+        GameApp.Options options = new GameApp.Options(course, screenshot, frames, seats, script, timeScale,
+                SettingsStore.forUser(), true, false);
+        Game game = new GameApp(world, options).run();
+        if (frames > 0 && game != null) System.out.print(game.scorecard().toText());
         return 0;
+    }
+
+    private static double[] parseShot(String s) {
+        String[] p = s.split(":");
+        try {
+            if (p.length != 2) throw new NumberFormatException();
+            return new double[]{Double.parseDouble(p[0]), Double.parseDouble(p[1])};
+        } catch (NumberFormatException e) {
+            throw new UserError("--shots: expected VX:VY such as 1.5:-0.2, got '" + s + "'");
+        }
     }
 }

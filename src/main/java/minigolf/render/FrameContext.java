@@ -38,6 +38,30 @@ public final class FrameContext {
         return this;
     }
 
+    /**
+     * A straight-down orthographic view of the rectangle [minX, maxX] x [minY, maxY] (x right, y up
+     * on screen) for a width x height viewport: the minimap. The rectangle is padded to the viewport's
+     * aspect ratio; heights between {@code minZ} and {@code maxZ} are in the depth range.
+     */
+    public FrameContext updateTopDown(double minX, double minY, double maxX, double maxY, double minZ, double maxZ,
+                                      int width, int height, float time) {
+        viewportWidth = width;
+        viewportHeight = height;
+        float cx = (float) (minX + maxX) / 2, cy = (float) (minY + maxY) / 2;
+        float halfW = (float) (maxX - minX) / 2, halfH = (float) (maxY - minY) / 2;
+        float aspect = (float) width / Math.max(1, height);
+        if (halfW / halfH < aspect) halfW = halfH * aspect;
+        else halfH = halfW / aspect;
+        float top = (float) maxZ + 5;
+        eye.set(cx, cy, top);
+        view.setLookAt(cx, cy, top, cx, cy, 0, 0, 1, 0);
+        projection.setOrtho(-halfW, halfW, -halfH, halfH, 0.01f, (float) (top - minZ) + 1);
+        projection.mul(view, viewProjection);
+        viewProjection.invert(inverseViewProjection);
+        this.time = time;
+        return this;
+    }
+
     /** One directional light. {@code direction} points from the ground towards the sun (unit length). */
     public record Sun(Vector3f direction, Vector3f color, Vector3f skyAmbient, Vector3f groundAmbient) {
         public static Sun afternoon() {

@@ -6,7 +6,11 @@ import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 
-/** The hole (cup and flag) and the ball. */
+import java.util.List;
+
+import static org.lwjgl.opengl.GL11.*;
+
+/** The hole (cup and flag), the balls and the aiming arrow. */
 public final class ObjectsPass implements RenderPass {
     /** A golf ball's radius in metres. */
     public static final double BALL_RADIUS = 0.02135;
@@ -14,21 +18,29 @@ public final class ObjectsPass implements RenderPass {
     public static final double BALL_VISUAL_SCALE = 3.0;
     public static final double FLAG_HEIGHT = 1.0;
     public static final double POLE_RADIUS = 0.012;
+    /** The aiming arrow's length at no power and its extra length at full power, in metres. */
+    public static final double ARROW_MIN_LENGTH = 0.3, ARROW_POWER_LENGTH = 1.7;
 
     private final Terrain terrain;
+    private final double holeX, holeY;
     private final ShaderProgram shader = ShaderProgram.load("object");
     private final Mesh cupRim;
     private final Mesh cup;
     private final Mesh pole;
     private final Mesh cloth;
     private final Mesh ball;
-    private final Vector3f ballCenter = new Vector3f();
+    private final List<BallView> defaultBalls;
+    private List<BallView> balls;
+    private AimView aim;
+    private Mesh arrow;
     private final Matrix4f model = new Matrix4f();
     private final Matrix3f normalMatrix = new Matrix3f();
 
     public ObjectsPass(Course course, Terrain terrain) {
         this.terrain = terrain;
-        double hx = course.hole().position().x(), hy = course.hole().position().y(), r = course.hole().radius();
+        holeX = course.hole().position().x();
+        holeY = course.hole().position().y();
+        double hx = holeX, hy = holeY, r = course.hole().radius();
         double ground = terrain.height(hx, hy);
         cupRim = new Mesh(Shapes.drapedDisc(hx, hy, r * 1.15, 48, 3, terrain::height, 0.003, 0.92f, 0.92f, 0.88f));
         cup = new Mesh(Shapes.drapedDisc(hx, hy, r, 48, 3, terrain::height, 0.005, 0.03f, 0.04f, 0.03f));
@@ -41,40 +53,120 @@ public final class ObjectsPass implements RenderPass {
         cloth = new Mesh(Shapes.triangle(new double[]{hx, hy, top}, new double[]{hx, hy, top - hgt},
                 new double[]{hx + sx * w, hy + sy * w, top - hgt * 0.5}, 0.86f, 0.08f, 0.06f));
         ball = new Mesh(Shapes.icosphere(3, 1f, 1f, 1f));
-        setBall(course.start().x(), course.start().y());
+        double bx = course.start().x(), by = course.start().y();
+        defaultBalls = List.of(BallView.white(bx, by, terrain.height(bx, by)));
+        balls = defaultBalls;
     }
 
-    /** Puts the ball at rest on the surface at (x, y). */
+    /** Puts a single white ball at rest on the surface at (x, y). */
     public void setBall(double x, double y) {
-        ballCenter.set((float) x, (float) y, (float) (terrain.height(x, y) + visualBallRadius()));
+        balls = List.of(BallView.white(x, y, terrain.height(x, y)));
+    }
+
+    /** The balls to draw; null restores the default (one white ball at the course start), empty draws none. */
+    public void setBalls(List<BallView> views) {
+        balls = views == null ? defaultBalls : List.copyOf(views);
+    }
+
+    public List<BallView> balls() {
+        return balls;
+    }
+
+    /** Shows the aiming arrow, or hides it for null. The arrow mesh is rebuilt only when the aim changes. */
+    public void setAim(AimView view) {
+        if (view != null && view.equals(aim)) return;
+        if (arrow != null) {
+            arrow.close();
+            arrow = null;
+        }
+        aim = view;
+        if (view != null) arrow = new Mesh(arrowMesh(view, terrain));
+    }
+
+    public AimView aim() {
+        return aim;
+    }
+
+    /** The arrow for an aim: draped over the ground (or the water surface), coloured by power. */
+    static MeshData arrowMesh(AimView view, Terrain terrain) {
+        float power = Math.max(0f, Math.min(1f, view.power01()));
+        float[] c = powerColor(power);
+        double start = visualBallRadius() * 1.3;
+        double length = start + ARROW_MIN_LENGTH + ARROW_POWER_LENGTH * power;
+        return Shapes.groundArrow(view.x(), view.y(), view.dirX(), view.dirY(), start, length, 0.06,
+                (x, y) -> Math.max(0, terrain.height(x, y)), 0.012, c[0], c[1], c[2]);
+    }
+
+    /** Green at no power, yellow at half, red at full. */
+    public static float[] powerColor(float power01) {
+        float t = Math.max(0f, Math.min(1f, power01));
+        if (t < 0.5f) {
+            float u = t / 0.5f;
+            return new float[]{0.15f + 0.80f * u, 0.80f + 0.05f * u, 0.15f - 0.05f * u};
+        }
+        float u = (t - 0.5f) / 0.5f;
+        return new float[]{0.95f - 0.05f * u, 0.85f - 0.73f * u, 0.10f - 0.02f * u};
     }
 
     public static double visualBallRadius() {
         return BALL_RADIUS * BALL_VISUAL_SCALE;
     }
 
+    /** The centre of the first ball drawn (the default: the ball at the course start). */
     public Vector3f ballCenter() {
-        return new Vector3f(ballCenter);
+        BallView b = balls.isEmpty() ? defaultBalls.get(0) : balls.get(0);
+        return new Vector3f(b.x(), b.y(), b.z() + (float) visualBallRadius());
     }
 
     @Override
     public void render(FrameContext frame) {
-        shader.use();
-        shader.set("uViewProjection", frame.viewProjection);
-        Lighting.apply(shader, frame);
+        begin(frame);
         draw(cupRim, model.identity(), 0.15f, 16f);
         draw(cup, model.identity(), 0.0f, 8f);
         draw(pole, model.identity(), 0.4f, 48f);
         draw(cloth, model.identity(), 0.1f, 8f);
-        float r = (float) visualBallRadius();
-        draw(ball, model.translation(ballCenter).scale(r), 0.6f, 64f);
+        if (arrow != null) draw(arrow, model.identity(), 0.2f, 16f);
+        drawBalls((float) visualBallRadius());
+    }
+
+    /**
+     * The minimap's objects, seen from above and drawn over the terrain: the hole enlarged to
+     * {@code markerRadius} and the balls at least that big, so both read at a few pixels per metre.
+     */
+    void renderMinimap(FrameContext frame, float markerRadius) {
+        glDisable(GL_DEPTH_TEST);
+        begin(frame);
+        float s = (float) Math.max(1, markerRadius / 0.12);
+        model.translation((float) holeX, (float) holeY, 0).scale(s, s, 1).translate((float) -holeX, (float) -holeY, 0);
+        draw(cupRim, model, 0.0f, 8f);
+        draw(cup, model, 0.0f, 8f);
+        drawBalls(Math.max((float) visualBallRadius(), markerRadius));
+        glEnable(GL_DEPTH_TEST);
+    }
+
+    private void begin(FrameContext frame) {
+        shader.use();
+        shader.set("uViewProjection", frame.viewProjection);
+        Lighting.apply(shader, frame);
+    }
+
+    private void drawBalls(float radius) {
+        for (BallView b : balls) {
+            model.translation(b.x(), b.y(), b.z() + radius).scale(radius);
+            draw(ball, model, 0.6f, 64f, b.red(), b.green(), b.blue());
+        }
     }
 
     private void draw(Mesh mesh, Matrix4f m, float specular, float shininess) {
+        draw(mesh, m, specular, shininess, 1f, 1f, 1f);
+    }
+
+    private void draw(Mesh mesh, Matrix4f m, float specular, float shininess, float r, float g, float b) {
         shader.set("uModel", m);
         shader.set("uNormalMatrix", m.normal(normalMatrix));
         shader.set("uSpecularStrength", specular);
         shader.set("uShininess", shininess);
+        shader.set("uTint", r, g, b);
         mesh.draw();
     }
 
@@ -85,6 +177,7 @@ public final class ObjectsPass implements RenderPass {
         pole.close();
         cloth.close();
         ball.close();
+        if (arrow != null) arrow.close();
         shader.close();
     }
 }

@@ -20,8 +20,12 @@ public final class SceneRenderer implements AutoCloseable {
     private final WaterPass water;
     private final List<RenderPass> passes;
     private final FrameContext frame = new FrameContext(FrameContext.Sun.afternoon());
+    private final FrameContext minimapFrame = new FrameContext(FrameContext.Sun.afternoon());
+    private final Course course;
+    private float lastTime;
 
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode) {
+        this.course = course;
         SkyPass s = null;
         TerrainPass t = null;
         ObjectsPass o = null;
@@ -56,6 +60,50 @@ public final class SceneRenderer implements AutoCloseable {
         return objects.ballCenter();
     }
 
+    /** The balls to draw (contact points, see {@link BallView}); null restores the default ball at the start, empty draws none. */
+    public void setBalls(List<BallView> balls) {
+        objects.setBalls(balls);
+    }
+
+    /** Shows the aiming arrow on the ground from the ball; null hides it. */
+    public void setAim(AimView aim) {
+        objects.setAim(aim);
+    }
+
+    /**
+     * Draws the minimap, a top-down view of the whole course (terrain, water, hole, balls), into a
+     * square of {@code sizePx} pixels whose TOP-LEFT corner is at (x, y) framebuffer pixels from the
+     * framebuffer's TOP-LEFT corner (window/ImGui convention, not GL's). Call after {@link #render};
+     * it clears only its own square and restores the full viewport.
+     */
+    public void renderMinimap(int x, int y, int sizePx, int framebufferWidth, int framebufferHeight) {
+        if (sizePx < 8) return;
+        int glY = framebufferHeight - y - sizePx;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(x, glY, sizePx, sizePx);
+        glViewport(x, glY, sizePx, sizePx);
+        glClearColor(0.08f, 0.10f, 0.08f, 1f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        int border = Math.max(2, sizePx / 100), inner = sizePx - 2 * border;
+        glViewport(x + border, glY + border, inner, inner);
+        glScissor(x + border, glY + border, inner, inner);
+        glClearColor(0.20f, 0.24f, 0.20f, 1f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        var b = course.bounds();
+        double pad = 0.02 * Math.max(b.width(), b.depth());
+        minimapFrame.updateTopDown(b.minX() - pad, b.minY() - pad, b.maxX() + pad, b.maxY() + pad,
+                Math.min(0, terrain.minHeight()) - 1, Math.max(0, terrain.maxHeight()) + ObjectsPass.FLAG_HEIGHT + 1,
+                inner, inner, lastTime);
+        terrain.render(minimapFrame);
+        water.renderSimple(minimapFrame);
+        float metresPerPixel = (float) (Math.max(b.width(), b.depth()) + 2 * pad) / inner;
+        objects.renderMinimap(minimapFrame, 4f * metresPerPixel);
+        glDisable(GL_SCISSOR_TEST);
+        glViewport(0, 0, framebufferWidth, framebufferHeight);
+    }
+
     /** Renders one frame into the currently bound framebuffer, whose size is width x height pixels. */
     public void render(OrbitCamera camera, int width, int height, float time) {
         glViewport(0, 0, width, height);
@@ -65,6 +113,7 @@ public final class SceneRenderer implements AutoCloseable {
         glDepthFunc(GL_LEQUAL);
         glDisable(GL_CULL_FACE);
         glEnable(GL_MULTISAMPLE);
+        lastTime = time;
         frame.update(camera, width, height, time);
         for (RenderPass pass : passes) pass.render(frame);
     }

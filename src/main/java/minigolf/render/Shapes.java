@@ -147,6 +147,54 @@ public final class Shapes {
         return new MeshData(MeshData.PNC, v, new int[]{0, 1, 2});
     }
 
+    /**
+     * A flat arrow lying on a surface: from {@code start} metres to {@code length} metres along the
+     * direction (dirX, dirY) from (x, y), a shaft {@code width} wide and a head twice as wide. Every
+     * vertex sits at {@code height(x, y) + lift}; the shaft is cut every 5 cm so it follows the ground.
+     */
+    public static MeshData groundArrow(double x, double y, double dirX, double dirY, double start, double length,
+                                       double width, DoubleBinaryOperator height, double lift,
+                                       float r, float g, float b) {
+        double len = Math.hypot(dirX, dirY);
+        double ux = len > 1e-12 ? dirX / len : 1, uy = len > 1e-12 ? dirY / len : 0;
+        double px = -uy, py = ux; // left of the direction
+        double head = Math.min(length - start, Math.max(2.5 * width, 0.25 * (length - start)));
+        double shaftEnd = length - head;
+        int segments = Math.max(1, (int) Math.ceil((shaftEnd - start) / 0.05));
+        int headSegments = Math.max(1, (int) Math.ceil(head / 0.05));
+        int count = 2 * (segments + 1) + 2 * (headSegments + 1);
+        float[] v = new float[count * 9];
+        int p = 0;
+        for (int s = 0; s <= segments; s++) {
+            double d = start + (shaftEnd - start) * s / segments;
+            for (int side = -1; side <= 1; side += 2) {
+                double vx = x + ux * d + px * side * width / 2, vy = y + uy * d + py * side * width / 2;
+                p = putPnc(v, p, vx, vy, height.applyAsDouble(vx, vy) + lift, 0, 0, 1, r, g, b);
+            }
+        }
+        // The head narrows from full width to a point: pairs of vertices converging on the tip.
+        for (int s = 0; s <= headSegments; s++) {
+            double t = (double) s / headSegments, d = shaftEnd + head * t, half = width * (1 - t);
+            for (int side = -1; side <= 1; side += 2) {
+                double vx = x + ux * d + px * side * half, vy = y + uy * d + py * side * half;
+                p = putPnc(v, p, vx, vy, height.applyAsDouble(vx, vy) + lift, 0, 0, 1, r, g, b);
+            }
+        }
+        int[] idx = new int[6 * (segments + headSegments)];
+        int q = 0;
+        for (int s = 0; s < segments + 1 + headSegments; s++) {
+            if (s == segments) continue; // no quad between the shaft's end and the head's base
+            int a = 2 * s, c = a + 2;
+            idx[q++] = a;
+            idx[q++] = c;
+            idx[q++] = c + 1;
+            idx[q++] = a;
+            idx[q++] = c + 1;
+            idx[q++] = a + 1;
+        }
+        return new MeshData(MeshData.PNC, v, idx);
+    }
+
     static int putPnc(float[] v, int p, double x, double y, double z, double nx, double ny, double nz,
                       float r, float g, float b) {
         v[p++] = (float) x;

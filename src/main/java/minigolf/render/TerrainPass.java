@@ -10,6 +10,7 @@ public final class TerrainPass implements RenderPass {
     private final ShaderProgram shader = ShaderProgram.load("terrain");
     private TerrainMesh.ColorMode mode;
     private Mesh mesh;
+    private double minHeight, maxHeight;
 
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
         this.course = course;
@@ -24,10 +25,22 @@ public final class TerrainPass implements RenderPass {
     /** Rebuilds the mesh with the other colouring (a few milliseconds for 256x256 quads). */
     public void setColorMode(TerrainMesh.ColorMode newMode) {
         if (newMode == mode && mesh != null) return;
-        Mesh built = new Mesh(TerrainMesh.build(course, terrain, newMode).data());
+        TerrainMesh built = TerrainMesh.build(course, terrain, newMode);
+        Mesh uploaded = new Mesh(built.data());
         if (mesh != null) mesh.close();
-        mesh = built;
+        mesh = uploaded;
+        minHeight = built.minHeight();
+        maxHeight = built.maxHeight();
         mode = newMode;
+    }
+
+    /** The lowest and highest surface heights sampled for the mesh. */
+    public double minHeight() {
+        return minHeight;
+    }
+
+    public double maxHeight() {
+        return maxHeight;
     }
 
     @Override

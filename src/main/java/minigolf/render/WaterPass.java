@@ -71,6 +71,11 @@ public final class WaterPass implements RenderPass {
         return mesh != null;
     }
 
+    /** The water without reflections (the minimap). */
+    void renderSimple(FrameContext frame) {
+        render(frame);
+    }
+
     @Override
     public void render(FrameContext frame) {
         if (mesh == null) return;

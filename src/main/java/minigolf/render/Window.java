@@ -43,6 +43,7 @@ public final class Window implements AutoCloseable {
     private int fbWidth;
     private int fbHeight;
     private boolean closed;
+    private int windowedX = 80, windowedY = 80, windowedW = 1280, windowedH = 800;
 
     public Window(String title, int width, int height, Options options) {
         if (width <= 0 || height <= 0) {
@@ -168,6 +169,42 @@ public final class Window implements AutoCloseable {
 
     public void pollEvents() {
         glfwPollEvents();
+    }
+
+    /** Vsync on or off (the game's frame limiter takes over when it is off or has no effect). */
+    public void setVsync(boolean on) {
+        glfwSwapInterval(on ? 1 : 0);
+    }
+
+    public boolean isFullscreen() {
+        return glfwGetWindowMonitor(handle) != NULL;
+    }
+
+    /** Switches between a window and the primary monitor's full screen (F11), restoring the window's place. */
+    public void toggleFullscreen() {
+        if (isFullscreen()) {
+            glfwSetWindowMonitor(handle, NULL, windowedX, windowedY, windowedW, windowedH, GLFW_DONT_CARE);
+            return;
+        }
+        long monitor = glfwGetPrimaryMonitor();
+        if (monitor == NULL) return;
+        org.lwjgl.glfw.GLFWVidMode mode = glfwGetVideoMode(monitor);
+        if (mode == null) return;
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            IntBuffer x = stack.mallocInt(1), y = stack.mallocInt(1), w = stack.mallocInt(1), h = stack.mallocInt(1);
+            glfwGetWindowPos(handle, x, y);
+            glfwGetWindowSize(handle, w, h);
+            windowedX = x.get(0);
+            windowedY = y.get(0);
+            windowedW = Math.max(320, w.get(0));
+            windowedH = Math.max(200, h.get(0));
+        }
+        glfwSetWindowMonitor(handle, monitor, 0, 0, mode.width(), mode.height(), mode.refreshRate());
+    }
+
+    /** Minimised (iconified): nothing to draw. */
+    public boolean isIconified() {
+        return glfwGetWindowAttrib(handle, GLFW_ICONIFIED) == GLFW_TRUE;
     }
 
     public void setTitle(String title) {

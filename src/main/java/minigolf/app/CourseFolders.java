@@ -1,0 +1,58 @@
+package minigolf.app;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Stream;
+import minigolf.course.CourseException;
+import minigolf.course.CourseLoader;
+import minigolf.game.SettingsStore;
+import minigolf.ui.UiView;
+
+/**
+ * Where courses are found: {@code courses/} in the working directory, {@code courses/} beside the
+ * installed game's {@code lib/} folder, and the player's own in {@code <config>/courses}. Files
+ * that do not load are left out of the list.
+ */
+final class CourseFolders {
+    private CourseFolders() {
+    }
+
+    static List<UiView.CourseEntry> list(SettingsStore store) {
+        Set<Path> shipped = new LinkedHashSet<>();
+        shipped.add(Path.of("courses").toAbsolutePath().normalize());
+        try {
+            Path jar = Path.of(CourseFolders.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            if (jar.getParent() != null && jar.getParent().getParent() != null) {
+                shipped.add(jar.getParent().getParent().resolve("courses").toAbsolutePath().normalize());
+            }
+        } catch (Exception e) {
+            // no code source (unusual class loader): the working directory's courses only
+        }
+        List<UiView.CourseEntry> out = new ArrayList<>();
+        Set<Path> seen = new LinkedHashSet<>();
+        for (Path dir : shipped) add(dir, false, out, seen);
+        add(store.directory().resolve("courses"), true, out, seen);
+        return out;
+    }
+
+    private static void add(Path dir, boolean own, List<UiView.CourseEntry> out, Set<Path> seen) {
+        if (!Files.isDirectory(dir)) return;
+        try (Stream<Path> files = Files.list(dir)) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".json")).sorted().toList()) {
+                try {
+                    String name = CourseLoader.load(f).name();
+                    if (seen.add(f.getFileName())) out.add(new UiView.CourseEntry(name, f, own));
+                } catch (CourseException e) {
+                    // not a loadable course: not offered
+                }
+            }
+        } catch (IOException e) {
+            // an unreadable folder offers nothing
+        }
+    }
+}

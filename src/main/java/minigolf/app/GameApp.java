@@ -1,0 +1,631 @@
+package minigolf.app;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.Stream;
+import minigolf.course.CourseException;
+import minigolf.game.AimModel;
+import minigolf.game.BallReadout;
+import minigolf.game.BotCatalog;
+import minigolf.game.BotTurn;
+import minigolf.game.CourseEdits;
+import minigolf.game.Game;
+import minigolf.game.Player;
+import minigolf.game.PlayerState;
+import minigolf.game.SaveGameException;
+import minigolf.game.SavedGames;
+import minigolf.game.SettingsStore;
+import minigolf.game.ShotPlanner;
+import minigolf.game.ShotRecord;
+import minigolf.game.StrokeAnimator;
+import minigolf.game.UserSettings;
+import minigolf.physics.World;
+import minigolf.render.AimView;
+import minigolf.render.BallView;
+import minigolf.render.OrbitCamera;
+import minigolf.render.Png;
+import minigolf.render.SceneRenderer;
+import minigolf.render.TerrainMesh;
+import minigolf.render.Window;
+import minigolf.ui.ImGuiLayer;
+import minigolf.ui.PlayerColors;
+import minigolf.ui.Screen;
+import minigolf.ui.Screens;
+import minigolf.ui.UiActions;
+import minigolf.ui.UiView;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+
+import static org.lwjgl.glfw.GLFW.*;
+import static org.lwjgl.opengl.GL11.*;
+import static org.lwjgl.system.MemoryUtil.memAlloc;
+import static org.lwjgl.system.MemoryUtil.memFree;
+
+/**
+ * The game: one window, one render loop. Each frame polls input, advances the rolling ball at the
+ * physics step (fixed, decoupled from the frame rate, drawn interpolated), runs bots on worker
+ * threads, draws the course, the minimap and the ImGui screens. Everything GL happens on the
+ * thread that calls {@link #run()}.
+ */
+public final class GameApp implements UiActions, UiView {
+    /** How the game is started (the command line and tests fill it). */
+    public record Options(Path coursePath, Path screenshot, int frames, List<Player> startPlayers,
+                          List<double[]> scriptedShots, double timeScale, SettingsStore store, boolean visible,
+                          boolean exitWhenOver) {
+        public static Options interactive(Path coursePath) {
+            return new Options(coursePath, null, 0, null, List.of(), 1, SettingsStore.forUser(), true, false);
+        }
+    }
+
+    private static final double AIM_PICK_PIXELS = 48;
+
+    private final Options options;
+    private final SettingsStore store;
+    private UserSettings settings;
+    private World world;
+    private Path coursePath;
+    private Game game;
+    private StrokeAnimator animator;
+    private BotTurn botTurn;
+    private String message;
+    private double messageUntil;
+    private final Deque<double[]> script;
+    private final Screens screens = new Screens(this);
+    private final Thumbnails thumbnails = new Thumbnails();
+    private List<CourseEntry> courses;
+
+    private Window window;
+    private SceneRenderer renderer;
+    private OrbitCamera camera;
+    private ImGuiLayer imgui;
+    private boolean rebuildScene;
+
+    // Mouse.
+    private boolean rotating, panning, aiming;
+    private double lastX, lastY;
+    private double[] aimVelocity;
+    private final Vector3f followTarget = new Vector3f();
+
+    public GameApp(World world, Options options) {
+        this.options = options;
+        this.store = options.store();
+        String[] problem = new String[1];
+        this.settings = store.loadOrDefaults(problem);
+        if (problem[0] != null) say("settings ignored: " + problem[0]);
+        this.world = world;
+        this.coursePath = options.coursePath();
+        this.script = new ArrayDeque<>(options.scriptedShots());
+    }
+
+    /** Runs until the window closes or the requested frames are done; returns the game at the end (or null). */
+    public Game run() {
+        Window.Options wo = options.visible() ? Window.Options.visibleDefaults()
+                : new Window.Options(true, false, 0, true, 3, 3);
+        try (Window w = new Window("Minigolf", 1280, 720, wo)) {
+            window = w;
+            window.setVsync(settings.vsync() && options.frames() <= 0);
+            installInput();
+            float scale = Math.max(1f, window.framebufferHeight() / 900f);
+            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale)) {
+                imgui = ui;
+                buildScene();
+                try {
+                    if (options.startPlayers() != null) startGame(options.startPlayers());
+                    loop();
+                } finally {
+                    if (botTurn != null) botTurn.cancel();
+                    thumbnails.close();
+                    if (renderer != null) renderer.close();
+                }
+            }
+        }
+        return game;
+    }
+
+    private void loop() {
+        double last = glfwGetTime(), start = last;
+        int frame = 0, overFrames = 0;
+        while (!window.shouldClose()) {
+            double now = glfwGetTime(), elapsed = Math.min(0.25, now - last);
+            last = now;
+            window.pollEvents();
+            update(elapsed, now);
+            int fw = window.framebufferWidth(), fh = window.framebufferHeight();
+            if (fw <= 0 || fh <= 0 || window.isIconified()) {
+                sleep(50); // minimised: keep the game going, draw nothing
+                continue;
+            }
+            if (rebuildScene) buildScene();
+            drawFrame(fw, fh, (float) (now - start));
+            frame++;
+            overFrames = screens.screen() == Screen.SCORECARD ? overFrames + 1 : 0;
+            // ImGui sizes a new window in its first frames: stop once the scorecard has been drawn.
+            boolean over = options.exitWhenOver() && overFrames >= 3;
+            if ((options.frames() > 0 && frame >= options.frames()) || over) {
+                if (options.screenshot() != null) saveScreenshot(options.screenshot(), fw, fh);
+                window.swapBuffers();
+                break;
+            }
+            window.swapBuffers();
+            limitFrameRate(now);
+        }
+    }
+
+    private void limitFrameRate(double frameStart) {
+        if (options.frames() > 0 || (settings.vsync() && options.visible()) || settings.frameLimit() <= 0) return;
+        double wait = frameStart + 1.0 / settings.frameLimit() - glfwGetTime();
+        if (wait > 0.001) sleep((long) (wait * 1000));
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    // ---- Game logic per frame ---------------------------------------------------------------
+
+    private void update(double elapsed, double now) {
+        if (message != null && now > messageUntil) message = null;
+        Screen screen = screens.screen();
+        boolean running = screen == Screen.PLAYING || screen == Screen.TEST_BOT;
+        if (game == null || !running) return;
+        if (animator != null) {
+            animator.advance(elapsed, options.timeScale());
+            if (animator.isFinished()) {
+                ShotRecord r = game.completeShot();
+                animator = null;
+                Player p = game.players().get(r.player());
+                say(p.name() + ": " + describe(r));
+                if (game.isOver()) {
+                    screens.show(Screen.SCORECARD);
+                    return;
+                }
+            }
+        }
+        if (game.isShotInFlight() || game.isOver()) return;
+        int seat = game.currentPlayer();
+        Player p = game.players().get(seat);
+        if (p.isBot()) {
+            if (botTurn == null) {
+                ShotPlanner planner = BotCatalog.planner(p.bot());
+                if (planner == null) {
+                    say("no bot named " + p.bot() + "; " + p.name() + " cannot play");
+                    return;
+                }
+                PlayerState s = game.player(seat);
+                botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
+                        31L * game.history().size() + seat);
+            } else if (botTurn.isDone()) {
+                BotTurn done = botTurn;
+                botTurn = null;
+                if (done.shot() != null) {
+                    hit(done.shot()[0], done.shot()[1]);
+                } else {
+                    say(p.name() + ": " + done.failure());
+                    if ("cancelled".equals(done.failure())) toMainMenu();
+                }
+            }
+        } else if (!script.isEmpty()) {
+            double[] v = script.poll();
+            hit(v[0], v[1]);
+        }
+    }
+
+    private static String describe(ShotRecord r) {
+        return switch (r.outcome()) {
+            case HOLED -> "in the hole!";
+            case STOPPED -> String.format(Locale.ROOT, "stopped at (%.2f, %.2f)", r.endX(), r.endY());
+            case WATER -> "in the water: one penalty stroke, back to where the stroke began";
+            case OUT -> "out of bounds: one penalty stroke, back to where the stroke began";
+            case TIMEOUT -> "still rolling after the time limit; it stays where it is";
+        };
+    }
+
+    private void say(String text) {
+        message = text;
+        messageUntil = (window != null ? glfwGetTime() : 0) + 5;
+    }
+
+    // ---- Drawing ------------------------------------------------------------------------------
+
+    private void buildScene() {
+        rebuildScene = false;
+        if (renderer != null) renderer.close();
+        renderer = null;
+        renderer = new SceneRenderer(world.course(), world.terrain(),
+                settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN);
+        int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
+        camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
+        followTarget.set(camera.target());
+        window.setTitle("Minigolf - " + world.course().name());
+    }
+
+    private void drawFrame(int fw, int fh, float time) {
+        renderer.setBalls(ballViews());
+        renderer.setAim(aimView());
+        followBall();
+        renderer.render(camera, fw, fh, time);
+        int mini = Math.min(fw, fh) / 4;
+        renderer.renderMinimap(fw - mini - 12, 12, mini, fw, fh);
+        if (screens.screen() == Screen.COURSES) thumbnails.renderNext(courses(), 200, 120);
+        glViewport(0, 0, fw, fh);
+        imgui.newFrame();
+        screens.remember(this);
+        screens.draw(this);
+        imgui.render();
+    }
+
+    private List<BallView> ballViews() {
+        List<BallView> views = new ArrayList<>();
+        if (game == null) {
+            double x = world.course().start().x(), y = world.course().start().y();
+            views.add(BallView.white(x, y, world.terrain().height(x, y)));
+            return views;
+        }
+        int rolling = game.isShotInFlight() ? game.currentPlayer() : -1;
+        for (int i = 0; i < game.players().size(); i++) {
+            PlayerState s = game.player(i);
+            if (s.status() == minigolf.game.PlayerStatus.HOLED && i != rolling) continue;
+            double x = i == rolling && animator != null ? animator.x() : s.x();
+            double y = i == rolling && animator != null ? animator.y() : s.y();
+            float[] c = PlayerColors.of(i);
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, world.terrain().height(x, y)), c[0], c[1], c[2]));
+        }
+        return views;
+    }
+
+    private AimView aimView() {
+        if (!aiming || aimVelocity == null || game == null || game.currentPlayer() < 0) return null;
+        double speed = Math.hypot(aimVelocity[0], aimVelocity[1]);
+        if (speed < 1e-6) return null;
+        PlayerState s = game.player(game.currentPlayer());
+        return new AimView((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y()),
+                (float) aimVelocity[0], (float) aimVelocity[1], (float) (speed / world.physics().maxSpeed()));
+    }
+
+    /** The camera glides after the ball in play: the rolling one, else the next player's. */
+    private void followBall() {
+        if (game == null || rotating || panning) return;
+        int seat = game.currentPlayer();
+        if (seat < 0) return;
+        double x = animator != null ? animator.x() : game.player(seat).x();
+        double y = animator != null ? animator.y() : game.player(seat).y();
+        followTarget.set((float) x, (float) y, (float) world.terrain().height(x, y));
+        Vector3f t = camera.target();
+        t.lerp(followTarget, 0.12f);
+        camera.setTarget(t);
+    }
+
+    private void saveScreenshot(Path png, int w, int h) {
+        ByteBuffer pixels = memAlloc(w * h * 4);
+        try {
+            glReadBuffer(GL_BACK);
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+            Png.writeBottomUp(png, w, h, pixels);
+        } finally {
+            memFree(pixels);
+        }
+    }
+
+    // ---- Input --------------------------------------------------------------------------------
+
+    /** Installed before ImGui, whose GLFW backend chains to these callbacks. */
+    private void installInput() {
+        long h = window.handle();
+        glfwSetKeyCallback(h, (win, key, scancode, action, mods) -> {
+            if (action != GLFW_PRESS || (imgui != null && imgui.wantsKeyboard())) return;
+            switch (key) {
+                case GLFW_KEY_ESCAPE -> escape();
+                case GLFW_KEY_F11 -> window.toggleFullscreen();
+                case GLFW_KEY_R -> camera.reset();
+                case GLFW_KEY_H -> renderer.terrainPass().setColorMode(renderer.terrainPass().colorMode().next());
+                case GLFW_KEY_SPACE -> {
+                    if (animator != null) { // skip the animation: the same stroke, run to its end
+                        animator.advance(1e9, 1);
+                        while (!animator.isFinished()) animator.advance(1e9, 1);
+                    }
+                }
+                default -> {
+                }
+            }
+        });
+        glfwSetMouseButtonCallback(h, (win, button, action, mods) -> {
+            boolean down = action == GLFW_PRESS;
+            double[] x = new double[1], y = new double[1];
+            glfwGetCursorPos(win, x, y);
+            if (down && imgui != null && imgui.wantsMouse()) return;
+            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+                if (down && canAim() && nearBall(x[0], y[0])) {
+                    aiming = true;
+                    aimVelocity = null;
+                } else if (!down && aiming) {
+                    aiming = false;
+                    double[] v = aimVelocity;
+                    aimVelocity = null;
+                    if (v != null && Math.hypot(v[0], v[1]) > 0.02) hit(v[0], v[1]);
+                } else {
+                    rotating = down;
+                }
+            }
+            if (button == GLFW_MOUSE_BUTTON_RIGHT) {
+                if (down && aiming) {
+                    aiming = false; // right click cancels the aim
+                    aimVelocity = null;
+                } else {
+                    panning = down;
+                }
+            }
+            lastX = x[0];
+            lastY = y[0];
+        });
+        glfwSetCursorPosCallback(h, (win, x, y) -> {
+            float dx = (float) (x - lastX), dy = (float) (y - lastY);
+            lastX = x;
+            lastY = y;
+            if (aiming) {
+                aimVelocity = aimFromCursor(x, y);
+            } else if (rotating) {
+                float k = (float) (0.006 * settings.mouseSpeed());
+                camera.rotate(-dx * k, dy * k);
+            } else if (panning) {
+                int[] ww = new int[1], wh = new int[1];
+                glfwGetWindowSize(win, ww, wh);
+                camera.pan(dx, dy, Math.max(1, wh[0]));
+            }
+        });
+        glfwSetScrollCallback(h, (win, xoff, yoff) -> {
+            if (imgui == null || !imgui.wantsMouse()) camera.zoom((float) yoff);
+        });
+    }
+
+    private void escape() {
+        switch (screens.screen()) {
+            case PLAYING -> screens.show(Screen.PAUSED);
+            case PAUSED -> screens.show(Screen.PLAYING);
+            case TEST_BOT -> toMainMenu();
+            case COURSES, NEW_GAME, SETTINGS, SCORECARD -> screens.show(game != null && !game.isOver()
+                    && screens.screen() == Screen.SETTINGS ? Screen.PAUSED : Screen.MAIN_MENU);
+            case MAIN_MENU -> {
+            }
+        }
+    }
+
+    private boolean canAim() {
+        return screens.screen() == Screen.PLAYING && game != null && !game.isShotInFlight() && !game.isOver()
+                && !game.players().get(game.currentPlayer()).isBot();
+    }
+
+    /** Cursor (window coordinates) to framebuffer pixels. */
+    private double[] toFramebuffer(double x, double y) {
+        int[] ww = new int[1], wh = new int[1];
+        glfwGetWindowSize(window.handle(), ww, wh);
+        double sx = (double) window.framebufferWidth() / Math.max(1, ww[0]);
+        double sy = (double) window.framebufferHeight() / Math.max(1, wh[0]);
+        return new double[]{x * sx, y * sy};
+    }
+
+    private boolean nearBall(double x, double y) {
+        PlayerState s = game.player(game.currentPlayer());
+        int fw = window.framebufferWidth(), fh = window.framebufferHeight();
+        float[] p = camera.project(new Vector3f((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y())), fw, fh);
+        double[] c = toFramebuffer(x, y);
+        return p != null && Math.hypot(p[0] - c[0], p[1] - c[1]) <= AIM_PICK_PIXELS * Math.max(1, fh / 900.0);
+    }
+
+    /** Where the cursor ray meets the horizontal plane through the ball, turned into a shot. */
+    private double[] aimFromCursor(double x, double y) {
+        PlayerState s = game.player(game.currentPlayer());
+        double z = world.terrain().height(s.x(), s.y());
+        int fw = window.framebufferWidth(), fh = window.framebufferHeight();
+        double[] c = toFramebuffer(x, y);
+        float nx = (float) (2 * c[0] / fw - 1), ny = (float) (1 - 2 * c[1] / fh);
+        Matrix4f inv = camera.viewProjection((float) fw / fh, new Matrix4f()).invert();
+        Vector4f near = new Vector4f(nx, ny, -1, 1).mul(inv), far = new Vector4f(nx, ny, 1, 1).mul(inv);
+        near.div(near.w);
+        far.div(far.w);
+        double dz = far.z - near.z;
+        if (Math.abs(dz) < 1e-9) return aimVelocity;
+        double t = (z - near.z) / dz;
+        if (t < 0) return aimVelocity;
+        double px = near.x + t * (far.x - near.x), py = near.y + t * (far.y - near.y);
+        return AimModel.velocityForPull(s.x(), s.y(), px, py, world.physics().maxSpeed(), AimModel.DEFAULT_FULL_PULL);
+    }
+
+    // ---- UiActions ----------------------------------------------------------------------------
+
+    @Override
+    public void startGame(List<Player> players) {
+        cancelBot();
+        animator = null;
+        game = new Game(world, settings.simulation(), players, settings.strokeLimit());
+        camera.reset();
+        screens.show(Screen.PLAYING);
+        say(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
+    }
+
+    @Override
+    public void hit(double vx, double vy) {
+        if (game == null || game.isShotInFlight() || game.isOver()) return;
+        String problem = AimModel.checkTyped(vx, vy, world.physics().maxSpeed());
+        if (problem != null) {
+            say(problem);
+            return;
+        }
+        animator = new StrokeAnimator(game.startShot(vx, vy), game.settings().dt());
+    }
+
+    @Override
+    public void selectCourse(Path file) {
+        try {
+            world = World.load(file);
+            coursePath = file;
+            game = null;
+            animator = null;
+            rebuildScene = true;
+            screens.show(Screen.MAIN_MENU);
+            say("course: " + world.course().name());
+        } catch (CourseException e) {
+            say(e.getMessage());
+        }
+    }
+
+    @Override
+    public void testBot(String bot) {
+        startGame(List.of(Player.bot(bot, bot)));
+        screens.show(Screen.TEST_BOT);
+        say("watching " + bot + " play; ESC stops");
+    }
+
+    @Override
+    public void cancelBot() {
+        if (botTurn != null) botTurn.cancel();
+    }
+
+    @Override
+    public void saveGame() {
+        if (game == null) return;
+        try {
+            Files.createDirectories(store.savesDirectory());
+            Path file = store.savesDirectory().resolve("game-"
+                    + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".json");
+            SavedGames.save(game, file);
+            say("saved to " + file);
+        } catch (IOException | SaveGameException e) {
+            say("not saved: " + e.getMessage());
+        }
+    }
+
+    @Override
+    public void loadGame(Path file) {
+        try {
+            SavedGames.Loaded loaded = SavedGames.load(file);
+            cancelBot();
+            botTurn = null;
+            world = loaded.world();
+            buildScene();
+            game = loaded.resume();
+            animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
+            screens.show(game.isOver() ? Screen.SCORECARD : Screen.PLAYING);
+            say("loaded " + file.getFileName());
+        } catch (SaveGameException e) {
+            say(e.getMessage());
+        }
+    }
+
+    @Override
+    public void applySettings(UserSettings newSettings, CourseEdits edits) {
+        try {
+            World edited = edits.applyTo(world);
+            if (!edited.course().equals(world.course())) {
+                world = edited;
+                rebuildScene = true;
+            }
+        } catch (CourseException e) {
+            throw new IllegalArgumentException(e.detail(), e);
+        }
+        settings = newSettings;
+        window.setVsync(settings.vsync() && options.frames() <= 0);
+        try {
+            store.save(settings);
+        } catch (SaveGameException e) {
+            say("settings not saved: " + e.getMessage());
+        }
+    }
+
+    @Override
+    public void toMainMenu() {
+        cancelBot();
+        botTurn = null;
+        animator = null;
+        game = null;
+        screens.show(Screen.MAIN_MENU);
+    }
+
+    @Override
+    public void quit() {
+        window.requestClose();
+    }
+
+    // ---- UiView -------------------------------------------------------------------------------
+
+    @Override
+    public World world() {
+        return world;
+    }
+
+    @Override
+    public Game game() {
+        return game;
+    }
+
+    /** Exposed for tests: the screen shown now. */
+    public Screen screen() {
+        return screens.screen();
+    }
+
+    @Override
+    public BallReadout readout() {
+        if (game == null || game.currentPlayer() < 0) return null;
+        if (animator != null) {
+            return BallReadout.of(world, animator.x(), animator.y(), animator.vx(), animator.vy(), animator.ax(), animator.ay());
+        }
+        PlayerState s = game.player(game.currentPlayer());
+        return BallReadout.of(world, s.x(), s.y(), 0, 0, 0, 0);
+    }
+
+    @Override
+    public BotTurn botTurn() {
+        return botTurn;
+    }
+
+    @Override
+    public UserSettings settings() {
+        return settings;
+    }
+
+    @Override
+    public List<CourseEntry> courses() {
+        if (courses == null) courses = CourseFolders.list(store);
+        return courses;
+    }
+
+    @Override
+    public List<Path> savedGames() {
+        Path dir = store.savesDirectory();
+        if (!Files.isDirectory(dir)) return List.of();
+        try (Stream<Path> files = Files.list(dir)) {
+            return files.filter(p -> p.toString().endsWith(".json")).sorted().toList();
+        } catch (IOException e) {
+            return List.of();
+        }
+    }
+
+    @Override
+    public String message() {
+        return message;
+    }
+
+    @Override
+    public double aimSpeed() {
+        return aiming && aimVelocity != null ? Math.hypot(aimVelocity[0], aimVelocity[1]) : -1;
+    }
+
+    @Override
+    public int thumbnail(CourseEntry course) {
+        return thumbnails.texture(course.file());
+    }
+}

@@ -1,0 +1,81 @@
+package minigolf.app;
+
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import minigolf.course.CourseException;
+import minigolf.physics.World;
+import minigolf.render.Framebuffer;
+import minigolf.render.OrbitCamera;
+import minigolf.render.SceneRenderer;
+import minigolf.render.TerrainMesh;
+import minigolf.ui.UiView;
+
+import static org.lwjgl.opengl.GL11.*;
+import static org.lwjgl.opengl.GL12.GL_CLAMP_TO_EDGE;
+import static org.lwjgl.system.MemoryUtil.memAlloc;
+import static org.lwjgl.system.MemoryUtil.memFree;
+
+/**
+ * Course previews for the course list, rendered off-screen with the game's own renderer into a
+ * framebuffer and copied into textures ImGui can draw. One per frame, so the menu stays responsive.
+ * A course that fails to load gets no texture (id -1 is remembered so it is not retried).
+ */
+final class Thumbnails implements AutoCloseable {
+    private final Map<Path, Integer> textures = new HashMap<>();
+
+    int texture(Path course) {
+        Integer t = textures.get(course);
+        return t == null || t < 0 ? 0 : t;
+    }
+
+    /** Renders the first course without a preview; leaves the default framebuffer bound. */
+    void renderNext(List<UiView.CourseEntry> courses, int width, int height) {
+        for (UiView.CourseEntry c : courses) {
+            if (textures.containsKey(c.file())) continue;
+            textures.put(c.file(), render(c.file(), width, height));
+            return;
+        }
+    }
+
+    private static int render(Path file, int width, int height) {
+        World world;
+        try {
+            world = World.load(file);
+        } catch (CourseException e) {
+            return -1;
+        }
+        ByteBuffer pixels = memAlloc(width * height * 4);
+        try (SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN);
+             Framebuffer target = new Framebuffer(width, height, 0)) {
+            OrbitCamera cam = OrbitCamera.behindBall(world.course(), world.terrain(), (float) width / height);
+            target.bind();
+            renderer.render(cam, width, height, 0f);
+            target.resolve();
+            target.readPixels(pixels);
+            int tex = glGenTextures();
+            glBindTexture(GL_TEXTURE_2D, tex);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+            glBindTexture(GL_TEXTURE_2D, 0);
+            return tex;
+        } catch (RuntimeException e) {
+            return -1;
+        } finally {
+            memFree(pixels);
+            org.lwjgl.opengl.GL30.glBindFramebuffer(org.lwjgl.opengl.GL30.GL_FRAMEBUFFER, 0);
+        }
+    }
+
+    @Override
+    public void close() {
+        for (int t : textures.values()) if (t > 0) glDeleteTextures(t);
+        textures.clear();
+    }
+}

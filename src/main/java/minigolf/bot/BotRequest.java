@@ -1,0 +1,26 @@
+package minigolf.bot;
+
+import minigolf.physics.World;
+
+/**
+ * What a bot is given to choose one shot.
+ *
+ * <p>What a bot may know: the whole course (terrain, friction, hole, bounds and, once the engine
+ * has them, obstacles) through {@code simulator.world()}, and the ball's position. It learns
+ * nothing else and may simulate only through {@code simulator}.
+ *
+ * @param simulator    the counting simulator for this game (its budget spans all strokes)
+ * @param ballX        where the ball lies
+ * @param ballY        where the ball lies
+ * @param strokesTaken strokes already played on this hole (penalties included)
+ * @param seed         the seed for this stroke: same request, same shot
+ */
+public record BotRequest(CountingSimulator simulator, double ballX, double ballY, int strokesTaken, long seed) {
+    public World world() {
+        return simulator.world();
+    }
+
+    public CancellationToken token() {
+        return simulator.token();
+    }
+}

@@ -1,0 +1,186 @@
+package minigolf.bot;
+
+import minigolf.physics.Outcome;
+import minigolf.physics.ShotResult;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.Simulator;
+import minigolf.physics.TrajectoryListener;
+import minigolf.physics.World;
+
+/**
+ * The one door through which bots simulate shots, so "simulations" means the same for every bot.
+ * Every call counts (probes, particles, look-ahead alike), checks the cancellation token and
+ * enforces the budget. It also remembers the best shot seen from the current ball position, which
+ * is what a bot returns when its budget runs out.
+ *
+ * <p>Not thread-safe: one bot run, one thread (the token may be cancelled from any thread).
+ */
+public final class CountingSimulator {
+    /** Progress is reported every this many simulations. */
+    public static final int PROGRESS_INTERVAL = 32;
+
+    /** Scores a shot for {@link #bestShot()}: lower is better. */
+    @FunctionalInterface
+    public interface ShotScore {
+        double score(ShotResult result);
+    }
+
+    /** Shared by a simulator and its {@link #variant variants}: one budget, one count. */
+    private static final class Account {
+        final long budget;
+        final CancellationToken token;
+        final BotProgress progress;
+        long used;
+        String phase = "start";
+        double fromX = Double.NaN, fromY = Double.NaN;
+        ShotScore score;
+        Shot best;
+        ShotResult bestResult;
+        double bestScore = Double.POSITIVE_INFINITY;
+
+        Account(long budget, CancellationToken token, BotProgress progress) {
+            this.budget = budget;
+            this.token = token;
+            this.progress = progress;
+        }
+    }
+
+    private final World world;
+    private final Simulator simulator;
+    private final Account account;
+    /** Variants simulate another world (e.g. a probe); their shots are not candidates for bestShot. */
+    private final boolean primary;
+
+    /**
+     * @param budget the most simulations allowed in total ({@code Long.MAX_VALUE}: unlimited)
+     */
+    public CountingSimulator(World world, SimulationSettings settings, long budget, CancellationToken token,
+                             BotProgress progress) {
+        this(world, new Simulator(world, settings), new Account(budget, token, progress), true);
+        if (budget < 0) throw new IllegalArgumentException("budget must be >= 0, got " + budget);
+    }
+
+    /** Unlimited, never cancelled, default settings: for tests and tools. */
+    public CountingSimulator(World world) {
+        this(world, SimulationSettings.DEFAULT, Long.MAX_VALUE, CancellationToken.none(), BotProgress.NONE);
+    }
+
+    private CountingSimulator(World world, Simulator simulator, Account account, boolean primary) {
+        this.world = world;
+        this.simulator = simulator;
+        this.account = account;
+        this.primary = primary;
+    }
+
+    /**
+     * A simulator of another world (the same course with, say, a different hole rule) that shares
+     * this one's count, budget and token.
+     */
+    public CountingSimulator variant(World other) {
+        return new CountingSimulator(other, new Simulator(other, simulator.settings()), account, false);
+    }
+
+    public World world() {
+        return world;
+    }
+
+    public SimulationSettings settings() {
+        return simulator.settings();
+    }
+
+    public double maxSpeed() {
+        return world.physics().maxSpeed();
+    }
+
+    /** Simulations used so far. */
+    public long count() {
+        return account.used;
+    }
+
+    public long budget() {
+        return account.budget;
+    }
+
+    public long remaining() {
+        return account.budget - account.used;
+    }
+
+    public CancellationToken token() {
+        return account.token;
+    }
+
+    /** Throws if cancelled; for bots' own long loops. */
+    public void checkCancelled() {
+        account.token.throwIfCancelled();
+    }
+
+    /** Names the bot's current phase for the progress indicator and reports progress. */
+    public void phase(String phase) {
+        account.phase = phase;
+        account.progress.update(account.used, account.budget, phase);
+    }
+
+    /**
+     * Starts looking for a shot from (x, y): the best-shot memory is cleared and shots from there
+     * are scored with {@code score}.
+     */
+    public void beginShot(double x, double y, ShotScore score) {
+        account.fromX = x;
+        account.fromY = y;
+        account.score = score;
+        account.best = null;
+        account.bestResult = null;
+        account.bestScore = Double.POSITIVE_INFINITY;
+    }
+
+    /** The best-scored shot simulated from the position given to {@link #beginShot}, or null. */
+    public Shot bestShot() {
+        return account.best;
+    }
+
+    public ShotResult bestResult() {
+        return account.bestResult;
+    }
+
+    public ShotResult simulate(double x, double y, Shot shot) {
+        return simulate(x, y, shot, null);
+    }
+
+    /**
+     * Simulates {@code shot} (scaled down to the course's maxSpeed if faster) from (x, y).
+     *
+     * @throws BotCancelledException    if the token was cancelled
+     * @throws BudgetExhaustedException if the budget is spent
+     */
+    public ShotResult simulate(double x, double y, Shot shot, TrajectoryListener listener) {
+        account.token.throwIfCancelled();
+        if (account.used >= account.budget) throw new BudgetExhaustedException(account.budget);
+        if (!shot.isPutt()) {
+            throw new IllegalArgumentException("shots with a vertical component need the flight physics");
+        }
+        Shot limited = limit(shot);
+        account.used++;
+        if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
+        ShotResult result = simulator.simulate(x, y, limited.vx(), limited.vy(), listener);
+        if (primary && account.score != null && x == account.fromX && y == account.fromY) {
+            double s = account.score.score(result);
+            if (s < account.bestScore) {
+                account.bestScore = s;
+                account.best = limited;
+                account.bestResult = result;
+            }
+        }
+        return result;
+    }
+
+    /** The shot as it is played: never faster than the course allows. */
+    public Shot limit(Shot shot) {
+        // A hair below maxSpeed so rounding never trips the engine's own check.
+        return shot.limitedTo(maxSpeed() * (1 - 1e-12));
+    }
+
+    /** Whether an outcome ends the search for this shot: the ball is in. */
+    public static boolean holed(ShotResult result) {
+        return result.outcome() == Outcome.HOLED;
+    }
+}

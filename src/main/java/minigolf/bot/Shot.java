@@ -1,0 +1,39 @@
+package minigolf.bot;
+
+/**
+ * A shot: the ball's initial velocity in m/s. {@code vz} is 0 for a putt along the ground; a
+ * positive {@code vz} (a chip) needs the flight physics and is rejected until the engine has it.
+ */
+public record Shot(double vx, double vy, double vz) {
+    public Shot {
+        if (!Double.isFinite(vx) || !Double.isFinite(vy) || !Double.isFinite(vz)) {
+            throw new IllegalArgumentException("shot velocity must be finite, got " + vx + ", " + vy + ", " + vz);
+        }
+    }
+
+    /** A putt along the ground. */
+    public static Shot of(double vx, double vy) {
+        return new Shot(vx, vy, 0);
+    }
+
+    /** A putt in direction {@code angle} (radians, from +x towards +y) at {@code speed}. */
+    public static Shot polar(double angle, double speed) {
+        return of(speed * Math.cos(angle), speed * Math.sin(angle));
+    }
+
+    public double speed() {
+        return Math.sqrt(vx * vx + vy * vy + vz * vz);
+    }
+
+    public boolean isPutt() {
+        return vz == 0;
+    }
+
+    /** This shot scaled down (same direction) so that its speed is at most {@code maxSpeed}. */
+    public Shot limitedTo(double maxSpeed) {
+        double s = speed();
+        if (s <= maxSpeed) return this;
+        double k = maxSpeed / s;
+        return new Shot(vx * k, vy * k, vz * k);
+    }
+}

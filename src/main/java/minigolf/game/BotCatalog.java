@@ -1,0 +1,83 @@
+package minigolf.game;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
+import minigolf.bot.Bot;
+import minigolf.bot.BotRequest;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.SearchBot;
+import minigolf.bot.Shot;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+
+/**
+ * The bots the game can seat and watch ("Test bot"), by name. Bots of minigolf.bot are adapted to
+ * {@link ShotPlanner} by {@link #fromBot}; each request gets a fresh planner (planners need not be
+ * thread-safe). Until the bots issue registers its searching bots here, the catalogue holds the
+ * "straight" putter: the physics guess straight at the hole, with no search.
+ */
+public final class BotCatalog {
+    /** Simulations a bot may spend on one stroke in the game. */
+    public static final long BUDGET_PER_STROKE = 20_000;
+    private static final Map<String, Supplier<ShotPlanner>> PLANNERS = new LinkedHashMap<>();
+
+    static {
+        register("straight", () -> new ShotPlanner() {
+            public String name() {
+                return "straight";
+            }
+
+            public double[] plan(World w, SimulationSettings s, double x, double y, int strokes, long seed, Control c) {
+                Shot shot = SearchBot.directGuess(w, x, y).limitedTo(w.physics().maxSpeed());
+                return new double[]{shot.vx(), shot.vy()};
+            }
+        });
+    }
+
+    private BotCatalog() {
+    }
+
+    /** Adds a bot under its name (replacing one of the same name). */
+    public static synchronized void register(String name, Supplier<ShotPlanner> factory) {
+        PLANNERS.put(name, factory);
+    }
+
+    /** Adds a minigolf.bot bot: {@code factory} makes a fresh bot per stroke. */
+    public static void registerBot(String name, Supplier<Bot> factory) {
+        register(name, () -> fromBot(factory.get()));
+    }
+
+    public static synchronized List<String> names() {
+        return new ArrayList<>(PLANNERS.keySet());
+    }
+
+    /** A new planner for the bot with this name, or null if there is none. */
+    public static synchronized ShotPlanner planner(String name) {
+        Supplier<ShotPlanner> f = PLANNERS.get(name);
+        return f == null ? null : f.get();
+    }
+
+    /** Adapts a bot: its simulations are counted against {@link #BUDGET_PER_STROKE} and reported as progress. */
+    public static ShotPlanner fromBot(Bot bot) {
+        return new ShotPlanner() {
+            public String name() {
+                return bot.name();
+            }
+
+            public double[] plan(World world, SimulationSettings settings, double x, double y, int strokes, long seed,
+                                 Control control) {
+                CancellationToken token = new CancellationToken();
+                control.whenCancelled(token::cancel);
+                CountingSimulator sim = new CountingSimulator(world, settings, BUDGET_PER_STROKE, token,
+                        (used, budget, phase) -> control.progress((double) used / budget,
+                                phase + ": " + used + " simulations"));
+                Shot shot = sim.limit(bot.nextShot(new BotRequest(sim, x, y, strokes, seed)));
+                return new double[]{shot.vx(), shot.vy()};
+            }
+        };
+    }
+}

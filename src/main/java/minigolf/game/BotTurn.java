@@ -1,0 +1,97 @@
+package minigolf.game;
+
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicBoolean;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+
+/**
+ * One bot decision running on its own daemon thread, so the render loop never waits for it. The
+ * render thread polls {@link #isDone()}, shows {@link #progress()} and may {@link #cancel()}.
+ */
+public final class BotTurn {
+    private final AtomicBoolean cancelled = new AtomicBoolean();
+    private final Thread thread;
+    private volatile double progress;
+    private volatile String message = "thinking";
+    private volatile double[] shot;
+    private volatile String failure;
+    private volatile boolean done;
+    private final java.util.List<Runnable> cancelActions = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
+                   long seed) {
+        ShotPlanner.Control control = new ShotPlanner.Control() {
+            @Override
+            public void progress(double fraction, String text) {
+                progress = Math.max(0, Math.min(1, fraction));
+                if (text != null) message = text;
+            }
+
+            @Override
+            public boolean isCancelled() {
+                return cancelled.get();
+            }
+
+            @Override
+            public void whenCancelled(Runnable action) {
+                cancelActions.add(action);
+                if (cancelled.get()) action.run();
+            }
+        };
+        thread = new Thread(() -> {
+            try {
+                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, control);
+                if (cancelled.get()) {
+                    failure = "cancelled";
+                } else if (v == null || v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
+                    failure = planner.name() + " gave no shot";
+                } else {
+                    double speed = Math.hypot(v[0], v[1]), max = world.physics().maxSpeed();
+                    // A bot may round just past the limit; the game never hits harder than maxSpeed.
+                    shot = speed > max ? new double[]{v[0] * max / speed, v[1] * max / speed} : v.clone();
+                }
+            } catch (CancellationException | minigolf.bot.BotCancelledException e) {
+                failure = "cancelled";
+            } catch (RuntimeException | StackOverflowError e) {
+                failure = planner.name() + " failed: " + e.getMessage();
+            } finally {
+                progress = 1;
+                done = true;
+            }
+        }, "bot-" + planner.name());
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    public boolean isDone() {
+        return done;
+    }
+
+    public double progress() {
+        return progress;
+    }
+
+    public String message() {
+        return message;
+    }
+
+    /** The shot once done and successful, else null. */
+    public double[] shot() {
+        return shot;
+    }
+
+    /** Why there is no shot ("cancelled", an error line), or null. */
+    public String failure() {
+        return failure;
+    }
+
+    public void cancel() {
+        if (!cancelled.getAndSet(true)) cancelActions.forEach(Runnable::run);
+    }
+
+    /** Waits for the worker (tests, shutdown). */
+    public void join(long millis) throws InterruptedException {
+        thread.join(millis);
+    }
+}

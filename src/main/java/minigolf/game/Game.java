@@ -1,0 +1,203 @@
+package minigolf.game;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import minigolf.physics.Outcome;
+import minigolf.physics.ShotResult;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.Stroke;
+import minigolf.physics.World;
+
+/**
+ * A hot-seat game of 1 to 4 players on one hole (one course). Plain Java: the window animates the
+ * {@link Stroke} that {@link #startShot} hands out, the tests and bots run it to its end; both use
+ * the same engine and the same rules.
+ *
+ * <p>Rules: every hit is a stroke. Water or out of bounds adds one penalty stroke and the ball
+ * goes back to where the stroke began. Turn order is golf's: the player farthest from the hole
+ * plays next; at equal distance (within a millimetre) the one with fewer strokes, then the lower
+ * seat, so at the start the players go in seat order. Holed
+ * players are skipped. A player whose hits plus penalties reach the stroke limit without holing
+ * picks up and scores the limit plus one. The game is over when nobody is still playing. Balls
+ * do not collide with each other.
+ */
+public final class Game {
+    public static final int MAX_PLAYERS = 4;
+    public static final int DEFAULT_STROKE_LIMIT = 10;
+    public static final int MAX_STROKE_LIMIT = 99;
+    /** Distances to the hole closer than this count as equal for the turn order. */
+    public static final double TIE_DISTANCE = 0.001;
+
+    private final World world;
+    private final SimulationSettings settings;
+    private final List<Player> players;
+    private final int strokeLimit;
+    private final List<PlayerState> states = new ArrayList<>();
+    private final List<ShotRecord> history = new ArrayList<>();
+
+    private Stroke stroke;
+    private int strokePlayer = -1;
+    private double strokeVx, strokeVy;
+
+    public Game(World world, SimulationSettings settings, List<Player> players, int strokeLimit) {
+        if (world == null || settings == null) throw new IllegalArgumentException("world and settings must be given");
+        if (players == null || players.isEmpty() || players.size() > MAX_PLAYERS) {
+            throw new IllegalArgumentException("a game has 1 to " + MAX_PLAYERS + " players");
+        }
+        if (strokeLimit < 1 || strokeLimit > MAX_STROKE_LIMIT) {
+            throw new IllegalArgumentException("the stroke limit must be 1 to " + MAX_STROKE_LIMIT + ", got " + strokeLimit);
+        }
+        this.world = world;
+        this.settings = settings;
+        this.players = List.copyOf(players);
+        this.strokeLimit = strokeLimit;
+        double sx = world.course().start().x(), sy = world.course().start().y();
+        for (int i = 0; i < players.size(); i++) states.add(new PlayerState(sx, sy, 0, 0, PlayerStatus.PLAYING));
+    }
+
+    /** Rebuilds a game from saved state (see {@link GameState}); a stroke that was rolling starts again. */
+    public static Game restore(World world, GameState saved) {
+        Game game = new Game(world, saved.settings(), saved.players(), saved.strokeLimit());
+        game.states.clear();
+        game.states.addAll(saved.states());
+        game.history.addAll(saved.history());
+        if (saved.pendingShot() != null) {
+            int who = game.currentPlayer();
+            if (who < 0) throw new IllegalArgumentException("the saved game has a shot in flight but nobody left to play");
+            game.startShot(saved.pendingShot().vx(), saved.pendingShot().vy());
+        }
+        return game;
+    }
+
+    /** Everything needed to resume this game exactly. A stroke in flight is saved as its start and velocity. */
+    public GameState state() {
+        PendingShot pending = stroke == null ? null : new PendingShot(strokeVx, strokeVy);
+        return new GameState(settings, players, strokeLimit, List.copyOf(states), List.copyOf(history), pending);
+    }
+
+    public World world() {
+        return world;
+    }
+
+    public SimulationSettings settings() {
+        return settings;
+    }
+
+    public List<Player> players() {
+        return players;
+    }
+
+    public int strokeLimit() {
+        return strokeLimit;
+    }
+
+    public PlayerState player(int seat) {
+        return states.get(seat);
+    }
+
+    public List<PlayerState> states() {
+        return Collections.unmodifiableList(states);
+    }
+
+    public List<ShotRecord> history() {
+        return Collections.unmodifiableList(history);
+    }
+
+    public boolean isOver() {
+        return currentPlayer() < 0;
+    }
+
+    /**
+     * The seat whose turn it is: while a stroke rolls, its player; otherwise the playing player
+     * farthest from the hole (ties: fewer strokes, then lower seat). -1 when the game is over.
+     */
+    public int currentPlayer() {
+        if (stroke != null) return strokePlayer;
+        double hx = world.hole().position().x(), hy = world.hole().position().y();
+        int best = -1;
+        double bestDistance = -1;
+        for (int i = 0; i < states.size(); i++) {
+            PlayerState s = states.get(i);
+            if (!s.isPlaying()) continue;
+            double d = Math.hypot(s.x() - hx, s.y() - hy);
+            boolean farther = d > bestDistance + TIE_DISTANCE;
+            boolean tie = !farther && d >= bestDistance - TIE_DISTANCE;
+            if (best < 0 || farther || (tie && s.total() < states.get(best).total())) {
+                best = i;
+                bestDistance = d;
+            }
+        }
+        return best;
+    }
+
+    /** The stroke in flight, or null. */
+    public Stroke activeStroke() {
+        return stroke;
+    }
+
+    public boolean isShotInFlight() {
+        return stroke != null;
+    }
+
+    /**
+     * Hits the current player's ball with velocity (vx, vy) m/s and returns the stroke to advance.
+     *
+     * @throws IllegalStateException    if a stroke is already rolling or the game is over
+     * @throws IllegalArgumentException if the speed exceeds the course's maximum speed
+     */
+    public Stroke startShot(double vx, double vy) {
+        if (stroke != null) throw new IllegalStateException("a stroke is still rolling");
+        int who = currentPlayer();
+        if (who < 0) throw new IllegalStateException("the game is over");
+        PlayerState s = states.get(who);
+        Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, null);
+        stroke = started;
+        strokePlayer = who;
+        strokeVx = vx;
+        strokeVy = vy;
+        return started;
+    }
+
+    /**
+     * Applies the finished stroke: counts it, adds a penalty and puts the ball back for water or
+     * out of bounds, marks a holed or picked-up player.
+     */
+    public ShotRecord completeShot() {
+        if (stroke == null) throw new IllegalStateException("no stroke is rolling");
+        if (!stroke.isFinished()) throw new IllegalStateException("the stroke has not finished");
+        ShotResult r = stroke.result();
+        PlayerState s = states.get(strokePlayer);
+        boolean penalty = r.outcome().isPenalty();
+        double x = penalty ? s.x() : r.endX();
+        double y = penalty ? s.y() : r.endY();
+        int hits = s.strokes() + 1;
+        int penalties = s.penalties() + (penalty ? 1 : 0);
+        PlayerStatus status = r.outcome() == Outcome.HOLED ? PlayerStatus.HOLED
+                : hits + penalties >= strokeLimit ? PlayerStatus.PICKED_UP : PlayerStatus.PLAYING;
+        states.set(strokePlayer, new PlayerState(x, y, hits, penalties, status));
+        ShotRecord record = new ShotRecord(strokePlayer, s.x(), s.y(), strokeVx, strokeVy, r.outcome(), r.endX(), r.endY());
+        history.add(record);
+        stroke = null;
+        strokePlayer = -1;
+        return record;
+    }
+
+    /** Plays a whole stroke at once (bots, tests, a skipped animation). */
+    public ShotRecord play(double vx, double vy) {
+        startShot(vx, vy).run();
+        return completeShot();
+    }
+
+    /** Runs a rolling stroke to its end and applies it (the player skipped the animation). */
+    public ShotRecord finishShotNow() {
+        if (stroke == null) throw new IllegalStateException("no stroke is rolling");
+        stroke.run();
+        return completeShot();
+    }
+
+    /** The score so far: holed players by score, then the rest. */
+    public Scorecard scorecard() {
+        return Scorecard.of(players, states, strokeLimit);
+    }
+}

@@ -1,0 +1,125 @@
+package minigolf.game;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.json.JsonReadFeature;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Iterator;
+import java.util.List;
+
+/** Strict reading of the game's own JSON files, field by field, with one-line errors naming the field. */
+final class JsonFields {
+    static final ObjectMapper MAPPER = JsonMapper.builder()
+            .enable(DeserializationFeature.FAIL_ON_READING_DUP_TREE_KEY)
+            .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+            .disable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
+            .build();
+
+    private final String source;
+
+    JsonFields(String source) {
+        this.source = source;
+    }
+
+    static String readText(Path file) throws SaveGameException {
+        try {
+            return Files.readString(file, StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new SaveGameException(String.valueOf(file), null, "cannot read: no such file");
+        } catch (IOException | RuntimeException e) {
+            throw new SaveGameException(String.valueOf(file), null, "cannot read: " + e.getMessage(), e);
+        }
+    }
+
+    JsonNode parse(String json) throws SaveGameException {
+        try {
+            JsonNode root = MAPPER.readTree(json.startsWith("\uFEFF") ? json.substring(1) : json);
+            if (root == null || root.isMissingNode()) throw new SaveGameException(source, null, "not valid JSON: the file is empty");
+            return object(root, null);
+        } catch (JsonProcessingException e) {
+            String msg = String.valueOf(e.getOriginalMessage()).lines().findFirst().orElse("");
+            String where = e.getLocation() != null && e.getLocation().getLineNr() > 0
+                    ? " at line " + e.getLocation().getLineNr() + ", column " + e.getLocation().getColumnNr() : "";
+            throw new SaveGameException(source, null, "not valid JSON" + where + ": " + msg, e);
+        }
+    }
+
+    SaveGameException error(String path, String problem) {
+        return new SaveGameException(source, path, problem);
+    }
+
+    JsonNode object(JsonNode node, String path) throws SaveGameException {
+        if (node == null || !node.isObject()) throw error(path, "must be an object");
+        return node;
+    }
+
+    void onlyFields(JsonNode node, String path, List<String> allowed) throws SaveGameException {
+        for (Iterator<String> it = node.fieldNames(); it.hasNext(); ) {
+            String f = it.next();
+            if (!allowed.contains(f)) throw error(join(path, f), "unknown field (expected one of " + String.join(", ", allowed) + ")");
+        }
+    }
+
+    JsonNode field(JsonNode node, String path, String name) throws SaveGameException {
+        JsonNode v = node.get(name);
+        if (v == null || v.isNull()) throw error(join(path, name), "is missing");
+        return v;
+    }
+
+    double number(JsonNode node, String path, String name) throws SaveGameException {
+        JsonNode v = field(node, path, name);
+        if (!v.isNumber()) throw error(join(path, name), "must be a number");
+        double d = v.doubleValue();
+        if (!Double.isFinite(d)) throw error(join(path, name), "must be a finite number");
+        return d;
+    }
+
+    int integer(JsonNode node, String path, String name, int min, int max) throws SaveGameException {
+        JsonNode v = field(node, path, name);
+        if (!v.isIntegralNumber() || !v.canConvertToInt()) throw error(join(path, name), "must be a whole number");
+        int i = v.intValue();
+        if (i < min || i > max) throw error(join(path, name), "must be " + min + " to " + max + ", got " + i);
+        return i;
+    }
+
+    boolean bool(JsonNode node, String path, String name) throws SaveGameException {
+        JsonNode v = field(node, path, name);
+        if (!v.isBoolean()) throw error(join(path, name), "must be true or false");
+        return v.booleanValue();
+    }
+
+    String text(JsonNode node, String path, String name) throws SaveGameException {
+        JsonNode v = field(node, path, name);
+        if (!v.isTextual()) throw error(join(path, name), "must be a string");
+        return v.textValue();
+    }
+
+    double[] vec(JsonNode node, String path, String name) throws SaveGameException {
+        JsonNode v = field(node, path, name);
+        String p = join(path, name);
+        if (!v.isArray() || v.size() != 2) throw error(p, "must be [x, y]");
+        double[] out = new double[2];
+        for (int i = 0; i < 2; i++) {
+            if (!v.get(i).isNumber() || !Double.isFinite(v.get(i).doubleValue())) throw error(p + "[" + i + "]", "must be a finite number");
+            out[i] = v.get(i).doubleValue();
+        }
+        return out;
+    }
+
+    JsonNode array(JsonNode node, String path, String name) throws SaveGameException {
+        JsonNode v = field(node, path, name);
+        if (!v.isArray()) throw error(join(path, name), "must be an array");
+        return v;
+    }
+
+    static String join(String path, String name) {
+        return path == null || path.isEmpty() ? name : path + "." + name;
+    }
+}

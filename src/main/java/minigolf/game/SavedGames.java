@@ -1,0 +1,194 @@
+package minigolf.game;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import minigolf.course.CourseException;
+import minigolf.course.CourseWriter;
+import minigolf.io.AtomicFile;
+import minigolf.physics.Integrator;
+import minigolf.physics.Outcome;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+
+/**
+ * Saves a game in progress and loads it back. The file embeds the course itself, so a saved game
+ * resumes exactly even if the course file changed or moved. Numbers are written with full
+ * double precision (Jackson writes the shortest decimal that reads back to the same double).
+ * Writing is atomic ({@link AtomicFile}); reading checks every field and fails with one line.
+ */
+public final class SavedGames {
+    public static final int FORMAT = 1;
+    static final String KIND = "minigolf-saved-game";
+    private static final List<String> TOP = List.of("format", "kind", "course", "simulation", "strokeLimit",
+            "players", "history", "pendingShot");
+    private static final List<String> SIMULATION = List.of("integrator", "dt", "maxTime");
+    private static final List<String> PLAYER = List.of("name", "kind", "bot", "ball", "strokes", "penalties", "status");
+    private static final List<String> SHOT = List.of("player", "start", "velocity", "outcome", "end");
+    private static final List<String> PENDING = List.of("velocity");
+
+    private SavedGames() {
+    }
+
+    /** A loaded game: its world (built from the embedded course) and its state. */
+    public record Loaded(World world, GameState state) {
+        public Game resume() {
+            return Game.restore(world, state);
+        }
+    }
+
+    public static void save(Game game, Path file) throws SaveGameException {
+        String json = toJson(game);
+        try {
+            AtomicFile.write(file, json.getBytes(StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new SaveGameException(String.valueOf(file), null, e.getMessage(), e);
+        }
+    }
+
+    public static Loaded load(Path file) throws SaveGameException {
+        return parse(JsonFields.readText(file), String.valueOf(file));
+    }
+
+    public static String toJson(Game game) {
+        GameState s = game.state();
+        ObjectNode root = JsonFields.MAPPER.createObjectNode();
+        root.put("format", FORMAT);
+        root.put("kind", KIND);
+        try {
+            root.set("course", JsonFields.MAPPER.readTree(CourseWriter.toJson(game.world().course())));
+        } catch (IOException e) {
+            throw new IllegalStateException("the course writer produced invalid JSON", e);
+        }
+        ObjectNode sim = root.putObject("simulation");
+        sim.put("integrator", s.settings().integrator().cliName());
+        sim.put("dt", s.settings().dt());
+        sim.put("maxTime", s.settings().maxTime());
+        root.put("strokeLimit", s.strokeLimit());
+        ArrayNode players = root.putArray("players");
+        for (int i = 0; i < s.players().size(); i++) {
+            Player p = s.players().get(i);
+            PlayerState st = s.states().get(i);
+            ObjectNode o = players.addObject();
+            o.put("name", p.name());
+            o.put("kind", p.kind().jsonName());
+            if (p.bot() != null) o.put("bot", p.bot());
+            o.putArray("ball").add(st.x()).add(st.y());
+            o.put("strokes", st.strokes());
+            o.put("penalties", st.penalties());
+            o.put("status", st.status().jsonName());
+        }
+        ArrayNode history = root.putArray("history");
+        for (ShotRecord r : s.history()) {
+            ObjectNode o = history.addObject();
+            o.put("player", r.player());
+            o.putArray("start").add(r.startX()).add(r.startY());
+            o.putArray("velocity").add(r.vx()).add(r.vy());
+            o.put("outcome", r.outcome().jsonName());
+            o.putArray("end").add(r.endX()).add(r.endY());
+        }
+        if (s.pendingShot() != null) {
+            root.putObject("pendingShot").putArray("velocity").add(s.pendingShot().vx()).add(s.pendingShot().vy());
+        }
+        try {
+            return JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot write JSON", e);
+        }
+    }
+
+    public static Loaded parse(String json, String source) throws SaveGameException {
+        JsonFields f = new JsonFields(source);
+        JsonNode root = f.parse(json);
+        f.onlyFields(root, null, TOP);
+        int format = f.integer(root, null, "format", 0, Integer.MAX_VALUE);
+        if (format != FORMAT) throw f.error("format", "this game reads saved games of format " + FORMAT + ", got " + format);
+        if (!KIND.equals(f.text(root, null, "kind"))) throw f.error("kind", "must be \"" + KIND + "\" (is this a saved game?)");
+        World world;
+        try {
+            String courseJson = JsonFields.MAPPER.writeValueAsString(f.object(f.field(root, null, "course"), "course"));
+            world = World.parse(courseJson, source + " (course)");
+        } catch (CourseException e) {
+            throw new SaveGameException(source, "course" + (e.path() == null ? "" : "." + e.path()), e.problem(), e);
+        } catch (IOException e) {
+            throw f.error("course", "cannot be read: " + e.getMessage());
+        }
+        JsonNode sim = f.object(f.field(root, null, "simulation"), "simulation");
+        f.onlyFields(sim, "simulation", SIMULATION);
+        Integrator integrator = Integrator.fromName(f.text(sim, "simulation", "integrator"));
+        if (integrator == null) throw f.error("simulation.integrator", "must be euler, rk2 or rk4");
+        SimulationSettings settings;
+        try {
+            settings = new SimulationSettings(integrator, f.number(sim, "simulation", "dt"), f.number(sim, "simulation", "maxTime"));
+        } catch (IllegalArgumentException e) {
+            throw f.error("simulation", e.getMessage());
+        }
+        int strokeLimit = f.integer(root, null, "strokeLimit", 1, Game.MAX_STROKE_LIMIT);
+
+        JsonNode playersNode = f.array(root, null, "players");
+        if (playersNode.size() < 1 || playersNode.size() > Game.MAX_PLAYERS) {
+            throw f.error("players", "a game has 1 to " + Game.MAX_PLAYERS + " players, got " + playersNode.size());
+        }
+        List<Player> players = new ArrayList<>();
+        List<PlayerState> states = new ArrayList<>();
+        for (int i = 0; i < playersNode.size(); i++) {
+            String p = "players[" + i + "]";
+            JsonNode o = f.object(playersNode.get(i), p);
+            f.onlyFields(o, p, PLAYER);
+            PlayerKind kind = PlayerKind.fromJsonName(f.text(o, p, "kind"));
+            if (kind == null) throw f.error(p + ".kind", "must be human or bot");
+            String bot = kind == PlayerKind.BOT ? f.text(o, p, "bot") : null;
+            try {
+                players.add(new Player(f.text(o, p, "name"), kind, bot));
+            } catch (IllegalArgumentException e) {
+                throw f.error(p, e.getMessage());
+            }
+            double[] ball = f.vec(o, p, "ball");
+            if (!world.bounds().contains(ball[0], ball[1])) throw f.error(p + ".ball", "lies outside the course bounds");
+            int strokes = f.integer(o, p, "strokes", 0, 10_000);
+            int penalties = f.integer(o, p, "penalties", 0, strokes);
+            PlayerStatus status = PlayerStatus.fromJsonName(f.text(o, p, "status"));
+            if (status == null) throw f.error(p + ".status", "must be playing, holed or picked-up");
+            states.add(new PlayerState(ball[0], ball[1], strokes, penalties, status));
+        }
+
+        JsonNode historyNode = f.array(root, null, "history");
+        List<ShotRecord> history = new ArrayList<>();
+        for (int i = 0; i < historyNode.size(); i++) {
+            String p = "history[" + i + "]";
+            JsonNode o = f.object(historyNode.get(i), p);
+            f.onlyFields(o, p, SHOT);
+            int who = f.integer(o, p, "player", 0, players.size() - 1);
+            double[] start = f.vec(o, p, "start"), v = f.vec(o, p, "velocity"), end = f.vec(o, p, "end");
+            Outcome outcome = outcomeNamed(f.text(o, p, "outcome"));
+            if (outcome == null) throw f.error(p + ".outcome", "must be holed, stopped, water, out or timeout");
+            history.add(new ShotRecord(who, start[0], start[1], v[0], v[1], outcome, end[0], end[1]));
+        }
+
+        PendingShot pending = null;
+        JsonNode pendingNode = root.get("pendingShot");
+        if (pendingNode != null && !pendingNode.isNull()) {
+            f.object(pendingNode, "pendingShot");
+            f.onlyFields(pendingNode, "pendingShot", PENDING);
+            double[] v = f.vec(pendingNode, "pendingShot", "velocity");
+            if (Math.hypot(v[0], v[1]) > world.physics().maxSpeed() * (1 + 1e-12)) {
+                throw f.error("pendingShot.velocity", "is faster than the course's maxSpeed " + world.physics().maxSpeed() + " m/s");
+            }
+            if (states.stream().noneMatch(PlayerState::isPlaying)) {
+                throw f.error("pendingShot", "a shot is in flight but every player has finished");
+            }
+            pending = new PendingShot(v[0], v[1]);
+        }
+        return new Loaded(world, new GameState(settings, players, strokeLimit, states, history, pending));
+    }
+
+    private static Outcome outcomeNamed(String name) {
+        for (Outcome o : Outcome.values()) if (o.jsonName().equals(name)) return o;
+        return null;
+    }
+}

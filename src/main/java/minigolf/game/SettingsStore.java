@@ -1,0 +1,124 @@
+package minigolf.game;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import minigolf.io.AtomicFile;
+import minigolf.physics.Integrator;
+
+/**
+ * Reads and writes {@link UserSettings} as {@code settings.json} in the user's config folder:
+ * the system property {@code minigolf.configDir} if set (tests), else {@code $XDG_CONFIG_HOME/minigolf},
+ * else {@code ~/.config/minigolf}. Saved games go to its {@code saves} folder. A missing file means
+ * the defaults; a broken one is reported in one line and the defaults are used.
+ */
+public final class SettingsStore {
+    public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
+    private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
+            "mouseSpeed", "strokeLimit", "heightColours", "playerNames");
+
+    private final Path directory;
+
+    public SettingsStore(Path directory) {
+        this.directory = directory;
+    }
+
+    /** The store in the user's config folder. */
+    public static SettingsStore forUser() {
+        return new SettingsStore(configDirectory(System.getProperty(CONFIG_DIR_PROPERTY), System.getenv(),
+                System.getProperty("user.home")));
+    }
+
+    static Path configDirectory(String override, Map<String, String> env, String home) {
+        if (override != null && !override.isBlank()) return Path.of(override);
+        String xdg = env.get("XDG_CONFIG_HOME");
+        // The XDG spec ignores relative paths.
+        if (xdg != null && !xdg.isBlank() && Path.of(xdg).isAbsolute()) return Path.of(xdg, "minigolf");
+        return Path.of(home, ".config", "minigolf");
+    }
+
+    public Path directory() {
+        return directory;
+    }
+
+    public Path file() {
+        return directory.resolve("settings.json");
+    }
+
+    /** Where saved games go: {@code <config>/saves}. */
+    public Path savesDirectory() {
+        return directory.resolve("saves");
+    }
+
+    /** The stored settings, or the defaults when there is no file yet. */
+    public UserSettings load() throws SaveGameException {
+        if (!Files.exists(file())) return UserSettings.DEFAULTS;
+        String source = file().toString();
+        JsonFields f = new JsonFields(source);
+        JsonNode root = f.parse(JsonFields.readText(file()));
+        f.onlyFields(root, null, FIELDS);
+        UserSettings d = UserSettings.DEFAULTS;
+        try {
+            Integrator integrator = root.has("integrator") ? Integrator.fromName(f.text(root, null, "integrator")) : d.integrator();
+            if (integrator == null) throw f.error("integrator", "must be euler, rk2 or rk4");
+            List<String> names = d.playerNames();
+            if (root.has("playerNames")) {
+                JsonNode a = f.array(root, null, "playerNames");
+                names = new ArrayList<>();
+                for (int i = 0; i < a.size(); i++) {
+                    if (!a.get(i).isTextual()) throw f.error("playerNames[" + i + "]", "must be a string");
+                    names.add(a.get(i).textValue());
+                }
+            }
+            return new UserSettings(integrator,
+                    root.has("dt") ? f.number(root, null, "dt") : d.dt(),
+                    root.has("vsync") ? f.bool(root, null, "vsync") : d.vsync(),
+                    root.has("frameLimit") ? f.integer(root, null, "frameLimit", 0, 1000) : d.frameLimit(),
+                    root.has("fullscreen") ? f.bool(root, null, "fullscreen") : d.fullscreen(),
+                    root.has("mouseSpeed") ? f.number(root, null, "mouseSpeed") : d.mouseSpeed(),
+                    root.has("strokeLimit") ? f.integer(root, null, "strokeLimit", 1, Game.MAX_STROKE_LIMIT) : d.strokeLimit(),
+                    root.has("heightColours") ? f.bool(root, null, "heightColours") : d.heightColours(),
+                    names);
+        } catch (IllegalArgumentException e) {
+            throw new SaveGameException(source, null, e.getMessage(), e);
+        }
+    }
+
+    /** Loads the settings; a broken file gives the defaults and {@code problem[0]} its one-line message. */
+    public UserSettings loadOrDefaults(String[] problem) {
+        try {
+            return load();
+        } catch (SaveGameException e) {
+            if (problem != null && problem.length > 0) problem[0] = e.getMessage();
+            return UserSettings.DEFAULTS;
+        }
+    }
+
+    public void save(UserSettings s) throws SaveGameException {
+        ObjectNode root = JsonFields.MAPPER.createObjectNode();
+        root.put("integrator", s.integrator().cliName());
+        root.put("dt", s.dt());
+        root.put("vsync", s.vsync());
+        root.put("frameLimit", s.frameLimit());
+        root.put("fullscreen", s.fullscreen());
+        root.put("mouseSpeed", s.mouseSpeed());
+        root.put("strokeLimit", s.strokeLimit());
+        root.put("heightColours", s.heightColours());
+        ArrayNode names = root.putArray("playerNames");
+        s.playerNames().forEach(names::add);
+        try {
+            Files.createDirectories(directory);
+            String json = JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";
+            AtomicFile.write(file(), json.getBytes(StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new SaveGameException(file().toString(), null, "cannot save: " + e.getMessage(), e);
+        }
+    }
+}

@@ -1,0 +1,94 @@
+package minigolf.game;
+
+import minigolf.physics.Stroke;
+
+/**
+ * Advances a {@link Stroke} at its fixed physics step, decoupled from the frame rate: each frame
+ * adds its real elapsed time and as many whole steps are taken as fit; the ball is drawn between
+ * the last two states ({@link #x()}, {@link #y()} interpolate by the time left over). A long
+ * frame (a minimised or dragged window) takes at most {@link #MAX_STEPS_PER_FRAME} steps, so the
+ * game slows down rather than freezing to catch up.
+ */
+public final class StrokeAnimator {
+    public static final int MAX_STEPS_PER_FRAME = 30;
+
+    private final Stroke stroke;
+    private final double dt;
+    private double accumulator;
+    private double prevX, prevY, prevVx, prevVy;
+    private double curX, curY, curVx, curVy;
+    private double ax, ay;
+    private double alpha;
+
+    public StrokeAnimator(Stroke stroke, double dt) {
+        this.stroke = stroke;
+        this.dt = dt;
+        prevX = curX = stroke.x();
+        prevY = curY = stroke.y();
+        prevVx = curVx = stroke.vx();
+        prevVy = curVy = stroke.vy();
+    }
+
+    /** Advances by {@code seconds} of real time (times {@code speed}, 1 = real time); returns steps taken. */
+    public int advance(double seconds, double speed) {
+        if (!(seconds > 0) || stroke.isFinished()) return 0;
+        accumulator += seconds * speed;
+        int taken = 0;
+        while (accumulator >= dt && !stroke.isFinished()) {
+            if (taken == MAX_STEPS_PER_FRAME) {
+                accumulator = 0;
+                break;
+            }
+            prevX = curX;
+            prevY = curY;
+            prevVx = curVx;
+            prevVy = curVy;
+            stroke.step();
+            curX = stroke.isFinished() ? stroke.result().endX() : stroke.x();
+            curY = stroke.isFinished() ? stroke.result().endY() : stroke.y();
+            curVx = stroke.vx();
+            curVy = stroke.vy();
+            double stepTime = dt;
+            ax = (curVx - prevVx) / stepTime;
+            ay = (curVy - prevVy) / stepTime;
+            accumulator -= dt;
+            taken++;
+        }
+        alpha = stroke.isFinished() ? 1 : Math.min(1, accumulator / dt);
+        return taken;
+    }
+
+    public boolean isFinished() {
+        return stroke.isFinished();
+    }
+
+    public Stroke stroke() {
+        return stroke;
+    }
+
+    /** The drawn position: between the last two states by the fraction of a step left over. */
+    public double x() {
+        return prevX + (curX - prevX) * alpha;
+    }
+
+    public double y() {
+        return prevY + (curY - prevY) * alpha;
+    }
+
+    public double vx() {
+        return prevVx + (curVx - prevVx) * alpha;
+    }
+
+    public double vy() {
+        return prevVy + (curVy - prevVy) * alpha;
+    }
+
+    /** The mean acceleration over the last step, (v_n - v_(n-1)) / dt. */
+    public double ax() {
+        return ax;
+    }
+
+    public double ay() {
+        return ay;
+    }
+}

@@ -1,0 +1,80 @@
+package minigolf.game;
+
+import java.util.List;
+import minigolf.physics.Integrator;
+import minigolf.physics.SimulationSettings;
+
+/**
+ * The player's preferences, kept in the user's config folder ({@link SettingsStore}): how strokes
+ * are integrated, the window, the controls and the players of the last game.
+ *
+ * @param frameLimit  frames per second when vsync is off or has no effect (0 = unlimited)
+ * @param mouseSpeed  camera rotation per pixel of drag, as a factor of the default
+ * @param playerNames the names offered in the new-game dialog (1 to 4)
+ */
+public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
+                           double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
+    public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
+            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"));
+    public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
+
+    public UserSettings {
+        if (integrator == null) throw new IllegalArgumentException("integrator must be given");
+        if (!(dt >= MIN_DT && dt <= MAX_DT)) throw new IllegalArgumentException("dt must be 1/1000 to 1/30 s, got " + dt);
+        if (frameLimit < 0 || frameLimit > 1000) throw new IllegalArgumentException("frameLimit must be 0 to 1000, got " + frameLimit);
+        if (!(mouseSpeed >= 0.1 && mouseSpeed <= 10)) throw new IllegalArgumentException("mouseSpeed must be 0.1 to 10, got " + mouseSpeed);
+        if (strokeLimit < 1 || strokeLimit > Game.MAX_STROKE_LIMIT) {
+            throw new IllegalArgumentException("strokeLimit must be 1 to " + Game.MAX_STROKE_LIMIT + ", got " + strokeLimit);
+        }
+        playerNames = List.copyOf(playerNames);
+        if (playerNames.isEmpty() || playerNames.size() > Game.MAX_PLAYERS) {
+            throw new IllegalArgumentException("playerNames must hold 1 to " + Game.MAX_PLAYERS + " names");
+        }
+        for (String n : playerNames) {
+            if (n == null || n.isBlank() || n.length() > Player.MAX_NAME_LENGTH) {
+                throw new IllegalArgumentException("player names must be 1 to " + Player.MAX_NAME_LENGTH + " characters");
+            }
+        }
+    }
+
+    /** The simulation settings a new game uses. */
+    public SimulationSettings simulation() {
+        return new SimulationSettings(integrator, dt, SimulationSettings.DEFAULT_MAX_TIME);
+    }
+
+    public UserSettings withIntegrator(Integrator v) {
+        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+    }
+
+    public UserSettings withDt(double v) {
+        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+    }
+
+    public UserSettings withVsync(boolean v) {
+        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+    }
+
+    public UserSettings withFrameLimit(int v) {
+        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+    }
+
+    public UserSettings withFullscreen(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours, playerNames);
+    }
+
+    public UserSettings withMouseSpeed(double v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours, playerNames);
+    }
+
+    public UserSettings withStrokeLimit(int v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours, playerNames);
+    }
+
+    public UserSettings withHeightColours(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v, playerNames);
+    }
+
+    public UserSettings withPlayerNames(List<String> v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, v);
+    }
+}

@@ -1,0 +1,63 @@
+package minigolf.render;
+
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
+
+import static org.lwjgl.system.MemoryUtil.memAlloc;
+import static org.lwjgl.system.MemoryUtil.memFree;
+
+/**
+ * Off-screen rendering for stills, benchmarks and tests: a hidden window (for the GL context) and a
+ * width x height framebuffer. Usage: {@link #bind()}, draw, then {@link #savePng} or {@link #finish()}.
+ */
+public final class Offscreen implements AutoCloseable {
+    private final Window window;
+    private final Framebuffer target;
+
+    public Offscreen(int width, int height, int samples) {
+        window = new Window("Minigolf off-screen", 64, 64, Window.Options.hidden());
+        try {
+            target = new Framebuffer(width, height, samples);
+        } catch (RuntimeException e) {
+            window.close();
+            throw e;
+        }
+    }
+
+    public int width() {
+        return target.width();
+    }
+
+    public int height() {
+        return target.height();
+    }
+
+    /** Makes the framebuffer the render target, with a full viewport. */
+    public void bind() {
+        target.bind();
+    }
+
+    /** Waits until the GPU has finished the frame (for timing). */
+    public void finish() {
+        org.lwjgl.opengl.GL11.glFinish();
+    }
+
+    /** Resolves the frame and writes it as PNG. */
+    public void savePng(Path png) {
+        int w = target.width(), h = target.height();
+        target.resolve();
+        ByteBuffer pixels = memAlloc(w * h * 4);
+        try {
+            target.readPixels(pixels);
+            Png.writeBottomUp(png, w, h, pixels);
+        } finally {
+            memFree(pixels);
+        }
+    }
+
+    @Override
+    public void close() {
+        target.close();
+        window.close();
+    }
+}

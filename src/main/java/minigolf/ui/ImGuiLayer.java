@@ -1,0 +1,65 @@
+package minigolf.ui;
+
+import imgui.ImGui;
+import imgui.ImGuiIO;
+import imgui.flag.ImGuiConfigFlags;
+import imgui.gl3.ImGuiImplGl3;
+import imgui.glfw.ImGuiImplGlfw;
+
+/**
+ * Dear ImGui on a GLFW window (imgui-java 1.88.0). Install the game's own GLFW callbacks before
+ * creating this layer: ImGui's GLFW backend then chains to them, and the game asks
+ * {@link #wantsMouse()} / {@link #wantsKeyboard()} before acting on an event. The ini file is off
+ * (the layout is code's, and the config folder stays clean).
+ */
+public final class ImGuiLayer implements AutoCloseable {
+    private final ImGuiImplGlfw glfw = new ImGuiImplGlfw();
+    private final ImGuiImplGl3 gl3 = new ImGuiImplGl3();
+    private boolean closed;
+
+    public ImGuiLayer(long windowHandle, float scale) {
+        ImGui.createContext();
+        ImGuiIO io = ImGui.getIO();
+        io.setIniFilename(null);
+        io.addConfigFlags(ImGuiConfigFlags.NavEnableKeyboard);
+        io.setFontGlobalScale(scale);
+        Theme.apply(scale);
+        glfw.init(windowHandle, true);
+        gl3.init("#version 330 core");
+    }
+
+    /** Starts a frame: the GL backend first (it builds the font atlas), then GLFW, then ImGui. */
+    public void newFrame() {
+        gl3.newFrame();
+        glfw.newFrame();
+        ImGui.newFrame();
+    }
+
+    /** Draws what the frame's ImGui calls built, over whatever is in the framebuffer. */
+    public void render() {
+        ImGui.render();
+        gl3.renderDrawData(ImGui.getDrawData());
+    }
+
+    public boolean wantsMouse() {
+        return ImGui.getIO().getWantCaptureMouse();
+    }
+
+    public boolean wantsKeyboard() {
+        return ImGui.getIO().getWantCaptureKeyboard();
+    }
+
+    @Override
+    public void close() {
+        if (closed) return;
+        closed = true;
+        gl3.shutdown();
+        try {
+            glfw.shutdown();
+        } catch (NullPointerException e) {
+            // imgui-java 1.88 destroys every mouse cursor, also those the X server could not make
+            // (null under Xvfb); the window and its callbacks are freed with the window anyway.
+        }
+        ImGui.destroyContext();
+    }
+}

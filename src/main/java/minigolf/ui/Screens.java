@@ -1,0 +1,378 @@
+package minigolf.ui;
+
+import imgui.ImGui;
+import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiTableFlags;
+import imgui.flag.ImGuiWindowFlags;
+import imgui.type.ImBoolean;
+import imgui.type.ImDouble;
+import imgui.type.ImInt;
+import imgui.type.ImString;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import minigolf.course.CourseException;
+import minigolf.game.BallReadout;
+import minigolf.game.BotCatalog;
+import minigolf.game.BotTurn;
+import minigolf.game.CourseEdits;
+import minigolf.game.Game;
+import minigolf.game.Player;
+import minigolf.game.PlayerKind;
+import minigolf.game.PlayerState;
+import minigolf.game.ScoreLine;
+import minigolf.game.UserSettings;
+import minigolf.physics.Integrator;
+
+/** The ImGui screens: main menu, course choice, new game, settings, HUD, pause menu, scorecard. */
+public final class Screens {
+    private static final int PANEL = ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoResize
+            | ImGuiWindowFlags.AlwaysAutoResize;
+    private static final String[] KINDS = {"Human", "Bot"};
+    private static final String[] INTEGRATORS = {"euler", "rk2", "rk4"};
+
+    private final UiActions actions;
+    private Screen screen = Screen.MAIN_MENU;
+    private Screen settingsReturn = Screen.MAIN_MENU;
+
+    // New-game form.
+    private final ImInt playerCount = new ImInt(2);
+    private final ImString[] names = new ImString[Game.MAX_PLAYERS];
+    private final ImInt[] kinds = new ImInt[Game.MAX_PLAYERS];
+    private final ImInt[] bots = new ImInt[Game.MAX_PLAYERS];
+    // Typed shot.
+    private final ImDouble typedVx = new ImDouble(1.0);
+    private final ImDouble typedVy = new ImDouble(0.0);
+    // Settings form.
+    private final ImInt integrator = new ImInt(2);
+    private final ImInt stepsPerSecond = new ImInt(60);
+    private final ImBoolean vsync = new ImBoolean(true);
+    private final ImInt frameLimit = new ImInt(60);
+    private final ImInt strokeLimit = new ImInt(Game.DEFAULT_STROKE_LIMIT);
+    private final float[] mouseSpeed = {1f};
+    private final ImDouble[] course = new ImDouble[9];
+    private final ImInt testBot = new ImInt(0);
+    private String formError;
+
+    public Screens(UiActions actions) {
+        this.actions = actions;
+        for (int i = 0; i < Game.MAX_PLAYERS; i++) {
+            names[i] = new ImString("Player " + (i + 1), Player.MAX_NAME_LENGTH);
+            kinds[i] = new ImInt(0);
+            bots[i] = new ImInt(0);
+        }
+        for (int i = 0; i < course.length; i++) course[i] = new ImDouble();
+    }
+
+    public Screen screen() {
+        return screen;
+    }
+
+    public void show(Screen s) {
+        screen = s;
+        formError = null;
+    }
+
+    /** Builds this frame's UI. */
+    public void draw(UiView view) {
+        float w = ImGui.getIO().getDisplaySizeX(), h = ImGui.getIO().getDisplaySizeY();
+        switch (screen) {
+            case MAIN_MENU -> mainMenu(view, w, h);
+            case COURSES -> courses(view, w, h);
+            case NEW_GAME -> newGame(view, w, h);
+            case SETTINGS -> settings(view, w, h);
+            case PLAYING -> hud(view, w, h, true);
+            case PAUSED -> {
+                hud(view, w, h, false);
+                pause(w, h);
+            }
+            case SCORECARD -> scorecard(view, w, h);
+            case TEST_BOT -> hud(view, w, h, false);
+        }
+        if (view.message() != null) {
+            ImGui.setNextWindowPos(w * 0.5f, h - 16, ImGuiCond.Always, 0.5f, 1f);
+            ImGui.begin("##message", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
+                    | ImGuiWindowFlags.NoInputs | ImGuiWindowFlags.NoFocusOnAppearing);
+            ImGui.text(view.message());
+            ImGui.end();
+        }
+    }
+
+    private static void centre(float w, float h) {
+        ImGui.setNextWindowPos(w * 0.5f, h * 0.5f, ImGuiCond.Always, 0.5f, 0.5f);
+    }
+
+    private void mainMenu(UiView view, float w, float h) {
+        centre(w, h);
+        ImGui.begin("Minigolf", PANEL);
+        ImGui.text("Course: " + view.world().course().name());
+        ImGui.separator();
+        float bw = 300, bh = 0;
+        if (ImGui.button("Play", bw, bh)) show(Screen.NEW_GAME);
+        if (ImGui.button("Select course", bw, bh)) show(Screen.COURSES);
+        List<String> botNames = BotCatalog.names();
+        if (ImGui.button("Test bot", bw, bh) && !botNames.isEmpty()) {
+            actions.testBot(botNames.get(Math.min(testBot.get(), botNames.size() - 1)));
+        }
+        ImGui.sameLine();
+        ImGui.setNextItemWidth(120);
+        ImGui.combo("##testbot", testBot, botNames.toArray(new String[0]));
+        ImGui.beginDisabled();
+        ImGui.button("Create course", bw, bh);
+        ImGui.endDisabled();
+        ImGui.sameLine();
+        ImGui.textDisabled("(the editor is its own issue)");
+        if (!view.savedGames().isEmpty() && ImGui.beginMenu("Load saved game")) {
+            for (Path p : view.savedGames()) if (ImGui.menuItem(p.getFileName().toString())) actions.loadGame(p);
+            ImGui.endMenu();
+        }
+        if (ImGui.button("Settings", bw, bh)) openSettings(view, Screen.MAIN_MENU);
+        if (ImGui.button("Quit", bw, bh)) actions.quit();
+        ImGui.end();
+    }
+
+    private void courses(UiView view, float w, float h) {
+        centre(w, h);
+        ImGui.setNextWindowSize(Math.min(w - 40, 760), Math.min(h - 40, 560));
+        ImGui.begin("Select course", ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoResize);
+        int column = 0;
+        for (UiView.CourseEntry c : view.courses()) {
+            ImGui.beginGroup();
+            int tex = view.thumbnail(c);
+            if (tex != 0) {
+                if (ImGui.imageButton(tex, 200, 120, 0, 1, 1, 0)) actions.selectCourse(c.file());
+            } else if (ImGui.button("rendering...##" + c.file(), 208, 128)) {
+                actions.selectCourse(c.file());
+            }
+            ImGui.text(c.name() + (c.own() ? " (yours)" : ""));
+            ImGui.endGroup();
+            if (++column % 3 != 0) ImGui.sameLine();
+        }
+        ImGui.newLine();
+        ImGui.separator();
+        if (ImGui.button("Back")) show(Screen.MAIN_MENU);
+        ImGui.end();
+    }
+
+    private void newGame(UiView view, float w, float h) {
+        centre(w, h);
+        ImGui.begin("New game: " + view.world().course().name(), PANEL);
+        ImGui.sliderInt("Players", playerCount.getData(), 1, Game.MAX_PLAYERS);
+        List<String> botNames = BotCatalog.names();
+        for (int i = 0; i < playerCount.get(); i++) {
+            ImGui.pushID(i);
+            ImGui.setNextItemWidth(200);
+            ImGui.inputText("##name", names[i]);
+            ImGui.sameLine();
+            ImGui.setNextItemWidth(100);
+            ImGui.combo("##kind", kinds[i], KINDS);
+            if (kinds[i].get() == 1) {
+                ImGui.sameLine();
+                ImGui.setNextItemWidth(120);
+                ImGui.combo("##bot", bots[i], botNames.toArray(new String[0]));
+            }
+            ImGui.popID();
+        }
+        ImGui.text("Stroke limit: " + view.settings().strokeLimit() + " (pick up and score "
+                + (view.settings().strokeLimit() + 1) + "; change it in Settings)");
+        if (formError != null) ImGui.textColored(1f, 0.5f, 0.4f, 1f, formError);
+        if (ImGui.button("Tee off")) {
+            try {
+                List<Player> players = new ArrayList<>();
+                for (int i = 0; i < playerCount.get(); i++) {
+                    String n = names[i].get().trim();
+                    if (kinds[i].get() == 1 && !botNames.isEmpty()) {
+                        players.add(Player.bot(n, botNames.get(Math.min(bots[i].get(), botNames.size() - 1))));
+                    } else {
+                        players.add(new Player(n, PlayerKind.HUMAN, null));
+                    }
+                }
+                formError = null;
+                actions.startGame(players);
+            } catch (IllegalArgumentException e) {
+                formError = e.getMessage();
+            }
+        }
+        ImGui.sameLine();
+        if (ImGui.button("Back")) show(Screen.MAIN_MENU);
+        ImGui.end();
+    }
+
+    private void openSettings(UiView view, Screen returnTo) {
+        UserSettings s = view.settings();
+        integrator.set(s.integrator().ordinal());
+        stepsPerSecond.set((int) Math.round(1 / s.dt()));
+        vsync.set(s.vsync());
+        frameLimit.set(s.frameLimit());
+        strokeLimit.set(s.strokeLimit());
+        mouseSpeed[0] = (float) s.mouseSpeed();
+        CourseEdits e = CourseEdits.of(view.world().course());
+        double[] v = {e.gravity(), e.kineticFriction(), e.staticFriction(), e.maxSpeed(), e.startX(), e.startY(),
+                e.holeX(), e.holeY(), e.holeRadius()};
+        for (int i = 0; i < v.length; i++) course[i].set(v[i]);
+        settingsReturn = returnTo;
+        show(Screen.SETTINGS);
+    }
+
+    private void settings(UiView view, float w, float h) {
+        centre(w, h);
+        ImGui.begin("Settings", PANEL);
+        ImGui.text("Yours (kept in your config folder)");
+        ImGui.combo("Integrator", integrator, INTEGRATORS);
+        ImGui.inputInt("Physics steps per second", stepsPerSecond);
+        ImGui.checkbox("Vsync", vsync);
+        ImGui.inputInt("Frame limit (0 = none)", frameLimit);
+        ImGui.inputInt("Stroke limit", strokeLimit);
+        ImGui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
+        ImGui.separator();
+        ImGui.text("This course (" + view.world().course().name() + "): applies to the next game");
+        String[] labels = {"Gravity (m/s^2)", "Kinetic friction", "Static friction", "Max speed (m/s)", "Start x",
+                "Start y", "Hole x", "Hole y", "Hole radius"};
+        for (int i = 0; i < labels.length; i++) ImGui.inputDouble(labels[i], course[i], 0, 0, "%.4f");
+        if (formError != null) ImGui.textColored(1f, 0.5f, 0.4f, 1f, formError);
+        if (ImGui.button("Apply")) {
+            try {
+                int sps = stepsPerSecond.get();
+                UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
+                        .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
+                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0]);
+                CourseEdits e = new CourseEdits(course[0].get(), course[1].get(), course[2].get(), course[3].get(),
+                        course[4].get(), course[5].get(), course[6].get(), course[7].get(), course[8].get());
+                actions.applySettings(s, e);
+                formError = null;
+                show(settingsReturn);
+            } catch (IllegalArgumentException e) {
+                formError = e.getMessage();
+            } catch (RuntimeException e) {
+                formError = e.getCause() instanceof CourseException ce ? ce.detail() : e.getMessage();
+            }
+        }
+        ImGui.sameLine();
+        if (ImGui.button("Cancel")) show(settingsReturn);
+        ImGui.end();
+    }
+
+    private void hud(UiView view, float w, float h, boolean interactive) {
+        Game g = view.game();
+        ImGui.setNextWindowPos(12, 12, ImGuiCond.Always);
+        ImGui.begin("##hud", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+        if (g != null) {
+            int cur = g.currentPlayer();
+            if (cur >= 0) {
+                Player p = g.players().get(cur);
+                ImGui.textColored(1f, 0.85f, 0.3f, 1f, p.name() + (p.isBot() ? " (bot: " + p.bot() + ")" : "") + " to play");
+            }
+            for (int i = 0; i < g.players().size(); i++) {
+                PlayerState s = g.player(i);
+                float[] c = PlayerColors.of(i);
+                ImGui.textColored(c[0], c[1], c[2], 1f, String.format(Locale.ROOT, "%-12s", g.players().get(i).name()));
+                ImGui.sameLine();
+                ImGui.text(String.format(Locale.ROOT, "strokes %d%s%s", s.total(),
+                        s.penalties() > 0 ? " (" + s.penalties() + " penalty)" : "",
+                        s.status() == minigolf.game.PlayerStatus.PLAYING ? "" : ", " + s.status().jsonName()));
+            }
+        }
+        BallReadout r = view.readout();
+        if (r != null) {
+            ImGui.separator();
+            ImGui.text(String.format(Locale.ROOT, "position  (%.3f, %.3f, %.3f) m", r.x(), r.y(), r.z()));
+            ImGui.text(String.format(Locale.ROOT, "velocity  (%.3f, %.3f) m/s  |v| %.3f", r.vx(), r.vy(), r.speed()));
+            ImGui.text(String.format(Locale.ROOT, "accel.    (%.3f, %.3f) m/s^2  |a| %.3f", r.ax(), r.ay(), r.acceleration()));
+            ImGui.text(String.format(Locale.ROOT, "slope     %.3f (%.1f deg)", r.slope(), r.slopeDegrees()));
+            ImGui.text(String.format(Locale.ROOT, "friction  mu_k %.3f  mu_s %.3f", r.kineticFriction(), r.staticFriction()));
+        }
+        ImGui.end();
+
+        BotTurn bot = view.botTurn();
+        if (bot != null) {
+            ImGui.setNextWindowPos(w * 0.5f, h - 60, ImGuiCond.Always, 0.5f, 1f);
+            ImGui.begin("##bot", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize);
+            ImGui.text("Bot thinking: " + bot.message());
+            ImGui.progressBar((float) bot.progress(), 320, 0);
+            ImGui.sameLine();
+            if (ImGui.button("Cancel")) actions.cancelBot();
+            ImGui.end();
+        }
+        boolean humanToPlay = g != null && !g.isShotInFlight() && g.currentPlayer() >= 0
+                && !g.players().get(g.currentPlayer()).isBot() && bot == null;
+        if (interactive && humanToPlay) shotPanel(view, w, h);
+    }
+
+    private void shotPanel(UiView view, float w, float h) {
+        double max = view.world().physics().maxSpeed();
+        ImGui.setNextWindowPos(w - 12, h - 12, ImGuiCond.Always, 1f, 1f);
+        ImGui.begin("Shot", ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+        ImGui.text("Drag back from the ball to aim, release to hit,");
+        ImGui.text("or type the velocity (max " + max + " m/s):");
+        ImGui.setNextItemWidth(120);
+        ImGui.inputDouble("vx", typedVx, 0.1, 0.5, "%.3f");
+        ImGui.setNextItemWidth(120);
+        ImGui.inputDouble("vy", typedVy, 0.1, 0.5, "%.3f");
+        double speed = Math.hypot(typedVx.get(), typedVy.get());
+        ImGui.progressBar((float) Math.min(1, speed / max), 240, 0, String.format(Locale.ROOT, "%.2f m/s", speed));
+        String problem = minigolf.game.AimModel.checkTyped(typedVx.get(), typedVy.get(), max);
+        if (problem != null) ImGui.textColored(1f, 0.5f, 0.4f, 1f, problem);
+        if (problem != null) ImGui.beginDisabled();
+        if (ImGui.button("HIT", 120, 0)) actions.hit(typedVx.get(), typedVy.get());
+        if (problem != null) ImGui.endDisabled();
+        double aim = view.aimSpeed();
+        if (aim >= 0) {
+            ImGui.progressBar((float) (aim / max), 240, 0, String.format(Locale.ROOT, "power %.2f m/s", aim));
+        }
+        ImGui.end();
+    }
+
+    private void pause(float w, float h) {
+        centre(w, h);
+        ImGui.begin("Paused", PANEL);
+        float bw = 240;
+        if (ImGui.button("Resume", bw, 0)) show(Screen.PLAYING);
+        if (ImGui.button("Save game", bw, 0)) actions.saveGame();
+        if (ImGui.button("Settings", bw, 0)) settingsFromPause();
+        if (ImGui.button("Main menu", bw, 0)) actions.toMainMenu();
+        if (ImGui.button("Quit", bw, 0)) actions.quit();
+        ImGui.end();
+    }
+
+    private UiView lastView;
+
+    private void settingsFromPause() {
+        if (lastView != null) openSettings(lastView, Screen.PAUSED);
+    }
+
+    /** Remembers the view for actions that need it outside draw (the pause menu's settings). */
+    public void remember(UiView view) {
+        lastView = view;
+    }
+
+    private void scorecard(UiView view, float w, float h) {
+        centre(w, h);
+        ImGui.begin("Scorecard: " + view.world().course().name(), PANEL);
+        Game g = view.game();
+        if (g != null && ImGui.beginTable("score", 6, ImGuiTableFlags.Borders | ImGuiTableFlags.RowBg)) {
+            for (String c : new String[]{"Rank", "Player", "Strokes", "Penalties", "Score", ""}) ImGui.tableSetupColumn(c);
+            ImGui.tableHeadersRow();
+            for (ScoreLine l : g.scorecard().ranked()) {
+                ImGui.tableNextRow();
+                ImGui.tableSetColumnIndex(0);
+                ImGui.text(String.valueOf(l.rank()));
+                ImGui.tableSetColumnIndex(1);
+                ImGui.text(l.name());
+                ImGui.tableSetColumnIndex(2);
+                ImGui.text(String.valueOf(l.strokes()));
+                ImGui.tableSetColumnIndex(3);
+                ImGui.text(String.valueOf(l.penalties()));
+                ImGui.tableSetColumnIndex(4);
+                ImGui.text(String.valueOf(l.score()));
+                ImGui.tableSetColumnIndex(5);
+                ImGui.text(l.status().jsonName());
+            }
+            ImGui.endTable();
+        }
+        if (ImGui.button("Play again")) show(Screen.NEW_GAME);
+        ImGui.sameLine();
+        if (ImGui.button("Main menu")) actions.toMainMenu();
+        ImGui.end();
+    }
+}

@@ -1,0 +1,31 @@
+package minigolf.ui;
+
+import java.nio.file.Path;
+import java.util.List;
+import minigolf.game.CourseEdits;
+import minigolf.game.Player;
+import minigolf.game.UserSettings;
+
+/** What the screens ask the game to do; the window implements it on the render thread. */
+public interface UiActions {
+    void startGame(List<Player> players);
+
+    /** Hits the current player's ball (the HIT button and the mouse drag both end here). */
+    void hit(double vx, double vy);
+
+    void selectCourse(Path course);
+
+    void testBot(String bot);
+
+    void cancelBot();
+
+    void saveGame();
+
+    void loadGame(Path file);
+
+    void applySettings(UserSettings settings, CourseEdits edits);
+
+    void toMainMenu();
+
+    void quit();
+}

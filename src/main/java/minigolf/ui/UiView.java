@@ -1,0 +1,42 @@
+package minigolf.ui;
+
+import java.nio.file.Path;
+import java.util.List;
+import minigolf.game.BallReadout;
+import minigolf.game.BotTurn;
+import minigolf.game.Game;
+import minigolf.game.UserSettings;
+import minigolf.physics.World;
+
+/** What the screens show; read on the render thread. */
+public interface UiView {
+    World world();
+
+    /** The game being played, or null. */
+    Game game();
+
+    /** The ball under the HUD: the rolling one, else the current player's. */
+    BallReadout readout();
+
+    /** The bot deciding now, or null. */
+    BotTurn botTurn();
+
+    UserSettings settings();
+
+    /** The courses to choose from: (name, file). */
+    List<CourseEntry> courses();
+
+    List<Path> savedGames();
+
+    /** A one-line message for the player (errors, "saved to ..."), or null. */
+    String message();
+
+    /** The aim being dragged: speed in m/s, or negative when not aiming. */
+    double aimSpeed();
+
+    /** ImGui texture id of a course's preview, or 0 while it is not rendered yet. */
+    int thumbnail(CourseEntry course);
+
+    record CourseEntry(String name, Path file, boolean own) {
+    }
+}

@@ -1,0 +1,58 @@
+package minigolf.game;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import minigolf.physics.Integrator;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class SettingsStoreTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void missingFileMeansDefaults() throws Exception {
+        assertEquals(UserSettings.DEFAULTS, new SettingsStore(dir.resolve("none")).load());
+    }
+
+    @Test
+    void roundTrip() throws Exception {
+        SettingsStore store = new SettingsStore(dir.resolve("minigolf"));
+        UserSettings s = UserSettings.DEFAULTS.withIntegrator(Integrator.EULER).withDt(1.0 / 120).withVsync(false)
+                .withFrameLimit(144).withMouseSpeed(1.7).withStrokeLimit(6).withHeightColours(true)
+                .withPlayerNames(List.of("Ann", "Bob"));
+        store.save(s);
+        assertEquals(s, store.load());
+        assertEquals(1.0 / 120, store.load().simulation().dt(), 0.0, "dt survives exactly");
+    }
+
+    @Test
+    void brokenFileGivesOneLineAndTheDefaults() throws Exception {
+        SettingsStore store = new SettingsStore(dir);
+        Files.writeString(store.file(), "{\"dt\": 5}");
+        SaveGameException e = assertThrows(SaveGameException.class, store::load);
+        assertEquals(store.file() + ": dt must be 1/1000 to 1/30 s, got 5.0", e.getMessage());
+        String[] problem = new String[1];
+        assertEquals(UserSettings.DEFAULTS, store.loadOrDefaults(problem));
+        assertEquals(e.getMessage(), problem[0]);
+        Files.writeString(store.file(), "{\"integrator\": \"verlet\"}");
+        assertEquals(store.file() + ": integrator: must be euler, rk2 or rk4",
+                assertThrows(SaveGameException.class, store::load).getMessage());
+        Files.writeString(store.file(), "{\"colour\": 1}");
+        assertTrue(assertThrows(SaveGameException.class, store::load).getMessage().contains("colour: unknown field"));
+    }
+
+    @Test
+    void configFolderFollowsXdg() {
+        assertEquals(Path.of("/t/cfg"), SettingsStore.configDirectory("/t/cfg", Map.of("XDG_CONFIG_HOME", "/x"), "/home/u"));
+        assertEquals(Path.of("/x/minigolf"), SettingsStore.configDirectory(null, Map.of("XDG_CONFIG_HOME", "/x"), "/home/u"));
+        assertEquals(Path.of("/home/u/.config/minigolf"), SettingsStore.configDirectory(null, Map.of("XDG_CONFIG_HOME", "rel"), "/home/u"));
+        assertEquals(Path.of("/home/u/.config/minigolf"), SettingsStore.configDirectory("", Map.of(), "/home/u"));
+    }
+}
