@@ -147,6 +147,7 @@ public final class ObjectsPass implements RenderPass {
     private void begin(FrameContext frame) {
         shader.use();
         shader.set("uViewProjection", frame.viewProjection);
+        shader.set("uClipPlane", frame.clipPlane);
         Lighting.apply(shader, frame);
     }
 

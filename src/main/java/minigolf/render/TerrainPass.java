@@ -47,6 +47,7 @@ public final class TerrainPass implements RenderPass {
     public void render(FrameContext frame) {
         shader.use();
         shader.set("uViewProjection", frame.viewProjection);
+        shader.set("uClipPlane", frame.clipPlane);
         Lighting.apply(shader, frame);
         shader.set("uShininess", 24f);
         shader.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
