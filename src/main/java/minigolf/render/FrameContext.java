@@ -20,6 +20,9 @@ public final class FrameContext {
     public int viewportHeight;
     /** Geometry with dot(clipPlane, (world, 1)) < 0 is cut away (GL_CLIP_DISTANCE0 on); (0,0,0,1) keeps all. */
     public final Vector4f clipPlane = new Vector4f(0, 0, 0, 1);
+    /** The sun's shadow map that receivers sample (null: no shadow uniforms are set), and whether to use it. */
+    public ShadowMap shadowMap;
+    public boolean shadowsOn;
     /** Seconds since the renderer started; 0 in screenshots (deterministic frames). */
     public float time;
 
@@ -54,6 +57,8 @@ public final class FrameContext {
         viewProjection.invert(inverseViewProjection);
         eye.set(src.eye.x, src.eye.y, -src.eye.z);
         time = src.time;
+        shadowMap = src.shadowMap;
+        shadowsOn = src.shadowsOn;
         return this;
     }
 
@@ -67,6 +72,8 @@ public final class FrameContext {
         inverseViewProjection.set(src.inverseViewProjection);
         eye.set(src.eye);
         time = src.time;
+        shadowMap = src.shadowMap;
+        shadowsOn = src.shadowsOn;
         return this;
     }
 

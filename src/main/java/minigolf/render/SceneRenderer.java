@@ -15,6 +15,9 @@ import static org.lwjgl.opengl.GL30.*;
  * current GL context from construction to {@link #close()}.
  */
 public final class SceneRenderer implements AutoCloseable {
+    /** Shadow map texels per side: about 5 mm per texel on a 10 m course. */
+    public static final int SHADOW_MAP_SIZE = 2048;
+
     private final SkyPass sky;
     private final TerrainPass terrain;
     private final ObjectsPass objects;
@@ -27,6 +30,9 @@ public final class SceneRenderer implements AutoCloseable {
     private final Course course;
     private float lastTime;
     private boolean waterReflections = true;
+    private final ShaderProgram depthShader;
+    private final ShadowMap shadowMap;
+    private boolean shadows = true;
     /** The water's render targets' size relative to the viewport (0.5: a quarter of the pixels). */
     private float waterTargetScale = 0.5f;
 
@@ -48,6 +54,19 @@ public final class SceneRenderer implements AutoCloseable {
         terrain = t;
         objects = o;
         passes = List.of(sky, terrain, objects, water);
+        ShaderProgram depth = null;
+        try {
+            depth = ShaderProgram.load("shadow");
+            double minZ = Math.min(0, t.minHeight()) - 0.5, maxZ = Math.max(0, t.maxHeight()) + ObjectsPass.FLAG_HEIGHT + 0.1;
+            shadowMap = new ShadowMap(course.bounds(), minZ, maxZ, frame.sun.direction(), SHADOW_MAP_SIZE);
+        } catch (RuntimeException e) {
+            if (depth != null) depth.close();
+            for (RenderPass p : passes) p.close();
+            throw e;
+        }
+        depthShader = depth;
+        frame.shadowMap = shadowMap;
+        minimapFrame.shadowMap = shadowMap;
     }
 
     public TerrainPass terrainPass() {
@@ -115,6 +134,15 @@ public final class SceneRenderer implements AutoCloseable {
         waterReflections = on;
     }
 
+    /** Whether the sun casts shadows (on by default). */
+    public void setShadows(boolean on) {
+        shadows = on;
+    }
+
+    public boolean shadows() {
+        return shadows;
+    }
+
     public boolean waterReflections() {
         return waterReflections;
     }
@@ -129,6 +157,12 @@ public final class SceneRenderer implements AutoCloseable {
         lastTime = time;
         frame.update(camera, width, height, time);
         int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        frame.shadowsOn = shadows;
+        minimapFrame.shadowsOn = false; // a map reads better without shadows
+        if (shadows) {
+            renderShadowMap();
+            glBindFramebuffer(GL_FRAMEBUFFER, target);
+        }
         boolean targets = water.hasWater() && waterReflections;
         if (targets) {
             renderWaterTargets(width, height);
@@ -143,6 +177,16 @@ public final class SceneRenderer implements AutoCloseable {
         glDisable(GL_CULL_FACE);
         glEnable(GL_MULTISAMPLE);
         for (RenderPass pass : passes) pass.render(frame);
+    }
+
+    /** The sun's view of the casters (terrain, pole, flag, balls) into the shadow map. */
+    private void renderShadowMap() {
+        shadowMap.begin();
+        depthShader.use();
+        depthShader.set("uLightViewProjection", shadowMap.lightViewProjection());
+        terrain.drawDepth(depthShader);
+        objects.drawShadowCasters(depthShader);
+        shadowMap.end();
     }
 
     /**
@@ -184,6 +228,8 @@ public final class SceneRenderer implements AutoCloseable {
 
     @Override
     public void close() {
+        shadowMap.close();
+        depthShader.close();
         for (int i = passes.size() - 1; i >= 0; i--) passes.get(i).close();
     }
 }

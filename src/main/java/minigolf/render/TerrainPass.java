@@ -43,6 +43,12 @@ public final class TerrainPass implements RenderPass {
         return maxHeight;
     }
 
+    /** Draws the surface into the shadow map with the depth-only shader. */
+    void drawDepth(ShaderProgram depthShader) {
+        depthShader.set("uModel", new org.joml.Matrix4f());
+        mesh.draw();
+    }
+
     @Override
     public void render(FrameContext frame) {
         shader.use();
