@@ -46,7 +46,7 @@ void main() {
         reflected = texture(uReflection, clamp(screen + offset, 0.001, 0.999)).rgb;
         vec3 bed = texture(uRefraction, clamp(screen + offset * 0.6, 0.001, 0.999)).rgb;
         // Light through water: the bed takes the water's colour, more so the deeper it lies.
-        refracted = mix(bed * vec3(0.50, 0.80, 0.90), body, 0.35 + 0.6 * deep);
+        refracted = mix(bed * vec3(0.55, 0.85, 0.95), body, 0.55 + 0.4 * deep);
     } else {
         reflected = SKY;
         refracted = body;
