@@ -25,7 +25,7 @@ float noise(vec2 p) {
 
 float fbm(vec2 p) {
     float sum = 0.0, amp = 0.5;
-    for (int i = 0; i < 5; i++) {
+    for (int i = 0; i < 4; i++) {
         sum += amp * noise(p);
         p = p * 2.03 + vec2(17.1, 9.2);
         amp *= 0.5;
@@ -49,7 +49,7 @@ void main() {
         // Clouds on a layer 1 unit up: uv = dir.xy / dir.z, drifting with time.
         vec2 uv = dir.xy / max(up, 0.04) * 0.9 + vec2(uTime * 0.004, uTime * 0.0025);
         float c = smoothstep(0.50, 0.78, fbm(uv * 1.4));
-        float shade = 0.78 + 0.22 * fbm(uv * 1.4 + vec2(0.25, 0.35) * sun.xy);
+        float shade = 0.78 + 0.22 * noise(uv * 2.8 + vec2(0.5, 0.7) * sun.xy);
         vec3 cloud = mix(vec3(0.80, 0.83, 0.88), vec3(1.0, 0.99, 0.96), shade) + vec3(1.0, 0.9, 0.7) * pow(s, 8.0) * 0.25;
         color = mix(color, cloud, c * smoothstep(0.02, 0.25, up) * 0.9);
     } else {

@@ -21,7 +21,7 @@ uniform float uDistortion;   // ripple strength in screen-space units
 out vec4 fragColor;
 
 const vec3 SHALLOW = vec3(0.10, 0.52, 0.74);
-const vec3 DEEP = vec3(0.02, 0.17, 0.45);
+const vec3 DEEP = vec3(0.04, 0.24, 0.52);
 const vec3 SKY = vec3(0.62, 0.78, 0.95);
 
 void main() {
@@ -46,7 +46,7 @@ void main() {
         reflected = texture(uReflection, clamp(screen + offset, 0.001, 0.999)).rgb;
         vec3 bed = texture(uRefraction, clamp(screen + offset * 0.6, 0.001, 0.999)).rgb;
         // Light through water: the bed takes the water's colour, more so the deeper it lies.
-        refracted = mix(bed * vec3(0.55, 0.85, 0.95), body, 0.55 + 0.4 * deep);
+        refracted = mix(bed * vec3(0.55, 0.85, 0.95), body, 0.55 + 0.32 * deep);
     } else {
         reflected = SKY;
         refracted = body;

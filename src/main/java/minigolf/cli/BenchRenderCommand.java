@@ -37,6 +37,9 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction.")
     boolean noReflections;
 
+    @Option(names = "--no-shadows", description = "No sun shadows.")
+    boolean noShadows;
+
     @Override
     public Integer call() {
         if (frames < 1) throw new UserError("--frames: must be at least 1, got " + frames);
@@ -47,6 +50,7 @@ final class BenchRenderCommand implements Callable<Integer> {
         try (Offscreen off = new Offscreen(s.width(), s.height(), samples);
              SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN)) {
             renderer.setWaterReflections(!noReflections);
+            renderer.setShadows(!noShadows);
             OrbitCamera camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) s.width() / s.height());
             int side = Math.min(s.width(), s.height()) / 4;
             int warmUp = Math.max(5, Math.min(30, frames / 5));
@@ -61,6 +65,8 @@ final class BenchRenderCommand implements Callable<Integer> {
             out.put("fps", Math.round(10000 / ms) / 10.0);
             out.put("size", s.width() + "x" + s.height());
             out.put("samples", samples);
+            out.put("shadows", !noShadows);
+            out.put("reflections", !noReflections);
             out.put("course", world.course().name());
             out.put("renderer", glGetString(GL_RENDERER));
         }
