@@ -1,4 +1,5 @@
 #include "lighting.glsl"
+#include "shadow.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -14,5 +15,6 @@ void main() {
     vec3 n = normalize(vNormal);
     // Thin things (the flag's cloth) are seen from both sides.
     if (dot(n, uEye - vWorld) < 0.0) n = -n;
-    fragColor = vec4(haze(shade(vColor * uTint, n, vWorld, uSpecularStrength, uShininess), vWorld), 1.0);
+    float sun = sunVisibility(vWorld, n);
+    fragColor = vec4(haze(shadeLit(vColor * uTint, n, vWorld, uSpecularStrength, uShininess, sun), vWorld), 1.0);
 }

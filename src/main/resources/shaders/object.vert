@@ -3,6 +3,8 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColor;
 
 uniform mat4 uViewProjection;
+// Water reflection/refraction keep one side of z = 0: distance = dot(plane, world); (0,0,0,1) keeps all.
+uniform vec4 uClipPlane;
 uniform mat4 uModel;
 uniform mat3 uNormalMatrix;
 
@@ -15,5 +17,6 @@ void main() {
     vWorld = world.xyz;
     vNormal = uNormalMatrix * aNormal;
     vColor = aColor;
+    gl_ClipDistance[0] = dot(uClipPlane, world);
     gl_Position = uViewProjection * world;
 }

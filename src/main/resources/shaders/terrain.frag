@@ -1,4 +1,5 @@
 #include "lighting.glsl"
+#include "shadow.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -11,6 +12,6 @@ out vec4 fragColor;
 
 void main() {
     vec3 n = normalize(vNormal);
-    vec3 color = shade(vColor, n, vWorld, uSpecularStrength, uShininess);
+    vec3 color = shadeLit(vColor, n, vWorld, uSpecularStrength, uShininess, sunVisibility(vWorld, n));
     fragColor = vec4(haze(color, vWorld), 1.0);
 }

@@ -3,6 +3,8 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColor;
 
 uniform mat4 uViewProjection;
+// Water reflection/refraction keep one side of z = 0: distance = dot(plane, world); (0,0,0,1) keeps all.
+uniform vec4 uClipPlane;
 
 out vec3 vWorld;
 out vec3 vNormal;
@@ -12,5 +14,6 @@ void main() {
     vWorld = aPosition;
     vNormal = aNormal;
     vColor = aColor;
+    gl_ClipDistance[0] = dot(uClipPlane, vec4(aPosition, 1.0));
     gl_Position = uViewProjection * vec4(aPosition, 1.0);
 }

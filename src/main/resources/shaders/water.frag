@@ -1,32 +1,63 @@
 #include "lighting.glsl"
 
+// Water at z = 0. With render targets (uUseTargets = 1): the scene mirrored in z = 0 (reflection)
+// and the lake bed under the surface (refraction), both sampled at this pixel's screen position,
+// shifted by an animated du/dv ripple map; Fresnel mixes them (mostly refraction looking down,
+// mostly reflection at grazing angles). Water depth tints and darkens the refraction and fades
+// the shoreline. Without targets (the minimap, or reflections off) a sky colour and a body colour
+// stand in for the two images.
+
 in vec3 vWorld;
 in float vDepth;
+in vec4 vClip;
 
 uniform float uTime;
+uniform int uUseTargets;
+uniform sampler2D uReflection;
+uniform sampler2D uRefraction;
+uniform sampler2D uDudv;
+uniform float uDistortion;   // ripple strength in screen-space units
 
 out vec4 fragColor;
 
+const vec3 SHALLOW = vec3(0.10, 0.52, 0.74);
+const vec3 DEEP = vec3(0.04, 0.24, 0.52);
+const vec3 SKY = vec3(0.62, 0.78, 0.95);
+
 void main() {
     vec3 v = normalize(uEye - vWorld);
-    // Gentle ripples in the normal only (the surface itself stays flat at z = 0).
-    vec2 p = vWorld.xy;
-    vec3 n = normalize(vec3(0.020 * sin(p.x * 9.0 + p.y * 4.0 + uTime * 1.3)
-                          + 0.012 * sin(p.x * -5.0 + p.y * 11.0 + uTime * 0.9),
-                            0.020 * sin(p.y * 8.0 - p.x * 3.0 + uTime * 1.1)
-                          + 0.012 * sin(p.y * -6.0 + p.x * 10.0 + uTime * 0.7), 1.0));
+    // Two layers of the ripple map drifting in different directions (metres -> texture repeats).
+    vec2 p = vWorld.xy * 0.45;
+    vec2 d1 = texture(uDudv, p + vec2(0.021, 0.013) * uTime).rg * 2.0 - 1.0;
+    vec2 d2 = texture(uDudv, p * 1.7 + vec2(-0.017, 0.026) * uTime + vec2(0.37, 0.61)).rg * 2.0 - 1.0;
+    vec2 slope = d1 + 0.6 * d2;
+    vec3 n = normalize(vec3(-slope * 0.06, 1.0));
+
+    float deep = 1.0 - exp(-vDepth * 40.0);
+    // Less ripple where the water is only a film, so the shore does not shimmer over dry pixels.
+    float shore = smoothstep(0.0, 0.02, vDepth);
+
+    vec3 body = mix(SHALLOW, DEEP, deep);
+    vec3 reflected;
+    vec3 refracted;
+    if (uUseTargets == 1) {
+        vec2 screen = vClip.xy / vClip.w * 0.5 + 0.5;
+        vec2 offset = slope * uDistortion * shore;
+        reflected = texture(uReflection, clamp(screen + offset, 0.001, 0.999)).rgb;
+        vec3 bed = texture(uRefraction, clamp(screen + offset * 0.6, 0.001, 0.999)).rgb;
+        // Light through water: the bed takes the water's colour, more so the deeper it lies.
+        refracted = mix(bed * vec3(0.55, 0.85, 0.95), body, 0.55 + 0.32 * deep);
+    } else {
+        reflected = SKY;
+        refracted = body;
+    }
     float cosTheta = clamp(dot(n, v), 0.0, 1.0);
     float fresnel = 0.02 + 0.98 * pow(1.0 - cosTheta, 5.0);
-
-    float deep = 1.0 - exp(-vDepth * 20.0);
-    vec3 body = mix(vec3(0.10, 0.46, 0.86), vec3(0.02, 0.20, 0.58), deep);
-    vec3 sky = vec3(0.62, 0.78, 0.95);
-    vec3 color = mix(body, sky, fresnel);
+    vec3 color = mix(refracted, reflected, clamp(fresnel * 1.3, 0.0, 1.0));
     vec3 h = normalize(normalize(uSunDirection) + v);
-    color += uSunColor * pow(max(dot(n, h), 0.0), 180.0) * 0.9;
+    color += uSunColor * pow(max(dot(n, h), 0.0), 220.0) * 0.8 * shore;
 
-    float alpha = mix(0.80, 0.95, deep);
-    alpha = max(alpha, fresnel);
-    alpha *= smoothstep(0.0, 0.004, vDepth); // soft shoreline
+    float alpha = uUseTargets == 1 ? 1.0 : max(mix(0.80, 0.95, deep), fresnel);
+    alpha *= smoothstep(0.0, 0.006, vDepth); // soft shoreline
     fragColor = vec4(haze(color, vWorld), alpha);
 }

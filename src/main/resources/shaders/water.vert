@@ -5,9 +5,11 @@ uniform mat4 uViewProjection;
 
 out vec3 vWorld;
 out float vDepth;
+out vec4 vClip;
 
 void main() {
     vWorld = aPosition;
     vDepth = aDepth;
-    gl_Position = uViewProjection * vec4(aPosition, 1.0);
+    vClip = uViewProjection * vec4(aPosition, 1.0);
+    gl_Position = vClip;
 }

@@ -2,6 +2,7 @@ package minigolf.render;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
+import org.joml.Vector4f;
 
 /**
  * What every pass needs for one frame: the camera matrices and eye, the sun, the viewport. Built
@@ -17,6 +18,11 @@ public final class FrameContext {
     public final Sun sun;
     public int viewportWidth;
     public int viewportHeight;
+    /** Geometry with dot(clipPlane, (world, 1)) < 0 is cut away (GL_CLIP_DISTANCE0 on); (0,0,0,1) keeps all. */
+    public final Vector4f clipPlane = new Vector4f(0, 0, 0, 1);
+    /** The sun's shadow map that receivers sample (null: no shadow uniforms are set), and whether to use it. */
+    public ShadowMap shadowMap;
+    public boolean shadowsOn;
     /** Seconds since the renderer started; 0 in screenshots (deterministic frames). */
     public float time;
 
@@ -35,6 +41,39 @@ public final class FrameContext {
         viewProjection.invert(inverseViewProjection);
         eye.set(camera.eye());
         this.time = time;
+        return this;
+    }
+
+    /**
+     * This frame seen in the mirror z = 0: view * diag(1, 1, -1), eye below the water. A point on the
+     * water lands on the same pixel in both, so the water samples the reflection at its own pixel.
+     */
+    public FrameContext mirrorOf(FrameContext src, int width, int height) {
+        viewportWidth = width;
+        viewportHeight = height;
+        src.view.scale(1, 1, -1, view);
+        projection.set(src.projection);
+        projection.mul(view, viewProjection);
+        viewProjection.invert(inverseViewProjection);
+        eye.set(src.eye.x, src.eye.y, -src.eye.z);
+        time = src.time;
+        shadowMap = src.shadowMap;
+        shadowsOn = src.shadowsOn;
+        return this;
+    }
+
+    /** Copies the camera of {@code src} for a width x height target (the refraction). */
+    public FrameContext copyOf(FrameContext src, int width, int height) {
+        viewportWidth = width;
+        viewportHeight = height;
+        view.set(src.view);
+        projection.set(src.projection);
+        viewProjection.set(src.viewProjection);
+        inverseViewProjection.set(src.inverseViewProjection);
+        eye.set(src.eye);
+        time = src.time;
+        shadowMap = src.shadowMap;
+        shadowsOn = src.shadowsOn;
         return this;
     }
 

@@ -11,5 +11,6 @@ final class Lighting {
         shader.set("uSunColor", frame.sun.color());
         shader.set("uSkyAmbient", frame.sun.skyAmbient());
         shader.set("uGroundAmbient", frame.sun.groundAmbient());
+        if (frame.shadowMap != null) frame.shadowMap.apply(shader, frame.shadowsOn);
     }
 }

@@ -144,9 +144,22 @@ public final class ObjectsPass implements RenderPass {
         glEnable(GL_DEPTH_TEST);
     }
 
+    /** Draws what casts sun shadows (pole, flag, balls) with the depth-only shader. */
+    void drawShadowCasters(ShaderProgram depthShader) {
+        depthShader.set("uModel", model.identity());
+        pole.draw();
+        cloth.draw();
+        float radius = (float) visualBallRadius();
+        for (BallView b : balls) {
+            depthShader.set("uModel", model.translation(b.x(), b.y(), b.z() + radius).scale(radius));
+            ball.draw();
+        }
+    }
+
     private void begin(FrameContext frame) {
         shader.use();
         shader.set("uViewProjection", frame.viewProjection);
+        shader.set("uClipPlane", frame.clipPlane);
         Lighting.apply(shader, frame);
     }
 

@@ -1,5 +1,7 @@
 package minigolf.render;
 
+import minigolf.io.AtomicFile;
+
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 
@@ -42,14 +44,26 @@ public final class Offscreen implements AutoCloseable {
         org.lwjgl.opengl.GL11.glFinish();
     }
 
-    /** Resolves the frame and writes it as PNG. */
+    /** Resolves the frame and writes it as PNG, atomically (the old file stays whole if writing fails). */
     public void savePng(Path png) {
+        byte[] encoded = encodePng();
+        try {
+            Path parent = png.toAbsolutePath().getParent();
+            if (parent != null) java.nio.file.Files.createDirectories(parent);
+            AtomicFile.write(png, encoded);
+        } catch (java.io.IOException e) {
+            throw new RenderException("cannot write " + png + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** Resolves the frame and encodes it as PNG bytes. */
+    public byte[] encodePng() {
         int w = target.width(), h = target.height();
         target.resolve();
         ByteBuffer pixels = memAlloc(w * h * 4);
         try {
             target.readPixels(pixels);
-            Png.writeBottomUp(png, w, h, pixels);
+            return Png.encodeBottomUp(w, h, pixels);
         } finally {
             memFree(pixels);
         }

@@ -13,6 +13,28 @@ public final class Png {
     private Png() {
     }
 
+    /** Encodes RGBA pixels given bottom row first (as glReadPixels returns them) as PNG bytes, top row first. */
+    public static byte[] encodeBottomUp(int width, int height, ByteBuffer rgba) {
+        int stride = width * 4;
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        ByteBuffer flipped = memAlloc(stride * height);
+        try (org.lwjgl.stb.STBIWriteCallback sink = org.lwjgl.stb.STBIWriteCallback.create((context, data, size) -> {
+            byte[] chunk = new byte[size];
+            org.lwjgl.stb.STBIWriteCallback.getData(data, size).get(chunk);
+            out.write(chunk, 0, size);
+        })) {
+            for (int row = 0; row < height; row++) {
+                flipped.put(row * stride, rgba, (height - 1 - row) * stride, stride);
+            }
+            if (!org.lwjgl.stb.STBImageWrite.stbi_write_png_to_func(sink, 0L, width, height, 4, flipped, stride)) {
+                throw new RenderException("stbi_write_png_to_func failed for a " + width + "x" + height + " image");
+            }
+        } finally {
+            memFree(flipped);
+        }
+        return out.toByteArray();
+    }
+
     /**
      * Writes {@code width x height} RGBA pixels given bottom row first (as glReadPixels returns them)
      * to {@code file}, top row first as images are stored. Creates the parent directory.

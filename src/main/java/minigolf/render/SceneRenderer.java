@@ -8,21 +8,33 @@ import java.util.List;
 
 import static org.lwjgl.opengl.GL11.*;
 import static org.lwjgl.opengl.GL13.GL_MULTISAMPLE;
+import static org.lwjgl.opengl.GL30.*;
 
 /**
  * Draws a course: sky, terrain, objects, then water (translucent, last). Owns the passes; needs a
  * current GL context from construction to {@link #close()}.
  */
 public final class SceneRenderer implements AutoCloseable {
+    /** Shadow map texels per side: about 5 mm per texel on a 10 m course. */
+    public static final int SHADOW_MAP_SIZE = 2048;
+
     private final SkyPass sky;
     private final TerrainPass terrain;
     private final ObjectsPass objects;
     private final WaterPass water;
     private final List<RenderPass> passes;
     private final FrameContext frame = new FrameContext(FrameContext.Sun.afternoon());
+    private final FrameContext mirrorFrame = new FrameContext(FrameContext.Sun.afternoon());
+    private final FrameContext refractionFrame = new FrameContext(FrameContext.Sun.afternoon());
     private final FrameContext minimapFrame = new FrameContext(FrameContext.Sun.afternoon());
     private final Course course;
     private float lastTime;
+    private boolean waterReflections = true;
+    private final ShaderProgram depthShader;
+    private final ShadowMap shadowMap;
+    private boolean shadows = true;
+    /** The water's render targets' size relative to the viewport (0.5: a quarter of the pixels). */
+    private float waterTargetScale = 0.5f;
 
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode) {
         this.course = course;
@@ -42,6 +54,19 @@ public final class SceneRenderer implements AutoCloseable {
         terrain = t;
         objects = o;
         passes = List.of(sky, terrain, objects, water);
+        ShaderProgram depth = null;
+        try {
+            depth = ShaderProgram.load("shadow");
+            double minZ = Math.min(0, t.minHeight()) - 0.5, maxZ = Math.max(0, t.maxHeight()) + ObjectsPass.FLAG_HEIGHT + 0.1;
+            shadowMap = new ShadowMap(course.bounds(), minZ, maxZ, frame.sun.direction(), SHADOW_MAP_SIZE);
+        } catch (RuntimeException e) {
+            if (depth != null) depth.close();
+            for (RenderPass p : passes) p.close();
+            throw e;
+        }
+        depthShader = depth;
+        frame.shadowMap = shadowMap;
+        minimapFrame.shadowMap = shadowMap;
     }
 
     public TerrainPass terrainPass() {
@@ -104,8 +129,46 @@ public final class SceneRenderer implements AutoCloseable {
         glViewport(0, 0, framebufferWidth, framebufferHeight);
     }
 
+    /** Whether the water shows the mirrored scene and the refracted bed (on by default); off: flat colours, cheaper. */
+    public void setWaterReflections(boolean on) {
+        waterReflections = on;
+    }
+
+    /** Whether the sun casts shadows (on by default). */
+    public void setShadows(boolean on) {
+        shadows = on;
+    }
+
+    public boolean shadows() {
+        return shadows;
+    }
+
+    public boolean waterReflections() {
+        return waterReflections;
+    }
+
+    /** The resolution of the water's reflection and refraction images relative to the viewport, 0.1 to 1 (default 0.5). */
+    public void setWaterTargetScale(float scale) {
+        waterTargetScale = Math.max(0.1f, Math.min(1f, scale));
+    }
+
     /** Renders one frame into the currently bound framebuffer, whose size is width x height pixels. */
     public void render(OrbitCamera camera, int width, int height, float time) {
+        lastTime = time;
+        frame.update(camera, width, height, time);
+        int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        frame.shadowsOn = shadows;
+        minimapFrame.shadowsOn = false; // a map reads better without shadows
+        if (shadows) {
+            renderShadowMap();
+            glBindFramebuffer(GL_FRAMEBUFFER, target);
+        }
+        boolean targets = water.hasWater() && waterReflections;
+        if (targets) {
+            renderWaterTargets(width, height);
+            glBindFramebuffer(GL_FRAMEBUFFER, target);
+        }
+        water.useTargets(targets);
         glViewport(0, 0, width, height);
         glClearColor(0.62f, 0.78f, 0.93f, 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -113,13 +176,60 @@ public final class SceneRenderer implements AutoCloseable {
         glDepthFunc(GL_LEQUAL);
         glDisable(GL_CULL_FACE);
         glEnable(GL_MULTISAMPLE);
-        lastTime = time;
-        frame.update(camera, width, height, time);
         for (RenderPass pass : passes) pass.render(frame);
+    }
+
+    /** The sun's view of the casters (terrain, pole, flag, balls) into the shadow map. */
+    private void renderShadowMap() {
+        shadowMap.begin();
+        depthShader.use();
+        depthShader.set("uLightViewProjection", shadowMap.lightViewProjection());
+        terrain.drawDepth(depthShader);
+        objects.drawShadowCasters(depthShader);
+        shadowMap.end();
+    }
+
+    /**
+     * Fills the water's targets: the scene above z = 0 seen in the mirror (sky, terrain, objects)
+     * and the terrain below z = 0 from the real camera. The clip planes reach a little past the
+     * surface so that ripples never reveal a gap at the waterline.
+     */
+    private void renderWaterTargets(int width, int height) {
+        int w = Math.max(1, Math.round(width * waterTargetScale)), h = Math.max(1, Math.round(height * waterTargetScale));
+        RenderTarget reflection = water.reflection(), refraction = water.refraction();
+        reflection.ensureSize(w, h);
+        refraction.ensureSize(w, h);
+        glDisable(GL_MULTISAMPLE);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_CLIP_DISTANCE0);
+
+        reflection.bind();
+        glClearColor(0.62f, 0.78f, 0.93f, 1f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        mirrorFrame.mirrorOf(frame, w, h);
+        mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
+        sky.render(mirrorFrame);
+        terrain.render(mirrorFrame);
+        objects.render(mirrorFrame);
+
+        refraction.bind();
+        glClearColor(0.30f, 0.27f, 0.18f, 1f); // lake-bed mud where nothing was drawn
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        refractionFrame.copyOf(frame, w, h);
+        refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
+        terrain.render(refractionFrame);
+        objects.render(refractionFrame);
+
+        glDisable(GL_CLIP_DISTANCE0);
+        glEnable(GL_MULTISAMPLE);
     }
 
     @Override
     public void close() {
+        shadowMap.close();
+        depthShader.close();
         for (int i = passes.size() - 1; i >= 0; i--) passes.get(i).close();
     }
 }

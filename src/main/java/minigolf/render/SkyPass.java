@@ -3,7 +3,7 @@ package minigolf.render;
 import static org.lwjgl.opengl.GL11.*;
 import static org.lwjgl.opengl.GL30.*;
 
-/** A gradient sky with a soft sun glow: one full-screen triangle, no depth writes. Drawn first. */
+/** The procedural sky dome (gradient, sun, drifting clouds; see sky.frag): one full-screen triangle, no depth writes. Drawn first. */
 public final class SkyPass implements RenderPass {
     private final ShaderProgram shader = ShaderProgram.load("sky");
     private final int emptyVao = glGenVertexArrays();
@@ -15,6 +15,7 @@ public final class SkyPass implements RenderPass {
         shader.use();
         shader.set("uInverseViewProjection", frame.inverseViewProjection);
         shader.set("uSunDirection", frame.sun.direction());
+        shader.set("uTime", frame.time);
         glBindVertexArray(emptyVao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);

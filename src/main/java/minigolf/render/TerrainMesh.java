@@ -3,6 +3,7 @@ package minigolf.render;
 import minigolf.course.Bounds;
 import minigolf.course.Course;
 import minigolf.course.Zone;
+import minigolf.physics.FrictionField;
 import minigolf.terrain.Terrain;
 
 import java.util.List;
@@ -19,6 +20,8 @@ public final class TerrainMesh {
     public static final int MAX_QUADS = 256;
     /** Zones at least this rough are drawn as sand. */
     public static final double SAND_FRICTION = 0.2;
+    /** Kinetic friction up to this is drawn as plain grass. */
+    public static final double GRASS_FRICTION = 0.12;
 
     /** How the surface is coloured. */
     public enum ColorMode {
@@ -80,13 +83,15 @@ public final class TerrainMesh {
         float[] v = new float[(cols * rows + skirtVertices) * 9];
         int[] idx = new int[nx * ny * 6 + 2 * 6 * (nx + ny)];
         float[] rgb = new float[3];
+        // Friction as physics sees it: zones, else the grid's per-node values, else the course's.
+        FrictionField friction = new FrictionField(course.physics(), course.zones(), course.terrain());
         int p = 0;
         for (int j = 0; j < rows; j++) {
             for (int i = 0; i < cols; i++) {
                 int k = j * cols + i;
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 double len = Math.sqrt(gx[k] * gx[k] + gy[k] * gy[k] + 1);
-                surfaceColor(mode, course.zones(), x, y, h[k], minH, maxH, b, rgb);
+                surfaceColor(mode, friction.kinetic(x, y), x, y, h[k], minH, maxH, b, rgb);
                 p = put(v, p, x, y, h[k], -gx[k] / len, -gy[k] / len, 1 / len, rgb);
             }
         }
@@ -150,6 +155,20 @@ public final class TerrainMesh {
     /** The colour of the surface at (x, y) with height h, for a terrain spanning [minH, maxH]. */
     public static void surfaceColor(ColorMode mode, List<Zone> zones, double x, double y, double h,
                                     double minH, double maxH, Bounds b, float[] out) {
+        Zone zone = null;
+        for (Zone z : zones) {
+            if (z.shape().contains(x, y)) zone = z; // later zones win
+        }
+        surfaceColor(mode, zone != null ? zone.kineticFriction() : 0, x, y, h, minH, maxH, b, out);
+    }
+
+    /**
+     * The colour at (x, y) where the kinetic friction is {@code kineticFriction}: grass up to
+     * {@link #GRASS_FRICTION}, sand from {@link #SAND_FRICTION}, blended in between (so a grid's
+     * bilinear friction patch shows as sand with a soft edge).
+     */
+    public static void surfaceColor(ColorMode mode, double kineticFriction, double x, double y, double h,
+                                    double minH, double maxH, Bounds b, float[] out) {
         if (mode == ColorMode.HEIGHT_MAP) {
             heightMapColor(h, minH, maxH, out);
             return;
@@ -160,21 +179,19 @@ public final class TerrainMesh {
             set(out, lerp(0.42, 0.24, t), lerp(0.37, 0.20, t), lerp(0.24, 0.12, t));
             return;
         }
-        Zone zone = null;
-        for (Zone z : zones) {
-            if (z.shape().contains(x, y)) zone = z; // later zones win
-        }
         // Mowing stripes across x, 0.5 m wide, as on a real green.
         double stripe = Math.floorMod((long) Math.floor((x - b.minX()) / 0.5), 2) == 0 ? 1.0 : 0.92;
-        if (zone != null && zone.kineticFriction() >= SAND_FRICTION) {
-            double grain = 0.97 + 0.03 * Math.sin(x * 41.0) * Math.sin(y * 37.0);
+        double sand = Math.min(1, Math.max(0, (kineticFriction - GRASS_FRICTION) / (SAND_FRICTION - GRASS_FRICTION)));
+        double grain = 0.97 + 0.03 * Math.sin(x * 41.0) * Math.sin(y * 37.0);
+        if (sand >= 1) {
             set(out, 0.87 * grain, 0.78 * grain, 0.53 * grain);
             return;
         }
         double range = maxH - Math.max(minH, 0);
         double t = range > 1e-6 ? (h - Math.max(minH, 0)) / range : 0.5;
         t = Math.min(1, Math.max(0, t));
-        set(out, lerp(0.13, 0.50, t) * stripe, lerp(0.38, 0.76, t) * stripe, lerp(0.11, 0.28, t) * stripe);
+        double gr = lerp(0.13, 0.50, t) * stripe, gg = lerp(0.38, 0.76, t) * stripe, gb = lerp(0.11, 0.28, t) * stripe;
+        set(out, lerp(gr, 0.87 * grain, sand), lerp(gg, 0.78 * grain, sand), lerp(gb, 0.53 * grain, sand));
     }
 
     private static final float[][] HEIGHT_STOPS = {

@@ -43,10 +43,17 @@ public final class TerrainPass implements RenderPass {
         return maxHeight;
     }
 
+    /** Draws the surface into the shadow map with the depth-only shader. */
+    void drawDepth(ShaderProgram depthShader) {
+        depthShader.set("uModel", new org.joml.Matrix4f());
+        mesh.draw();
+    }
+
     @Override
     public void render(FrameContext frame) {
         shader.use();
         shader.set("uViewProjection", frame.viewProjection);
+        shader.set("uClipPlane", frame.clipPlane);
         Lighting.apply(shader, frame);
         shader.set("uShininess", 24f);
         shader.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);

@@ -7,29 +7,45 @@ import minigolf.terrain.Terrain;
 import static org.lwjgl.opengl.GL11.*;
 
 /**
- * Still water: a flat translucent plane at z = 0 over the course bounds, drawn after the opaque
- * passes with blending, depth-tested (dry land above 0 hides it) but not writing depth. Each vertex
- * carries the water depth there (max(0, -h)) so that deep water is darker and more opaque and the
- * shoreline fades out; a Fresnel term mixes in the sky at grazing angles. Nothing is drawn on a
- * course with no point under water.
+ * Still water at z = 0 over the course bounds, drawn after the opaque passes, depth-tested (dry land
+ * above 0 hides it) but not writing depth. Each vertex carries the water depth there (max(0, -h)).
+ * The shader mixes two render targets owned here, the scene mirrored in z = 0 ({@link #reflection()})
+ * and the bed under the surface ({@link #refraction()}), which {@link SceneRenderer} fills first, with
+ * an animated du/dv ripple map, Fresnel and depth tint (see water.frag). Nothing is drawn, and no
+ * target is allocated, on a course with no point under water.
  */
 public final class WaterPass implements RenderPass {
     public static final int MAX_QUADS = 160;
+    /** How far the ripples shift the reflected and refracted images, in screen units. */
+    public static final float DISTORTION = 0.012f;
 
     private final ShaderProgram shader;
     private final Mesh mesh;
+    private final Texture dudv;
+    private final RenderTarget reflection = new RenderTarget();
+    private final RenderTarget refraction = new RenderTarget();
+    private boolean targetsReady;
 
     public WaterPass(Course course, Terrain terrain) {
         MeshData data = buildPlane(course.bounds(), terrain);
         if (data == null) {
             shader = null;
             mesh = null;
+            dudv = null;
         } else {
             shader = ShaderProgram.load("water");
-            mesh = new Mesh(data);
+            Mesh m = null;
+            try {
+                m = new Mesh(data);
+                dudv = Texture.load("water-dudv.png", true);
+            } catch (RuntimeException e) {
+                if (m != null) m.close();
+                shader.close();
+                throw e;
+            }
+            mesh = m;
         }
     }
-
     /** The z = 0 grid with a depth per vertex (layout {3, 1}); null when the terrain never dips below 0. */
     static MeshData buildPlane(Bounds b, Terrain terrain) {
         double spacing = Math.max(TerrainMesh.MIN_SPACING, Math.max(b.width(), b.depth()) / MAX_QUADS);
@@ -71,9 +87,25 @@ public final class WaterPass implements RenderPass {
         return mesh != null;
     }
 
+    public RenderTarget reflection() {
+        return reflection;
+    }
+
+    public RenderTarget refraction() {
+        return refraction;
+    }
+
+    /** Whether the next {@link #render} samples the targets (set by the renderer after it filled them). */
+    void useTargets(boolean ready) {
+        targetsReady = ready;
+    }
+
     /** The water without reflections (the minimap). */
     void renderSimple(FrameContext frame) {
+        boolean saved = targetsReady;
+        targetsReady = false;
         render(frame);
+        targetsReady = saved;
     }
 
     @Override
@@ -86,7 +118,18 @@ public final class WaterPass implements RenderPass {
         shader.set("uViewProjection", frame.viewProjection);
         Lighting.apply(shader, frame);
         shader.set("uTime", frame.time);
+        shader.set("uUseTargets", targetsReady ? 1 : 0);
+        shader.set("uDistortion", DISTORTION);
+        shader.set("uReflection", 0);
+        shader.set("uRefraction", 1);
+        shader.set("uDudv", 2);
+        if (targetsReady) {
+            reflection.bindColour(0);
+            refraction.bindColour(1);
+        }
+        dudv.bind(2);
         mesh.draw();
+        org.lwjgl.opengl.GL13.glActiveTexture(org.lwjgl.opengl.GL13.GL_TEXTURE0);
         glDepthMask(true);
         glDisable(GL_BLEND);
     }
@@ -95,5 +138,8 @@ public final class WaterPass implements RenderPass {
     public void close() {
         if (mesh != null) mesh.close();
         if (shader != null) shader.close();
+        if (dudv != null) dudv.close();
+        reflection.close();
+        refraction.close();
     }
 }

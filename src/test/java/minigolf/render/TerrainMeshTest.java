@@ -84,6 +84,30 @@ class TerrainMeshTest {
         assertEquals(m.data().triangleCount(), 200 * 200 * 2 + 4 * 200 * 2);
     }
 
+    @Test
+    void gridFrictionIsDrawnSandWhereRoughAndGrassWhereSmooth() throws Exception {
+        minigolf.physics.World w = minigolf.physics.World.load(
+                java.nio.file.Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses/grid-hills.json"));
+        TerrainMesh m = TerrainMesh.build(w.course(), w.terrain(), TerrainMesh.ColorMode.GREEN);
+        int sandy = 0, roughest = -1, smoothest = -1;
+        double most = -1, least = Double.MAX_VALUE;
+        for (int v = 0; v < m.columns() * m.rows(); v++) {
+            double x = m.data().get(v, POS, 0), y = m.data().get(v, POS, 1);
+            if (m.data().get(v, POS, 2) < 0) continue;
+            double mu = w.friction().kinetic(x, y);
+            if (mu > most) { most = mu; roughest = v; }
+            if (mu < least) { least = mu; smoothest = v; }
+            float r = m.data().get(v, COLOR, 0), g = m.data().get(v, COLOR, 1), b = m.data().get(v, COLOR, 2);
+            if (mu >= TerrainMesh.SAND_FRICTION) {
+                sandy++;
+                assertTrue(r > g && g > b && r > 0.8, "not sand where mu_k = " + mu + ": " + r + "," + g + "," + b);
+            }
+        }
+        assertTrue(most >= 0.45 && sandy > 50, "the sandy patch is missing: max mu_k " + most + ", " + sandy + " vertices");
+        assertTrue(m.data().get(smoothest, COLOR, 1) > 1.5 * m.data().get(smoothest, COLOR, 0), "smooth ground is not green");
+        assertTrue(m.data().get(roughest, COLOR, 0) > m.data().get(roughest, COLOR, 1), "roughest ground is not sand");
+    }
+
     private static float[] color(Course c, double x, double y) {
         float[] out = new float[3];
         TerrainMesh.surfaceColor(TerrainMesh.ColorMode.GREEN, c.zones(), x, y, TestCourses.LAKE.height(x, y),

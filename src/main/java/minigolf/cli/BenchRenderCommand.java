@@ -1,0 +1,85 @@
+package minigolf.cli;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import minigolf.physics.World;
+import minigolf.render.Offscreen;
+import minigolf.render.OrbitCamera;
+import minigolf.render.SceneRenderer;
+import minigolf.render.TerrainMesh;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+import static org.lwjgl.opengl.GL11.*;
+
+@Command(name = "bench-render",
+        description = "Renders N frames of the full scene off-screen (after a warm-up) and prints milliseconds per frame.")
+final class BenchRenderCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
+    Path course;
+
+    @Option(names = "--frames", paramLabel = "N", description = "Frames to time (default 200).")
+    int frames = 200;
+
+    @Option(names = "--size", paramLabel = "WxH", description = "Frame size (default 1280x720).")
+    String size = "1280x720";
+
+    @Option(names = "--samples", paramLabel = "N", description = "Multisampling, as the game window's (default 4; 0 off).")
+    int samples = 4;
+
+    @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction.")
+    boolean noReflections;
+
+    @Option(names = "--no-shadows", description = "No sun shadows.")
+    boolean noShadows;
+
+    @Override
+    public Integer call() {
+        if (frames < 1) throw new UserError("--frames: must be at least 1, got " + frames);
+        if (samples < 0 || samples > 16) throw new UserError("--samples: must be 0 to 16, got " + samples);
+        ImageSize s = ImageSize.parse("--size", size);
+        World world = CourseArgument.load(course);
+        ObjectNode out = Json.object();
+        try (Offscreen off = new Offscreen(s.width(), s.height(), samples);
+             SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN)) {
+            renderer.setWaterReflections(!noReflections);
+            renderer.setShadows(!noShadows);
+            OrbitCamera camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) s.width() / s.height());
+            int side = Math.min(s.width(), s.height()) / 4;
+            int warmUp = Math.max(5, Math.min(30, frames / 5));
+            for (int i = 0; i < warmUp; i++) frame(off, renderer, camera, s, side, i);
+            off.finish();
+            long start = System.nanoTime();
+            for (int i = 0; i < frames; i++) frame(off, renderer, camera, s, side, warmUp + i);
+            off.finish();
+            double ms = (System.nanoTime() - start) / 1e6 / frames;
+            out.put("frames", frames);
+            out.put("msPerFrame", Math.round(ms * 100) / 100.0);
+            out.put("fps", Math.round(10000 / ms) / 10.0);
+            out.put("size", s.width() + "x" + s.height());
+            out.put("samples", samples);
+            out.put("shadows", !noShadows);
+            out.put("reflections", !noReflections);
+            out.put("course", world.course().name());
+            out.put("renderer", glGetString(GL_RENDERER));
+        }
+        spec.commandLine().getOut().println(Json.write(out));
+        return 0;
+    }
+
+    /** One game-like frame: the camera turns slowly, the water moves, the minimap is drawn; the GPU finishes it. */
+    private static void frame(Offscreen off, SceneRenderer renderer, OrbitCamera camera, ImageSize s, int side, int i) {
+        camera.rotate(0.002f, 0f);
+        off.bind();
+        renderer.render(camera, s.width(), s.height(), i / 60f);
+        renderer.renderMinimap(s.width() - side - side / 12, side / 12, side, s.width(), s.height());
+        off.finish();
+    }
+}
