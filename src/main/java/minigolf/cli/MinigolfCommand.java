@@ -10,7 +10,8 @@ import picocli.CommandLine.Command;
 /** The {@code minigolf} command: without a subcommand it opens the game. */
 @Command(name = "minigolf", mixinStandardHelpOptions = true, version = "minigolf 0.1.0",
         description = "3D minigolf: play, simulate shots and benchmark the physics.",
-        subcommands = {PlayCommand.class, SimulateCommand.class, BenchPhysicsCommand.class, BenchAccuracyCommand.class})
+        subcommands = {PlayCommand.class, SimulateCommand.class, BenchPhysicsCommand.class, BenchAccuracyCommand.class,
+                SolveCommand.class})
 public final class MinigolfCommand implements Callable<Integer> {
 
     @Override
