@@ -11,7 +11,7 @@ import picocli.CommandLine.Command;
 @Command(name = "minigolf", mixinStandardHelpOptions = true, version = "minigolf 0.1.0",
         description = "3D minigolf: play, simulate shots and benchmark the physics.",
         subcommands = {PlayCommand.class, SimulateCommand.class, BenchPhysicsCommand.class, BenchAccuracyCommand.class,
-                SolveCommand.class})
+                SolveCommand.class, ExperimentCommand.class})
 public final class MinigolfCommand implements Callable<Integer> {
 
     @Override
