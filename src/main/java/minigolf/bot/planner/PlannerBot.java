@@ -180,25 +180,91 @@ public final class PlannerBot extends SearchBot {
          */
         Attempt solveHole(Shot start, Eval known) {
             if (!capture) return broydenTo(start, known, holeX, holeY, 12, tolerance, true);
+            // Straight for the middle of the capture window; if that does not converge, first
+            // bring the rest point onto the hole and centre from there.
+            Shot quick = centreCapture(start);
+            if (quick != null && CountingSimulator.holed(sim.simulate(px, py, quick))) {
+                return new Attempt(quick, true, true, 0, null);
+            }
             Attempt onHole = broydenTo(start, known, holeX, holeY, 12, 0.5 * radius, false);
             if (!onHole.converged) return Attempt.failed(onHole.shot);
-            double ux = onHole.last.dirX, uy = onHole.last.dirY;
-            double half = 0.5 * world.hole().effectiveCaptureSpeed();
-            double overshoot = Math.min(half * half / (2 * deceleration(ux, uy)), 2.0);
-            for (int k = 0; k < 3; k++) {
-                double tx = holeX + ux * overshoot, ty = holeY + uy * overshoot;
-                if (!CourseGrid.isBlocked(world, tx, ty)) {
-                    Attempt centred = broydenTo(onHole.shot, null, tx, ty, 8, tolerance, false);
-                    if (centred.converged && CountingSimulator.holed(sim.simulate(px, py, centred.shot))) {
-                        return new Attempt(centred.shot, true, true, centred.miss, centred.last);
-                    }
-                }
-                overshoot *= 0.5;
+            Shot centred = centreCapture(onHole.shot);
+            if (centred != null && CountingSimulator.holed(sim.simulate(px, py, centred))) {
+                return new Attempt(centred, true, true, 0, null);
             }
             if (CountingSimulator.holed(sim.simulate(px, py, onHole.shot))) {
                 return new Attempt(onHole.shot, true, true, onHole.miss, onHole.last);
             }
             return Attempt.failed(onHole.shot);
+        }
+
+        /**
+         * From a shot that stops on the hole, the shot in the middle of the capture window: first
+         * its speed scaled (secant method) until the ball crosses the centre at half the capture
+         * speed, then its angle turned (secant) until it crosses with no lateral miss.
+         */
+        Shot centreCapture(Shot onHole) {
+            double target = 0.5 * world.hole().effectiveCaptureSpeed();
+            double speed = onHole.speed(), angle = Math.atan2(onHole.vy(), onHole.vx());
+            // Start from the energy estimate of the extra speed, then Broyden on (speed, angle).
+            speed = Math.min(Math.sqrt(speed * speed + target * target), sim.maxSpeed());
+            double[] f = scaledCrossing(speed, angle, target);
+            if (f == null) return null;
+            double ds = 0.01 * speed, da = 0.002;
+            double[] fs = scaledCrossing(speed + ds, angle, target), fa = scaledCrossing(speed, angle + da, target);
+            if (fs == null || fa == null) return null;
+            double[] j = {(fs[0] - f[0]) / ds, (fa[0] - f[0]) / da, (fs[1] - f[1]) / ds, (fa[1] - f[1]) / da};
+            for (int i = 0; i < 8; i++) {
+                if (Math.abs(f[0]) < 0.1 && Math.abs(f[1]) < 0.2) return sim.limit(Shot.polar(angle, speed));
+                double det = j[0] * j[3] - j[1] * j[2];
+                if (!(Math.abs(det) > 1e-12)) return null;
+                double stepS = -(j[3] * f[0] - j[1] * f[1]) / det;
+                double stepA = -(-j[2] * f[0] + j[0] * f[1]) / det;
+                stepS = Math.max(-0.3, Math.min(0.3, stepS));
+                stepA = Math.max(-0.05, Math.min(0.05, stepA));
+                double newSpeed = Math.min(speed + stepS, sim.maxSpeed());
+                double[] g = scaledCrossing(newSpeed, angle + stepA, target);
+                if (g == null) return null;
+                double sS = newSpeed - speed, sA = stepA, s2 = sS * sS + sA * sA;
+                if (s2 == 0) return null;
+                double yx = g[0] - f[0] - (j[0] * sS + j[1] * sA), yy = g[1] - f[1] - (j[2] * sS + j[3] * sA);
+                j[0] += yx * sS / s2;
+                j[1] += yx * sA / s2;
+                j[2] += yy * sS / s2;
+                j[3] += yy * sA / s2;
+                speed = newSpeed;
+                angle += stepA;
+                f = g;
+            }
+            return null;
+        }
+
+        /** {@link #crossing} scaled: speed error in units of the target speed, lateral miss in hole radii. */
+        double[] scaledCrossing(double speed, double angle, double target) {
+            double[] c = crossing(Shot.polar(angle, speed), target);
+            if (Double.isNaN(c[0])) return null;
+            return new double[] {c[0] / target, c[1] / radius};
+        }
+
+        /**
+         * Probes the shot: {speed at the closest approach - target, signed lateral miss there},
+         * NaN when the ball was lost before reaching the hole.
+         */
+        double[] crossing(Shot shot, double target) {
+            Approach approach = new Approach(holeX, holeY, px, py, shot);
+            ShotResult r = probe.simulate(px, py, sim.limit(shot), approach);
+            // Lost before passing the hole (its nearest point is where it was lost): no crossing.
+            boolean lost = (r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT)
+                    && Math.hypot(approach.cx - r.endX(), approach.cy - r.endY()) < 1e-6;
+            if (DEBUG) System.err.printf("  crossing v=%.4f a=%.4f: %s best=%.4f speed=%.4f lateral=%.4f%n", shot.speed(), Math.atan2(shot.vy(), shot.vx()), r.outcome(), Math.sqrt(approach.best), Math.hypot(approach.cvx, approach.cvy), approach.dirX * (approach.cy - holeY) - approach.dirY * (approach.cx - holeX));
+            if (lost) return new double[] {Double.NaN, Double.NaN};
+            double lateral = approach.dirX * (approach.cy - holeY) - approach.dirY * (approach.cx - holeX);
+            return new double[] {Math.hypot(approach.cvx, approach.cvy) - target, lateral};
+        }
+
+        /** Friction's deceleration at the hole: converts a speed error into the distance it carries the ball. */
+        double deceleration() {
+            return Math.max(gravity * world.friction().kinetic(holeX, holeY), 0.1);
         }
 
         /** Deceleration of a ball rolling through the hole in direction u (friction plus the slope). */
@@ -310,7 +376,9 @@ public final class PlannerBot extends SearchBot {
         Attempt broydenTo(Shot start, Eval known, double tx, double ty, int maxIterations, double tol, boolean holeMode) {
             Eval e = known != null ? known : evaluate(sim.limit(start), tx, ty);
             if (e.penalty) return Attempt.failed(e.shot);
-            double[] j = flatJacobian(e);
+            boolean centring = Double.isNaN(tx);
+            double[] j = centring ? measuredJacobian(e, tx, ty) : flatJacobian(e);
+            if (j == null) return Attempt.failed(e.shot);
             Attempt bestHoled = null;
             boolean refreshed = false;
             for (int iteration = 0; iteration < maxIterations; iteration++) {
@@ -338,6 +406,7 @@ public final class PlannerBot extends SearchBot {
                 for (int halving = 0; halving < 4; halving++) {
                     Shot candidate = sim.limit(Shot.of(e.shot.vx() + dvx, e.shot.vy() + dvy));
                     Eval trial = evaluate(candidate, tx, ty);
+                    if (DEBUG) System.err.printf("   trial v=(%.4f,%.4f) F=(%.4f,%.4f) %s%n", candidate.vx(), candidate.vy(), trial.fx, trial.fy, trial.result.outcome());
                     if (!trial.penalty && Math.hypot(trial.fx, trial.fy) < miss) {
                         next = trial;
                         break;
@@ -401,6 +470,16 @@ public final class PlannerBot extends SearchBot {
             boolean holed = !capture && r.outcome() == Outcome.HOLED;
             boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
             double dirX = approach != null ? approach.dirX : 0, dirY = approach != null ? approach.dirY : 0;
+            // A ball that crossed the hole would have dropped in the real world, whatever the
+            // probe did afterwards (rolled on into water or out): its crossing still counts.
+            if (Double.isNaN(tx) && approach != null && (!penalty || Math.sqrt(approach.best) < radius)) {
+                // Capture centring: lateral miss at the closest approach, plus the speed error
+                // there as the distance it would carry the ball.
+                double target = 0.5 * world.hole().effectiveCaptureSpeed();
+                double speedError = (Math.hypot(approach.cvx, approach.cvy) - target) * target / deceleration();
+                return new Eval(shot, r, false, false, r.endX(), r.endY(),
+                        approach.cx - holeX + speedError * dirX, approach.cy - holeY + speedError * dirY, dirX, dirY);
+            }
             return new Eval(shot, r, penalty, holed, r.endX(), r.endY(),
                     penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY);
         }
