@@ -18,7 +18,7 @@ class PlannerTest {
     @CsvSource({
         // course, most strokes allowed (1 = hole-in-one; two-putt: the hole is beyond a max-speed roll)
         "flat-7m, 1", "flat-20m, 1", "lake-bowl, 1", "pond, 1", "sine-cross-limit, 1",
-        "two-putt, 2", "hills-water, 4", "water-slalom, 6"})
+        "two-putt, 2", "hills-water, 3", "water-slalom, 3"})
     void holesEveryBenchCourse(String course, int maxStrokes) {
         World world = BenchCourses.load(course);
         for (long seed : new long[] {1, 2, 3}) {

@@ -40,6 +40,8 @@ public final class PlannerBot extends SearchBot {
 
     private static final boolean DEBUG = System.getenv("PLANNER_DEBUG") != null;
     private final CourseMaps maps = new CourseMaps();
+    private World planWorld;
+    private StrokePlan plan;
     private World probeSource;
     private World probeWorld;
 
@@ -65,7 +67,7 @@ public final class PlannerBot extends SearchBot {
         World world = request.world();
         CountingSimulator sim = request.simulator();
         maps.prepare(world, request.token());
-        Stroke stroke = new Stroke(sim, probeFor(sim), maps, request.ballX(), request.ballY());
+        Stroke stroke = new Stroke(sim, probeFor(sim), maps, request.ballX(), request.ballY(), () -> planFor(world, request));
 
         double reach = stroke.maxRoll();
         double pathLength = stroke.pathLength;
@@ -79,6 +81,14 @@ public final class PlannerBot extends SearchBot {
         if (layup != null) return layup;
         Shot best = sim.bestShot();
         return best != null ? best : directGuess(world, request.ballX(), request.ballY());
+    }
+
+    private StrokePlan planFor(World world, BotRequest request) {
+        if (planWorld != world) {
+            plan = new StrokePlan(world, maps.grid(), request.token());
+            planWorld = world;
+        }
+        return plan;
     }
 
     private CountingSimulator probeFor(CountingSimulator sim) {
@@ -108,8 +118,14 @@ public final class PlannerBot extends SearchBot {
         final double pathLength;
         final List<double[]> path;
         final double gravity;
+        final java.util.function.Supplier<StrokePlan> plan;
 
-        Stroke(CountingSimulator sim, CountingSimulator probe, CourseMaps maps, double px, double py) {
+        final CourseMaps maps;
+
+        Stroke(CountingSimulator sim, CountingSimulator probe, CourseMaps maps, double px, double py,
+               java.util.function.Supplier<StrokePlan> plan) {
+            this.plan = plan;
+            this.maps = maps;
             this.sim = sim;
             this.probe = probe;
             this.world = sim.world();
@@ -279,6 +295,8 @@ public final class PlannerBot extends SearchBot {
          * the aim is the farthest point of the path that a straight putt sees clear of water.
          */
         Shot layup(double reach) {
+            Shot planned = plannedLayup();
+            if (planned != null) return planned;
             if (path.isEmpty()) return progressSweep();
             int strokesLeft = Math.max(2, (int) Math.ceil(pathLength / (0.99 * reach)));
             double along = Math.min(pathLength / strokesLeft, 0.99 * reach);
@@ -291,6 +309,52 @@ public final class PlannerBot extends SearchBot {
                 along *= 0.7;
             }
             return progressSweep();
+        }
+
+        /**
+         * The lay-up the stroke plan suggests: of the cells a straight putt from the ball reaches,
+         * those with the fewest strokes left, nearest the hole and clearest of water first.
+         */
+        Shot plannedLayup() {
+            sim.phase("plan");
+            StrokePlan p = plan.get();
+            List<int[]> options = new ArrayList<>();
+            int fewest = Integer.MAX_VALUE;
+            for (int i = 0; i < p.cells(); i++) {
+                int left = p.strokes(i);
+                if (left == Integer.MAX_VALUE || left > fewest) continue;
+                if (!p.putt(px, py, p.x(i), p.y(i))) continue;
+                if (left < fewest) {
+                    fewest = left;
+                    options.clear();
+                }
+                options.add(new int[] {i});
+            }
+            if (options.isEmpty()) return null;
+            options.sort((a, b) -> Double.compare(layupCost(p, a[0]), layupCost(p, b[0])));
+            sim.phase("lay-up (" + fewest + " to go)");
+            Shot firstConverged = null;
+            for (int k = 0; k < Math.min(fewest == 1 ? 6 : 4, options.size()); k++) {
+                int i = options.get(k)[0];
+                double tx = p.x(i), ty = p.y(i);
+                double distance = Math.hypot(tx - px, ty - py);
+                Shot start = guessTo(Math.atan2(ty - py, tx - px), distance, tx, ty);
+                Attempt a = broydenTo(start, null, tx, ty, 10, 0.5 * StrokePlan.REST_CLEARANCE, false);
+                if (!a.converged) continue;
+                if (fewest > 1) return a.shot;
+                // Look ahead: keep the lay-up from which the next stroke really holes out
+                // (the straight-putt plan does not know how the hills bend the ball).
+                if (firstConverged == null) firstConverged = a.shot;
+                Stroke next = new Stroke(sim, probe, maps, a.last.restX, a.last.restY, plan);
+                double hx = holeX - next.px, hy = holeY - next.py;
+                if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) return a.shot;
+            }
+            return firstConverged;
+        }
+
+        double layupCost(StrokePlan p, int i) {
+            double d = field.at(p.x(i), p.y(i));
+            return (Double.isFinite(d) ? d : 1e6) - Math.min(grid.clearance(p.x(i), p.y(i)), 1.0);
         }
 
         /** The last resort: many directions and speeds, keep the rest point nearest the hole. */
