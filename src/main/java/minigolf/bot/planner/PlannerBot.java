@@ -17,28 +17,25 @@ import minigolf.physics.ShotResult;
 import minigolf.physics.World;
 
 /**
- * Our bot, the game's default. Per stroke:
+ * Our bot, the game's default (docs/bots.md). Per stroke:
  * <ol>
- * <li>If the hole is within a maximum-speed roll (along the water-avoiding distance): Broyden's
- *     quasi-Newton method on the rest point, from the physics guess straight at the hole. It aims
- *     the rest point at the centre of the hole (rest rule), or for the capture rule at a point past
- *     the hole such that the ball crosses the centre at half the capture speed: the middle of the
- *     success region, not its edge, so the shot survives small errors.</li>
- * <li>If that fails (water in the way, a discontinuity): a sweep of directions around the shortest
- *     path's direction and the hole's direction, each shot at the physics speed for the path's
- *     length, scored on the distance field; promising rest points start Broyden again.</li>
- * <li>No hole-in-one (too far, or none found): a lay-up to a point on the shortest path within
- *     reach, again by Broyden; failing that, the shot whose rest point is nearest the hole by the
- *     distance field.</li>
+ * <li>If the hole is within about a maximum-speed roll (along the water-avoiding distance):
+ *     Broyden's quasi-Newton method from the physics guess straight at the hole, aimed at the middle
+ *     of the success region, not its edge: the rest point on the centre (rest rule), or the ball
+ *     crossing the centre at half the capture speed with no lateral miss (capture rule; probed in
+ *     a world that differs only in the hole rule, confirmed in the real one).</li>
+ * <li>If that fails (water in the way): a sweep of directions around the shortest path's and the
+ *     hole's direction at the physics speed for the path's length, scored on the distance field;
+ *     promising rest points start Broyden again.</li>
+ * <li>No hole-in-one: a lay-up chosen by the stroke plan (fewest straight putts to the hole over
+ *     cells clear of water), with a look-ahead that the last lay-up really holes next; failing
+ *     that, a point along the shortest path; last, the shot resting nearest the hole.</li>
  * </ol>
- * For the capture rule the search simulates a probe world that differs only in the hole rule
- * (rest), so every probe yields a rest point; the chosen shot is confirmed in the real world.
  */
 public final class PlannerBot extends SearchBot {
     private static final double SWEEP_STEP = Math.toRadians(4);
     private static final double SWEEP_HALF_WIDTH = Math.toRadians(120);
 
-    private static final boolean DEBUG = System.getenv("PLANNER_DEBUG") != null;
     private final CourseMaps maps = new CourseMaps();
     private World planWorld;
     private StrokePlan plan;
@@ -272,22 +269,9 @@ public final class PlannerBot extends SearchBot {
             // Lost before passing the hole (its nearest point is where it was lost): no crossing.
             boolean lost = (r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT)
                     && Math.hypot(approach.cx - r.endX(), approach.cy - r.endY()) < 1e-6;
-            if (DEBUG) System.err.printf("  crossing v=%.4f a=%.4f: %s best=%.4f speed=%.4f lateral=%.4f%n", shot.speed(), Math.atan2(shot.vy(), shot.vx()), r.outcome(), Math.sqrt(approach.best), Math.hypot(approach.cvx, approach.cvy), approach.dirX * (approach.cy - holeY) - approach.dirY * (approach.cx - holeX));
             if (lost) return new double[] {Double.NaN, Double.NaN};
             double lateral = approach.dirX * (approach.cy - holeY) - approach.dirY * (approach.cx - holeX);
             return new double[] {Math.hypot(approach.cvx, approach.cvy) - target, lateral};
-        }
-
-        /** Friction's deceleration at the hole: converts a speed error into the distance it carries the ball. */
-        double deceleration() {
-            return Math.max(gravity * world.friction().kinetic(holeX, holeY), 0.1);
-        }
-
-        /** Deceleration of a ball rolling through the hole in direction u (friction plus the slope). */
-        double deceleration(double ux, double uy) {
-            double[] s = new double[3];
-            world.terrain().sample(holeX, holeY, s);
-            return Math.max(gravity * (world.friction().kinetic(holeX, holeY) + s[1] * ux + s[2] * uy), 0.1);
         }
 
         /**
@@ -440,14 +424,11 @@ public final class PlannerBot extends SearchBot {
         Attempt broydenTo(Shot start, Eval known, double tx, double ty, int maxIterations, double tol, boolean holeMode) {
             Eval e = known != null ? known : evaluate(sim.limit(start), tx, ty);
             if (e.penalty) return Attempt.failed(e.shot);
-            boolean centring = Double.isNaN(tx);
-            double[] j = centring ? measuredJacobian(e, tx, ty) : flatJacobian(e);
-            if (j == null) return Attempt.failed(e.shot);
+            double[] j = flatJacobian(e);
             Attempt bestHoled = null;
             boolean refreshed = false;
             for (int iteration = 0; iteration < maxIterations; iteration++) {
                 double miss = Math.hypot(e.fx, e.fy);
-                if (DEBUG) System.err.printf("it %d v=(%.4f,%.4f) rest=(%.3f,%.3f) F=(%.4f,%.4f) %s%n", iteration, e.shot.vx(), e.shot.vy(), e.restX, e.restY, e.fx, e.fy, e.result.outcome());
                 if (holeMode && e.holed && (bestHoled == null || miss < bestHoled.miss)) {
                     bestHoled = new Attempt(e.shot, true, true, miss, e);
                 }
@@ -470,7 +451,6 @@ public final class PlannerBot extends SearchBot {
                 for (int halving = 0; halving < 4; halving++) {
                     Shot candidate = sim.limit(Shot.of(e.shot.vx() + dvx, e.shot.vy() + dvy));
                     Eval trial = evaluate(candidate, tx, ty);
-                    if (DEBUG) System.err.printf("   trial v=(%.4f,%.4f) F=(%.4f,%.4f) %s%n", candidate.vx(), candidate.vy(), trial.fx, trial.fy, trial.result.outcome());
                     if (!trial.penalty && Math.hypot(trial.fx, trial.fy) < miss) {
                         next = trial;
                         break;
@@ -534,16 +514,6 @@ public final class PlannerBot extends SearchBot {
             boolean holed = !capture && r.outcome() == Outcome.HOLED;
             boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
             double dirX = approach != null ? approach.dirX : 0, dirY = approach != null ? approach.dirY : 0;
-            // A ball that crossed the hole would have dropped in the real world, whatever the
-            // probe did afterwards (rolled on into water or out): its crossing still counts.
-            if (Double.isNaN(tx) && approach != null && (!penalty || Math.sqrt(approach.best) < radius)) {
-                // Capture centring: lateral miss at the closest approach, plus the speed error
-                // there as the distance it would carry the ball.
-                double target = 0.5 * world.hole().effectiveCaptureSpeed();
-                double speedError = (Math.hypot(approach.cvx, approach.cvy) - target) * target / deceleration();
-                return new Eval(shot, r, false, false, r.endX(), r.endY(),
-                        approach.cx - holeX + speedError * dirX, approach.cy - holeY + speedError * dirY, dirX, dirY);
-            }
             return new Eval(shot, r, penalty, holed, r.endX(), r.endY(),
                     penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY);
         }
