@@ -95,4 +95,41 @@ class CountingSimulatorTest {
         double latencyMs = (stoppedAt.get() - cancelledAt) / 1e6;
         assertTrue(latencyMs < 50, "stopped " + latencyMs + " ms after the cancel");
     }
+
+    @Test
+    void thePlannerStopsWithin50MsInWhateverPhaseItIs() throws Exception {
+        // Cancelled after 0-40 ms: building its grid, distance field or stroke plan, or simulating.
+        World slalom = BenchCourses.load("water-slalom");
+        int cancelled = 0;
+        for (int delayMs : new int[] {0, 2, 5, 10, 20, 40}) {
+            CancellationToken token = new CancellationToken();
+            AtomicLong stoppedAt = new AtomicLong();
+            AtomicReference<Throwable> thrown = new AtomicReference<>();
+            CountingSimulator sim = new CountingSimulator(slalom, SimulationSettings.DEFAULT, Long.MAX_VALUE, token,
+                    BotProgress.NONE);
+            CountDownLatch started = new CountDownLatch(1);
+            Thread worker = new Thread(() -> {
+                started.countDown();
+                try {
+                    // A fresh bot each time, so it builds its maps again.
+                    new PlannerBot().nextShot(new BotRequest(sim, -4.5, 0, 0, 1));
+                } catch (Throwable t) {
+                    thrown.set(t);
+                }
+                stoppedAt.set(System.nanoTime());
+            });
+            worker.start();
+            started.await();
+            Thread.sleep(delayMs);
+            long cancelledAt = System.nanoTime();
+            token.cancel();
+            worker.join(5_000);
+            if (thrown.get() == null) continue; // it finished before the cancel: nothing to measure
+            assertSame(BotCancelledException.class, thrown.get().getClass());
+            cancelled++;
+            double latencyMs = Math.max(0, stoppedAt.get() - cancelledAt) / 1e6;
+            assertTrue(latencyMs < 50, "delay " + delayMs + " ms: stopped " + latencyMs + " ms after the cancel");
+        }
+        assertTrue(cancelled >= 3, "only " + cancelled + " runs were still going when cancelled");
+    }
 }

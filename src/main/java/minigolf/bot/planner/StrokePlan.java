@@ -61,6 +61,8 @@ final class StrokePlan {
             List<Integer> next = new ArrayList<>();
             for (int i : candidates) {
                 if (strokes[i] != Integer.MAX_VALUE) continue;
+                // Up to a few hundred line tests per cell: check for a cancel often enough for 50 ms.
+                token.throwIfCancelled();
                 for (int j : frontier) {
                     if (putt(x(i), y(i), x(j), y(j))) {
                         strokes[i] = level;
