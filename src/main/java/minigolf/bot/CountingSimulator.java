@@ -73,11 +73,12 @@ public final class CountingSimulator {
     }
 
     /**
-     * A simulator of another world (the same course with, say, a different hole rule) that shares
-     * this one's count, budget and token.
+     * A simulator of another world that shares this one's count, budget and token. With
+     * {@code candidates} its shots compete for {@link #bestShot()}: only for a world whose
+     * non-holed results are the real world's (the same course with a stricter hole rule).
      */
-    public CountingSimulator variant(World other) {
-        return new CountingSimulator(other, new Simulator(other, simulator.settings()), account, false);
+    public CountingSimulator variant(World other, boolean candidates) {
+        return new CountingSimulator(other, new Simulator(other, simulator.settings()), account, candidates);
     }
 
     public World world() {

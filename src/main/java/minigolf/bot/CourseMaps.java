@@ -1,0 +1,30 @@
+package minigolf.bot;
+
+import minigolf.bot.map.CourseGrid;
+import minigolf.bot.map.DistanceField;
+import minigolf.physics.World;
+
+/**
+ * The grid and the distance field to the hole of one world, built on first use and kept while a
+ * bot plays that world (they depend on the course only, not on the ball).
+ */
+public final class CourseMaps {
+    private World world;
+    private CourseGrid grid;
+    private DistanceField toHole;
+
+    public void prepare(World w, CancellationToken token) {
+        if (w == world) return;
+        grid = CourseGrid.of(w, token);
+        toHole = new DistanceField(grid, w.hole().position().x(), w.hole().position().y(), token);
+        world = w;
+    }
+
+    public CourseGrid grid() {
+        return grid;
+    }
+
+    public DistanceField toHole() {
+        return toHole;
+    }
+}

@@ -1,0 +1,167 @@
+package minigolf.bot.map;
+
+import minigolf.bot.CancellationToken;
+import minigolf.physics.World;
+
+/**
+ * The course as a grid of square cells, each free or blocked, for the bots' path searches and
+ * distance fields. A cell is blocked when its centre is: {@link #isBlocked(World, double, double)}
+ * is the one place that decides (water and out of bounds now; obstacles, inflated by the ball's
+ * radius, plug in there when the engine has them).
+ */
+public final class CourseGrid {
+    /** The most cells a grid is built with (finer cells on small courses, coarser on big ones). */
+    public static final int TARGET_CELLS = 40_000;
+    public static final double FINEST_CELL = 0.05;
+
+    private final World world;
+    private final double minX, minY, cell;
+    private final int cols, rows;
+    private final boolean[] blocked;
+    /** Distance from each cell centre to the nearest blocked cell centre (chamfer estimate), metres. */
+    private final double[] clearance;
+
+    private CourseGrid(World world, double cell, CancellationToken token) {
+        this.world = world;
+        this.cell = cell;
+        this.minX = world.bounds().minX();
+        this.minY = world.bounds().minY();
+        this.cols = Math.max(1, (int) Math.ceil(world.bounds().width() / cell));
+        this.rows = Math.max(1, (int) Math.ceil(world.bounds().depth() / cell));
+        this.blocked = new boolean[cols * rows];
+        for (int r = 0; r < rows; r++) {
+            token.throwIfCancelled();
+            for (int c = 0; c < cols; c++) {
+                blocked[r * cols + c] = isBlocked(world, centreX(c), centreY(r));
+            }
+        }
+        clearance = chamfer();
+    }
+
+    /** Two-pass 3-4 chamfer distance transform: distance to water or the edge of the course. */
+    private double[] chamfer() {
+        double[] d = new double[cols * rows];
+        double straight = cell, diagonal = cell * Math.sqrt(2);
+        for (int r = 0; r < rows; r++) {
+            for (int c = 0; c < cols; c++) {
+                int i = r * cols + c;
+                if (blocked[i]) { d[i] = 0; continue; }
+                // The bounds count as blocked just outside the grid.
+                double v = Math.min(Math.min(c + 0.5, cols - c - 0.5), Math.min(r + 0.5, rows - r - 0.5)) * cell;
+                if (c > 0) v = Math.min(v, d[i - 1] + straight);
+                if (r > 0) v = Math.min(v, d[i - cols] + straight);
+                if (c > 0 && r > 0) v = Math.min(v, d[i - cols - 1] + diagonal);
+                if (c < cols - 1 && r > 0) v = Math.min(v, d[i - cols + 1] + diagonal);
+                d[i] = v;
+            }
+        }
+        for (int r = rows - 1; r >= 0; r--) {
+            for (int c = cols - 1; c >= 0; c--) {
+                int i = r * cols + c;
+                double v = d[i];
+                if (c < cols - 1) v = Math.min(v, d[i + 1] + straight);
+                if (r < rows - 1) v = Math.min(v, d[i + cols] + straight);
+                if (c < cols - 1 && r < rows - 1) v = Math.min(v, d[i + cols + 1] + diagonal);
+                if (c > 0 && r < rows - 1) v = Math.min(v, d[i + cols - 1] + diagonal);
+                d[i] = v;
+            }
+        }
+        return d;
+    }
+
+    /** How far the cell at (x, y) is from water or the course's edge, in metres. */
+    public double clearance(double x, double y) {
+        return clearance[indexOf(x, y)];
+    }
+
+    public double clearance(int index) {
+        return clearance[index];
+    }
+
+    /**
+     * Whether the straight segment between two points stays on cells at least {@code margin} from
+     * water and the edge (sampled every half cell).
+     */
+    public boolean clearLine(double x0, double y0, double x1, double y1, double margin) {
+        double length = Math.hypot(x1 - x0, y1 - y0);
+        int samples = Math.max(1, (int) Math.ceil(length / (0.5 * cell)));
+        for (int k = 0; k <= samples; k++) {
+            double f = (double) k / samples;
+            int i = indexOf(x0 + f * (x1 - x0), y0 + f * (y1 - y0));
+            if (blocked[i] || clearance[i] < margin) return false;
+        }
+        return true;
+    }
+
+    /** A grid with the automatic cell size. */
+    public static CourseGrid of(World world, CancellationToken token) {
+        double area = world.bounds().width() * world.bounds().depth();
+        return new CourseGrid(world, Math.max(FINEST_CELL, Math.sqrt(area / TARGET_CELLS)), token);
+    }
+
+    public static CourseGrid of(World world, double cell, CancellationToken token) {
+        if (!(cell > 0)) throw new IllegalArgumentException("cell size must be > 0, got " + cell);
+        return new CourseGrid(world, cell, token);
+    }
+
+    /** Whether a ball at (x, y) is lost: in water or out of bounds. The single blocking test of all bots. */
+    public static boolean isBlocked(World world, double x, double y) {
+        return !world.bounds().contains(x, y) || world.terrain().height(x, y) < 0;
+    }
+
+    public World world() {
+        return world;
+    }
+
+    public int cols() {
+        return cols;
+    }
+
+    public int rows() {
+        return rows;
+    }
+
+    public double cell() {
+        return cell;
+    }
+
+    public double centreX(int c) {
+        return minX + (c + 0.5) * cell;
+    }
+
+    public double centreY(int r) {
+        return minY + (r + 0.5) * cell;
+    }
+
+    public int col(double x) {
+        return Math.max(0, Math.min(cols - 1, (int) Math.floor((x - minX) / cell)));
+    }
+
+    public int row(double y) {
+        return Math.max(0, Math.min(rows - 1, (int) Math.floor((y - minY) / cell)));
+    }
+
+    public int index(int c, int r) {
+        return r * cols + c;
+    }
+
+    public int indexOf(double x, double y) {
+        return index(col(x), row(y));
+    }
+
+    public boolean blocked(int c, int r) {
+        return c < 0 || r < 0 || c >= cols || r >= rows || blocked[r * cols + c];
+    }
+
+    public boolean blocked(int index) {
+        return blocked[index];
+    }
+
+    /**
+     * Whether a diagonal step from (c, r) by (dc, dr) is allowed: never past a blocked cell
+     * (which also forbids squeezing between two), so a path cannot cut a corner of water.
+     */
+    public boolean diagonalAllowed(int c, int r, int dc, int dr) {
+        return !blocked(c + dc, r) && !blocked(c, r + dr);
+    }
+}

@@ -1,0 +1,116 @@
+package minigolf.bot.map;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import minigolf.bot.CancellationToken;
+
+/**
+ * Shortest distance over free cells from every cell to the hole (Dijkstra, 8 neighbours, no
+ * corner cutting): how far a rest point really is from the hole when water lies between. Cells
+ * close to water cost more (up to {@code 1 + NEAR_WATER_COST} times within {@code SAFE_CLEARANCE}),
+ * so paths keep off the banks and rest points beside water score worse.
+ */
+public final class DistanceField {
+    private static final double SQRT2 = Math.sqrt(2);
+    public static final double SAFE_CLEARANCE = 0.5;
+    public static final double NEAR_WATER_COST = 3;
+
+    private final CourseGrid grid;
+    private final double[] distance;
+    private final double targetX, targetY;
+
+    public DistanceField(CourseGrid grid, double targetX, double targetY, CancellationToken token) {
+        this.grid = grid;
+        this.targetX = targetX;
+        this.targetY = targetY;
+        int n = grid.cols() * grid.rows();
+        distance = new double[n];
+        Arrays.fill(distance, Double.POSITIVE_INFINITY);
+        int start = grid.indexOf(targetX, targetY);
+        IndexHeap heap = new IndexHeap(n);
+        distance[start] = Math.hypot(grid.centreX(grid.col(targetX)) - targetX, grid.centreY(grid.row(targetY)) - targetY);
+        heap.push(start, distance[start]);
+        int settled = 0;
+        while (!heap.isEmpty()) {
+            int i = heap.pop();
+            if ((++settled & 4095) == 0) token.throwIfCancelled();
+            int c = i % grid.cols(), r = i / grid.cols();
+            for (int dr = -1; dr <= 1; dr++) {
+                for (int dc = -1; dc <= 1; dc++) {
+                    if (dc == 0 && dr == 0) continue;
+                    int nc = c + dc, nr = r + dr;
+                    if (grid.blocked(nc, nr)) continue;
+                    boolean diagonal = dc != 0 && dr != 0;
+                    if (diagonal && !grid.diagonalAllowed(c, r, dc, dr)) continue;
+                    int j = grid.index(nc, nr);
+                    double nearWater = Math.max(0, 1 - grid.clearance(j) / SAFE_CLEARANCE);
+                    double d = distance[i] + (diagonal ? SQRT2 : 1) * grid.cell() * (1 + NEAR_WATER_COST * nearWater);
+                    if (d < distance[j]) {
+                        distance[j] = d;
+                        heap.push(j, d);
+                    }
+                }
+            }
+        }
+    }
+
+    public CourseGrid grid() {
+        return grid;
+    }
+
+    /**
+     * The distance from (x, y) to the target: through the best of the nearby free cell centres,
+     * or infinity when (x, y) itself is blocked or cut off.
+     */
+    public double at(double x, double y) {
+        if (CourseGrid.isBlocked(grid.world(), x, y)) return Double.POSITIVE_INFINITY;
+        double direct = Math.hypot(x - targetX, y - targetY);
+        int c0 = grid.col(x), r0 = grid.row(y);
+        if (c0 == grid.col(targetX) && r0 == grid.row(targetY)) return direct;
+        double best = Double.POSITIVE_INFINITY;
+        for (int r = r0 - 1; r <= r0 + 1; r++) {
+            for (int c = c0 - 1; c <= c0 + 1; c++) {
+                if (grid.blocked(c, r)) continue;
+                double d = distance[grid.index(c, r)] + Math.hypot(x - grid.centreX(c), y - grid.centreY(r));
+                if (d < best) best = d;
+            }
+        }
+        return Math.max(best, direct);
+    }
+
+    /** The distance stored for a cell. */
+    public double cellDistance(int index) {
+        return distance[index];
+    }
+
+    /**
+     * The shortest path from (x, y) to the target as cell centres (first the start cell, last the
+     * target's cell), by steepest descent of the field; empty when (x, y) is cut off.
+     */
+    public List<double[]> path(double x, double y) {
+        List<double[]> points = new ArrayList<>();
+        int i = grid.indexOf(x, y);
+        if (!Double.isFinite(distance[i])) return points;
+        int goal = grid.indexOf(targetX, targetY);
+        points.add(new double[] {x, y});
+        for (int guard = 0; i != goal && guard < distance.length; guard++) {
+            int c = i % grid.cols(), r = i / grid.cols();
+            int next = i;
+            for (int dr = -1; dr <= 1; dr++) {
+                for (int dc = -1; dc <= 1; dc++) {
+                    int nc = c + dc, nr = r + dr;
+                    if ((dc == 0 && dr == 0) || grid.blocked(nc, nr)) continue;
+                    if (dc != 0 && dr != 0 && !grid.diagonalAllowed(c, r, dc, dr)) continue;
+                    int j = grid.index(nc, nr);
+                    if (distance[j] < distance[next]) next = j;
+                }
+            }
+            if (next == i) break;
+            i = next;
+            points.add(new double[] {grid.centreX(i % grid.cols()), grid.centreY(i / grid.cols())});
+        }
+        points.add(new double[] {targetX, targetY});
+        return points;
+    }
+}

@@ -1,0 +1,584 @@
+package minigolf.bot.planner;
+
+import java.util.ArrayList;
+import java.util.List;
+import minigolf.bot.BotRequest;
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.CourseMaps;
+import minigolf.bot.SearchBot;
+import minigolf.bot.Shot;
+import minigolf.bot.map.CourseGrid;
+import minigolf.bot.map.DistanceField;
+import minigolf.course.Course;
+import minigolf.course.Hole;
+import minigolf.course.HoleRule;
+import minigolf.physics.Outcome;
+import minigolf.physics.ShotResult;
+import minigolf.physics.World;
+
+/**
+ * Our bot, the game's default (docs/bots.md). Per stroke:
+ * <ol>
+ * <li>If the hole is within about a maximum-speed roll (along the water-avoiding distance):
+ *     Broyden's quasi-Newton method from the physics guess straight at the hole, aimed at the middle
+ *     of the success region, not its edge: the rest point on the centre (rest rule), or the ball
+ *     crossing the centre at half the capture speed with no lateral miss (capture rule; probed in
+ *     a world that differs only in the hole rule, confirmed in the real one).</li>
+ * <li>If that fails (water in the way): a sweep of directions around the shortest path's and the
+ *     hole's direction at the physics speed for the path's length, scored on the distance field;
+ *     promising rest points start Broyden again.</li>
+ * <li>No hole-in-one: a lay-up chosen by the stroke plan (fewest straight putts to the hole over
+ *     cells clear of water), with a look-ahead that the last lay-up really holes next; failing
+ *     that, a point along the shortest path; last, the shot resting nearest the hole.</li>
+ * </ol>
+ */
+public final class PlannerBot extends SearchBot {
+    private static final double SWEEP_STEP = Math.toRadians(4);
+    private static final double SWEEP_HALF_WIDTH = Math.toRadians(120);
+
+    private final CourseMaps maps = new CourseMaps();
+    private World planWorld;
+    private StrokePlan plan;
+    private World probeSource;
+    private World probeWorld;
+
+    @Override
+    public String name() {
+        return "planner";
+    }
+
+    @Override
+    protected CountingSimulator.ShotScore scoreFor(BotRequest request) {
+        maps.prepare(request.world(), request.token());
+        DistanceField field = maps.toHole();
+        return r -> {
+            if (r.outcome() == Outcome.HOLED) return -1;
+            if (r.outcome().isPenalty()) return 1e9;
+            double d = field.at(r.endX(), r.endY());
+            return Double.isFinite(d) ? d : 1e8;
+        };
+    }
+
+    @Override
+    protected Shot search(BotRequest request) {
+        World world = request.world();
+        CountingSimulator sim = request.simulator();
+        maps.prepare(world, request.token());
+        Stroke stroke = new Stroke(sim, probeFor(sim), maps, request.ballX(), request.ballY(), () -> planFor(world, request));
+
+        double reach = stroke.maxRoll();
+        double pathLength = stroke.pathLength;
+        if (Double.isFinite(pathLength) && pathLength <= 1.3 * reach) {
+            sim.phase("direct");
+            Shot shot = stroke.holeInOne();
+            if (shot != null) return shot;
+        }
+        sim.phase("lay-up");
+        Shot layup = stroke.layup(reach);
+        if (layup != null) return layup;
+        Shot best = sim.bestShot();
+        return best != null ? best : directGuess(world, request.ballX(), request.ballY());
+    }
+
+    private StrokePlan planFor(World world, BotRequest request) {
+        if (planWorld != world) {
+            plan = new StrokePlan(world, maps.grid(), request.token());
+            planWorld = world;
+        }
+        return plan;
+    }
+
+    private CountingSimulator probeFor(CountingSimulator sim) {
+        World world = sim.world();
+        if (world.hole().rule() == HoleRule.REST) return sim;
+        if (probeSource != world) {
+            Course c = world.course();
+            Hole h = c.hole();
+            Course probe = new Course(c.format(), c.name(), c.terrain(), c.bounds(), c.physics(), c.start(),
+                    new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones());
+            probeWorld = new World(probe, world.terrain());
+            probeSource = world;
+        }
+        return sim.variant(probeWorld, true);
+    }
+
+    /** The search for one stroke from one ball position. */
+    private static final class Stroke {
+        final CountingSimulator sim;
+        final CountingSimulator probe;
+        final World world;
+        final CourseGrid grid;
+        final DistanceField field;
+        final double px, py, holeX, holeY, radius;
+        final boolean capture;
+        final double tolerance;
+        final double pathLength;
+        final List<double[]> path;
+        final double gravity;
+        final java.util.function.Supplier<StrokePlan> plan;
+
+        final CourseMaps maps;
+
+        Stroke(CountingSimulator sim, CountingSimulator probe, CourseMaps maps, double px, double py,
+               java.util.function.Supplier<StrokePlan> plan) {
+            this.plan = plan;
+            this.maps = maps;
+            this.sim = sim;
+            this.probe = probe;
+            this.world = sim.world();
+            this.grid = maps.grid();
+            this.field = maps.toHole();
+            this.px = px;
+            this.py = py;
+            this.holeX = world.hole().position().x();
+            this.holeY = world.hole().position().y();
+            this.radius = world.hole().radius();
+            this.capture = world.hole().rule() == HoleRule.CAPTURE;
+            this.tolerance = Math.min(0.2 * radius, 0.03);
+            this.gravity = world.physics().gravity();
+            double d = field.at(px, py);
+            this.pathLength = Double.isFinite(d) ? d : Math.hypot(holeX - px, holeY - py);
+            this.path = field.path(px, py);
+        }
+
+        /** How far a maximum-speed shot rolls on a plane through the ball and the hole. */
+        double maxRoll() {
+            double v = world.physics().maxSpeed();
+            double mu = Math.max(world.friction().kinetic(px, py), 1e-3);
+            double drop = world.terrain().height(px, py) - world.terrain().height(holeX, holeY);
+            return v * v / (2 * gravity * mu) + drop / mu;
+        }
+
+        Shot holeInOne() {
+            Shot direct = guess(Math.atan2(holeY - py, holeX - px), Math.hypot(holeX - px, holeY - py));
+            Attempt first = solveHole(direct, null);
+            if (first.holed) return first.shot;
+            sim.phase("sweep");
+            List<Candidate> candidates = new ArrayList<>();
+            boolean reachTested = false;
+            for (double angle : sweepAngles()) {
+                Shot shot = guess(angle, pathLength);
+                Eval e = evaluate(shot, holeX, holeY);
+                if (e.holed) return shot;
+                if (e.penalty) continue;
+                double d = field.at(e.restX, e.restY);
+                if (!Double.isFinite(d)) continue;
+                if (!reachTested && shot.speed() >= sim.maxSpeed() * 0.999) {
+                    // A maximum-speed shot along the way that stops far short: the hole is out of reach.
+                    reachTested = true;
+                    if (d > 0.3 * pathLength && field.at(px, py) - d < 0.8 * pathLength) return null;
+                }
+                candidates.add(new Candidate(shot, d));
+                if (d < Math.max(0.6, 0.25 * pathLength)) {
+                    sim.phase("refine");
+                    Attempt a = solveHole(shot, e);
+                    if (a.holed) return a.shot;
+                    sim.phase("sweep");
+                }
+            }
+            candidates.sort((x, y) -> Double.compare(x.distance, y.distance));
+            sim.phase("refine");
+            for (int i = 0; i < Math.min(3, candidates.size()); i++) {
+                Attempt a = solveHole(candidates.get(i).shot, null);
+                if (a.holed) return a.shot;
+            }
+            return null;
+        }
+
+        /**
+         * A shot that holes out, aimed at the middle of the success region. Rest rule: the rest
+         * point on the hole's centre. Capture rule: first the rest point onto the hole, then moved
+         * on past it along the line of arrival so the ball crosses the centre at half the capture
+         * speed; confirmed in the real world.
+         */
+        Attempt solveHole(Shot start, Eval known) {
+            if (!capture) return broydenTo(start, known, holeX, holeY, 12, tolerance, true);
+            // Straight for the middle of the capture window; if that does not converge, first
+            // bring the rest point onto the hole and centre from there.
+            Shot quick = centreCapture(start);
+            if (quick != null && CountingSimulator.holed(sim.simulate(px, py, quick))) {
+                return new Attempt(quick, true, true, 0, null);
+            }
+            Attempt onHole = broydenTo(start, known, holeX, holeY, 12, 0.5 * radius, false);
+            if (!onHole.converged) return Attempt.failed(onHole.shot);
+            Shot centred = centreCapture(onHole.shot);
+            if (centred != null && CountingSimulator.holed(sim.simulate(px, py, centred))) {
+                return new Attempt(centred, true, true, 0, null);
+            }
+            if (CountingSimulator.holed(sim.simulate(px, py, onHole.shot))) {
+                return new Attempt(onHole.shot, true, true, onHole.miss, onHole.last);
+            }
+            return Attempt.failed(onHole.shot);
+        }
+
+        /**
+         * From a shot that stops on the hole, the shot in the middle of the capture window: first
+         * its speed scaled (secant method) until the ball crosses the centre at half the capture
+         * speed, then its angle turned (secant) until it crosses with no lateral miss.
+         */
+        Shot centreCapture(Shot onHole) {
+            double target = 0.5 * world.hole().effectiveCaptureSpeed();
+            double speed = onHole.speed(), angle = Math.atan2(onHole.vy(), onHole.vx());
+            // Start from the energy estimate of the extra speed, then Broyden on (speed, angle).
+            speed = Math.min(Math.sqrt(speed * speed + target * target), sim.maxSpeed());
+            double[] f = scaledCrossing(speed, angle, target);
+            if (f == null) return null;
+            double ds = 0.01 * speed, da = 0.002;
+            double[] fs = scaledCrossing(speed + ds, angle, target), fa = scaledCrossing(speed, angle + da, target);
+            if (fs == null || fa == null) return null;
+            double[] j = {(fs[0] - f[0]) / ds, (fa[0] - f[0]) / da, (fs[1] - f[1]) / ds, (fa[1] - f[1]) / da};
+            for (int i = 0; i < 8; i++) {
+                if (Math.abs(f[0]) < 0.1 && Math.abs(f[1]) < 0.2) return sim.limit(Shot.polar(angle, speed));
+                double det = j[0] * j[3] - j[1] * j[2];
+                if (!(Math.abs(det) > 1e-12)) return null;
+                double stepS = -(j[3] * f[0] - j[1] * f[1]) / det;
+                double stepA = -(-j[2] * f[0] + j[0] * f[1]) / det;
+                stepS = Math.max(-0.3, Math.min(0.3, stepS));
+                stepA = Math.max(-0.05, Math.min(0.05, stepA));
+                double newSpeed = Math.min(speed + stepS, sim.maxSpeed());
+                double[] g = scaledCrossing(newSpeed, angle + stepA, target);
+                if (g == null) return null;
+                double sS = newSpeed - speed, sA = stepA, s2 = sS * sS + sA * sA;
+                if (s2 == 0) return null;
+                double yx = g[0] - f[0] - (j[0] * sS + j[1] * sA), yy = g[1] - f[1] - (j[2] * sS + j[3] * sA);
+                j[0] += yx * sS / s2;
+                j[1] += yx * sA / s2;
+                j[2] += yy * sS / s2;
+                j[3] += yy * sA / s2;
+                speed = newSpeed;
+                angle += stepA;
+                f = g;
+            }
+            return null;
+        }
+
+        /** {@link #crossing} scaled: speed error in units of the target speed, lateral miss in hole radii. */
+        double[] scaledCrossing(double speed, double angle, double target) {
+            double[] c = crossing(Shot.polar(angle, speed), target);
+            if (Double.isNaN(c[0])) return null;
+            return new double[] {c[0] / target, c[1] / radius};
+        }
+
+        /**
+         * Probes the shot: {speed at the closest approach - target, signed lateral miss there},
+         * NaN when the ball was lost before reaching the hole.
+         */
+        double[] crossing(Shot shot, double target) {
+            Approach approach = new Approach(holeX, holeY, px, py, shot);
+            ShotResult r = probe.simulate(px, py, sim.limit(shot), approach);
+            // Lost before passing the hole (its nearest point is where it was lost): no crossing.
+            boolean lost = (r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT)
+                    && Math.hypot(approach.cx - r.endX(), approach.cy - r.endY()) < 1e-6;
+            if (lost) return new double[] {Double.NaN, Double.NaN};
+            double lateral = approach.dirX * (approach.cy - holeY) - approach.dirY * (approach.cx - holeX);
+            return new double[] {Math.hypot(approach.cvx, approach.cvy) - target, lateral};
+        }
+
+        /**
+         * No hole-in-one: rest on the shortest path. The strokes still needed are split evenly, and
+         * the aim is the farthest point of the path that a straight putt sees clear of water.
+         */
+        Shot layup(double reach) {
+            Shot planned = plannedLayup();
+            if (planned != null) return planned;
+            if (path.isEmpty()) return progressSweep();
+            int strokesLeft = Math.max(2, (int) Math.ceil(pathLength / (0.99 * reach)));
+            double along = Math.min(pathLength / strokesLeft, 0.99 * reach);
+            for (int attempt = 0; attempt < 4; attempt++) {
+                double[] w = visiblePointAlongPath(along);
+                double distance = Math.hypot(w[0] - px, w[1] - py);
+                Shot start = guessTo(Math.atan2(w[1] - py, w[0] - px), distance, w[0], w[1]);
+                Attempt a = broydenTo(start, null, w[0], w[1], 10, Math.max(0.1, 0.05 * distance), false);
+                if (a.converged) return a.shot;
+                along *= 0.7;
+            }
+            return progressSweep();
+        }
+
+        /**
+         * The lay-up the stroke plan suggests: of the cells a straight putt from the ball reaches,
+         * those with the fewest strokes left, nearest the hole and clearest of water first.
+         */
+        Shot plannedLayup() {
+            sim.phase("plan");
+            StrokePlan p = plan.get();
+            List<int[]> options = new ArrayList<>();
+            int fewest = Integer.MAX_VALUE;
+            for (int i = 0; i < p.cells(); i++) {
+                int left = p.strokes(i);
+                if (left == Integer.MAX_VALUE || left > fewest) continue;
+                if (!p.putt(px, py, p.x(i), p.y(i))) continue;
+                if (left < fewest) {
+                    fewest = left;
+                    options.clear();
+                }
+                options.add(new int[] {i});
+            }
+            if (options.isEmpty()) return null;
+            options.sort((a, b) -> Double.compare(layupCost(p, a[0]), layupCost(p, b[0])));
+            sim.phase("lay-up (" + fewest + " to go)");
+            Shot firstConverged = null;
+            for (int k = 0; k < Math.min(fewest == 1 ? 6 : 4, options.size()); k++) {
+                int i = options.get(k)[0];
+                double tx = p.x(i), ty = p.y(i);
+                double distance = Math.hypot(tx - px, ty - py);
+                Shot start = guessTo(Math.atan2(ty - py, tx - px), distance, tx, ty);
+                Attempt a = broydenTo(start, null, tx, ty, 10, 0.5 * StrokePlan.REST_CLEARANCE, false);
+                if (!a.converged) continue;
+                if (fewest > 1) return a.shot;
+                // Look ahead: keep the lay-up from which the next stroke really holes out
+                // (the straight-putt plan does not know how the hills bend the ball).
+                if (firstConverged == null) firstConverged = a.shot;
+                Stroke next = new Stroke(sim, probe, maps, a.last.restX, a.last.restY, plan);
+                double hx = holeX - next.px, hy = holeY - next.py;
+                if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) return a.shot;
+            }
+            return firstConverged;
+        }
+
+        double layupCost(StrokePlan p, int i) {
+            double d = field.at(p.x(i), p.y(i));
+            return (Double.isFinite(d) ? d : 1e6) - Math.min(grid.clearance(p.x(i), p.y(i)), 1.0);
+        }
+
+        /** The last resort: many directions and speeds, keep the rest point nearest the hole. */
+        Shot progressSweep() {
+            sim.phase("progress");
+            double reach = Math.max(0.5, maxRoll());
+            for (double angle : sweepAngles()) {
+                for (double fraction : new double[] {0.35, 0.7, 1.0}) {
+                    evaluate(guessLength(angle, fraction * Math.min(reach, pathLength + 1)), holeX, holeY);
+                }
+            }
+            return sim.bestShot();
+        }
+
+        double[] pointAlongPath(double distance) {
+            double travelled = 0;
+            for (int i = 1; i < path.size(); i++) {
+                double[] a = path.get(i - 1), b = path.get(i);
+                double seg = Math.hypot(b[0] - a[0], b[1] - a[1]);
+                if (travelled + seg >= distance && seg > 0) {
+                    double f = (distance - travelled) / seg;
+                    return new double[] {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])};
+                }
+                travelled += seg;
+            }
+            return path.get(path.size() - 1);
+        }
+
+        /** The point {@code distance} along the path, pulled back until the ball sees it clearly. */
+        double[] visiblePointAlongPath(double distance) {
+            for (double d = distance; d > 0.2; d -= 0.1) {
+                double[] p = pointAlongPath(d);
+                if (grid.clearLine(px, py, p[0], p[1], 0.1)) return p;
+            }
+            return pointAlongPath(Math.min(distance, 0.2));
+        }
+
+        /** Directions to sweep, nearest the path's first leg and the hole's direction first. */
+        List<Double> sweepAngles() {
+            double[] lead = pointAlongPath(Math.min(1.5, 0.5 * pathLength));
+            double pathAngle = Math.atan2(lead[1] - py, lead[0] - px);
+            double holeAngle = Math.atan2(holeY - py, holeX - px);
+            List<Double> angles = new ArrayList<>();
+            for (int k = 0; k * SWEEP_STEP <= SWEEP_HALF_WIDTH; k++) {
+                for (double base : new double[] {pathAngle, holeAngle}) {
+                    for (int sign : new int[] {1, -1}) {
+                        if (k == 0 && sign < 0) continue;
+                        double a = base + sign * k * SWEEP_STEP;
+                        boolean duplicate = false;
+                        for (double b : angles) {
+                            if (Math.abs(Math.IEEEremainder(a - b, 2 * Math.PI)) < 0.4 * SWEEP_STEP) duplicate = true;
+                        }
+                        if (!duplicate) angles.add(a);
+                    }
+                }
+            }
+            return angles;
+        }
+
+        /** The shot in direction angle whose speed would stop the ball {@code length} along, ending at the hole's height. */
+        Shot guess(double angle, double length) {
+            return guessTo(angle, length, holeX, holeY);
+        }
+
+        Shot guessLength(double angle, double length) {
+            return guessTo(angle, length, px, py);
+        }
+
+        /** v^2 / 2 = g (mu_k L + h_target - h_ball): energy on a path of length L. */
+        Shot guessTo(double angle, double length, double tx, double ty) {
+            double mu = world.friction().kinetic(px, py);
+            double rise = world.terrain().height(tx, ty) - world.terrain().height(px, py);
+            double speedSquared = 2 * gravity * (mu * length + rise);
+            double speed = Math.sqrt(Math.max(speedSquared, 0.04));
+            return sim.limit(Shot.polar(angle, speed));
+        }
+
+        /**
+         * Broyden's method on F(v) = rest point - (tx, ty), from {@code start} (whose evaluation
+         * may be {@code known}). With {@code holeMode} (rest rule) a holed shot nearest the centre
+         * is kept and returned once the miss is within {@code tol}.
+         */
+        Attempt broydenTo(Shot start, Eval known, double tx, double ty, int maxIterations, double tol, boolean holeMode) {
+            Eval e = known != null ? known : evaluate(sim.limit(start), tx, ty);
+            if (e.penalty) return Attempt.failed(e.shot);
+            double[] j = flatJacobian(e);
+            Attempt bestHoled = null;
+            boolean refreshed = false;
+            for (int iteration = 0; iteration < maxIterations; iteration++) {
+                double miss = Math.hypot(e.fx, e.fy);
+                if (holeMode && e.holed && (bestHoled == null || miss < bestHoled.miss)) {
+                    bestHoled = new Attempt(e.shot, true, true, miss, e);
+                }
+                if (miss < tol) {
+                    if (!holeMode) return new Attempt(e.shot, false, true, miss, e);
+                    if (e.holed) return bestHoled;
+                    break;
+                }
+                double det = j[0] * j[3] - j[1] * j[2];
+                if (!(Math.abs(det) > 1e-12)) break;
+                double dvx = -(j[3] * e.fx - j[1] * e.fy) / det;
+                double dvy = -(-j[2] * e.fx + j[0] * e.fy) / det;
+                double stepCap = 0.5 * e.shot.speed() + 0.2;
+                double stepLength = Math.hypot(dvx, dvy);
+                if (stepLength > stepCap) {
+                    dvx *= stepCap / stepLength;
+                    dvy *= stepCap / stepLength;
+                }
+                Eval next = null;
+                for (int halving = 0; halving < 4; halving++) {
+                    Shot candidate = sim.limit(Shot.of(e.shot.vx() + dvx, e.shot.vy() + dvy));
+                    Eval trial = evaluate(candidate, tx, ty);
+                    if (!trial.penalty && Math.hypot(trial.fx, trial.fy) < miss) {
+                        next = trial;
+                        break;
+                    }
+                    if (holeMode && trial.holed && bestHoled == null) {
+                        bestHoled = new Attempt(trial.shot, true, true, Math.hypot(trial.fx, trial.fy), trial);
+                    }
+                    dvx *= 0.5;
+                    dvy *= 0.5;
+                }
+                if (next == null) {
+                    if (refreshed) break;
+                    // Broyden's model went stale: measure the Jacobian once by forward differences.
+                    j = measuredJacobian(e, tx, ty);
+                    if (j == null) break;
+                    refreshed = true;
+                    continue;
+                }
+                double sx = next.shot.vx() - e.shot.vx(), sy = next.shot.vy() - e.shot.vy();
+                double s2 = sx * sx + sy * sy;
+                if (s2 > 0) {
+                    double yx = next.fx - e.fx - (j[0] * sx + j[1] * sy);
+                    double yy = next.fy - e.fy - (j[2] * sx + j[3] * sy);
+                    j[0] += yx * sx / s2;
+                    j[1] += yx * sy / s2;
+                    j[2] += yy * sx / s2;
+                    j[3] += yy * sy / s2;
+                }
+                e = next;
+            }
+            if (bestHoled != null) return bestHoled;
+            return Attempt.failed(e.shot);
+        }
+
+        /** d(rest point)/d(v) on flat ground: 2L/s along the shot, L/s across it. */
+        double[] flatJacobian(Eval e) {
+            double s = Math.max(e.shot.speed(), 1e-3);
+            double ux = e.shot.vx() / s, uy = e.shot.vy() / s;
+            double length = Math.max(Math.hypot(e.restX - px, e.restY - py), 0.1);
+            double along = 2 * length / s, across = length / s;
+            return new double[] {
+                along * ux * ux + across * uy * uy, (along - across) * ux * uy,
+                (along - across) * ux * uy, along * uy * uy + across * ux * ux
+            };
+        }
+
+        double[] measuredJacobian(Eval e, double tx, double ty) {
+            double h = 1e-3 * Math.max(1, e.shot.speed());
+            Eval ex = evaluate(sim.limit(Shot.of(e.shot.vx() - h, e.shot.vy())), tx, ty);
+            Eval ey = evaluate(sim.limit(Shot.of(e.shot.vx(), e.shot.vy() - h)), tx, ty);
+            if (ex.penalty || ey.penalty) return null;
+            double hx = e.shot.vx() - ex.shot.vx(), hy = e.shot.vy() - ey.shot.vy();
+            if (hx == 0 || hy == 0) return null;
+            return new double[] {(e.fx - ex.fx) / hx, (e.fx - ey.fx) / hy, (e.fy - ex.fy) / hx, (e.fy - ey.fy) / hy};
+        }
+
+        /** Simulates in the probe world; F = rest point - target. */
+        Eval evaluate(Shot shot, double tx, double ty) {
+            Approach approach = capture ? new Approach(holeX, holeY, px, py, shot) : null;
+            ShotResult r = probe.simulate(px, py, shot, approach);
+            boolean holed = !capture && r.outcome() == Outcome.HOLED;
+            boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
+            double dirX = approach != null ? approach.dirX : 0, dirY = approach != null ? approach.dirY : 0;
+            return new Eval(shot, r, penalty, holed, r.endX(), r.endY(),
+                    penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY);
+        }
+    }
+
+    /** Where the ball's path passes nearest the hole, and its velocity there (steps interpolated). */
+    private static final class Approach implements minigolf.physics.TrajectoryListener {
+        final double hx, hy;
+        double lastX, lastY, lastVx, lastVy;
+        double best, cx, cy, cvx, cvy, dirX, dirY;
+
+        Approach(double hx, double hy, double x0, double y0, Shot shot) {
+            this.hx = hx;
+            this.hy = hy;
+            lastX = x0;
+            lastY = y0;
+            lastVx = shot.vx();
+            lastVy = shot.vy();
+            cx = x0;
+            cy = y0;
+            cvx = lastVx;
+            cvy = lastVy;
+            best = (x0 - hx) * (x0 - hx) + (y0 - hy) * (y0 - hy);
+            double s = Math.max(Math.hypot(lastVx, lastVy), 1e-12);
+            dirX = lastVx / s;
+            dirY = lastVy / s;
+        }
+
+        @Override
+        public void onStep(double t, double x, double y, double vx, double vy) {
+            double dx = x - lastX, dy = y - lastY;
+            double len2 = dx * dx + dy * dy;
+            double f = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((hx - lastX) * dx + (hy - lastY) * dy) / len2));
+            double qx = lastX + f * dx, qy = lastY + f * dy;
+            double d = (qx - hx) * (qx - hx) + (qy - hy) * (qy - hy);
+            if (d < best) {
+                best = d;
+                cx = qx;
+                cy = qy;
+                cvx = lastVx + f * (vx - lastVx);
+                cvy = lastVy + f * (vy - lastVy);
+                if (len2 > 0) {
+                    double l = Math.sqrt(len2);
+                    dirX = dx / l;
+                    dirY = dy / l;
+                }
+            }
+            lastX = x;
+            lastY = y;
+            lastVx = vx;
+            lastVy = vy;
+        }
+    }
+
+    /** One probe: the shot, its rest point, the miss F and the direction the ball passed the hole in. */
+    private record Eval(Shot shot, ShotResult result, boolean penalty, boolean holed, double restX, double restY,
+                        double fx, double fy, double dirX, double dirY) {
+    }
+
+    private record Candidate(Shot shot, double distance) {
+    }
+
+    private record Attempt(Shot shot, boolean holed, boolean converged, double miss, Eval last) {
+        static Attempt failed(Shot shot) {
+            return new Attempt(shot, false, false, Double.POSITIVE_INFINITY, null);
+        }
+    }
+}

@@ -1,0 +1,109 @@
+package minigolf.bot.planner;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.map.CourseGrid;
+import minigolf.physics.World;
+
+/**
+ * How many strokes the hole is from each resting place, in the straight-putt approximation: a
+ * coarse grid of cells well clear of water; a cell is one stroke from the hole when a straight
+ * putt from it sees the hole clear of water and the hole is within a maximum-speed roll, k + 1
+ * strokes when it so sees a cell k strokes away. Built once per course (breadth first from the
+ * hole); the planner lays up to the reachable cell with the fewest strokes left.
+ */
+final class StrokePlan {
+    /** At most about this many cells (coarser cells on bigger courses). */
+    private static final int TARGET_CELLS = 700;
+    /** A resting place this far from water at least (robust to a small error of the lay-up). */
+    static final double REST_CLEARANCE = 0.3;
+    /** A putt's line keeps this far from water. */
+    static final double LINE_CLEARANCE = 0.1;
+
+    private final World world;
+    private final CourseGrid fine;
+    private final double cell;
+    private final int cols, rows;
+    private final double minX, minY;
+    private final int[] strokes;
+    private final double holeX, holeY;
+
+    StrokePlan(World world, CourseGrid fine, CancellationToken token) {
+        this.world = world;
+        this.fine = fine;
+        double area = world.bounds().width() * world.bounds().depth();
+        this.cell = Math.max(0.25, Math.sqrt(area / TARGET_CELLS));
+        this.minX = world.bounds().minX();
+        this.minY = world.bounds().minY();
+        this.cols = Math.max(1, (int) Math.floor(world.bounds().width() / cell));
+        this.rows = Math.max(1, (int) Math.floor(world.bounds().depth() / cell));
+        this.holeX = world.hole().position().x();
+        this.holeY = world.hole().position().y();
+        strokes = new int[cols * rows];
+        Arrays.fill(strokes, Integer.MAX_VALUE);
+        List<Integer> frontier = new ArrayList<>();
+        List<Integer> candidates = new ArrayList<>();
+        for (int i = 0; i < strokes.length; i++) {
+            if (fine.clearance(x(i), y(i)) >= REST_CLEARANCE && !CourseGrid.isBlocked(world, x(i), y(i))) {
+                candidates.add(i);
+            }
+        }
+        for (int i : candidates) {
+            if (putt(x(i), y(i), holeX, holeY)) {
+                strokes[i] = 1;
+                frontier.add(i);
+            }
+        }
+        for (int level = 2; !frontier.isEmpty() && level < 50; level++) {
+            token.throwIfCancelled();
+            List<Integer> next = new ArrayList<>();
+            for (int i : candidates) {
+                if (strokes[i] != Integer.MAX_VALUE) continue;
+                // Up to a few hundred line tests per cell: check for a cancel often enough for 50 ms.
+                token.throwIfCancelled();
+                for (int j : frontier) {
+                    if (putt(x(i), y(i), x(j), y(j))) {
+                        strokes[i] = level;
+                        next.add(i);
+                        break;
+                    }
+                }
+            }
+            frontier = next;
+        }
+    }
+
+    double x(int i) {
+        return minX + (i % cols + 0.5) * cell;
+    }
+
+    double y(int i) {
+        return minY + (i / cols + 0.5) * cell;
+    }
+
+    int cells() {
+        return strokes.length;
+    }
+
+    /** Strokes from cell i to the hole, or Integer.MAX_VALUE when no plan reaches it. */
+    int strokes(int i) {
+        return strokes[i];
+    }
+
+    /** Whether a straight putt from (x0, y0) can stop at (x1, y1): a clear line within reach. */
+    boolean putt(double x0, double y0, double x1, double y1) {
+        double distance = Math.hypot(x1 - x0, y1 - y0);
+        if (distance > 0.99 * reach(x0, y0, x1, y1)) return false;
+        return fine.clearLine(x0, y0, x1, y1, LINE_CLEARANCE);
+    }
+
+    /** How far a maximum-speed shot rolls from (x0, y0) towards a point at the height of (x1, y1). */
+    double reach(double x0, double y0, double x1, double y1) {
+        double v = world.physics().maxSpeed();
+        double mu = Math.max(world.friction().kinetic(x0, y0), 1e-3);
+        double drop = world.terrain().height(x0, y0) - world.terrain().height(x1, y1);
+        return v * v / (2 * world.physics().gravity() * mu) + drop / mu;
+    }
+}

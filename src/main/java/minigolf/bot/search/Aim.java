@@ -1,0 +1,50 @@
+package minigolf.bot.search;
+
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.Shot;
+import minigolf.physics.ShotResult;
+
+/**
+ * The simplest aiming: shoot at the target with the physics speed guess, then correct the angle
+ * by the angular miss and the speed by sqrt(wanted / travelled distance), a few times. Used by the
+ * path bots to reach waypoints.
+ */
+public final class Aim {
+    private Aim() {
+    }
+
+    /** The shot chosen and whether it reached the target. */
+    public record Aimed(Shot shot, boolean reached) {
+    }
+
+    /** The shot that reached the target, or the one that came nearest (lost balls last). */
+    public static Aimed at(CountingSimulator sim, Target target, int maxShots) {
+        double g = sim.world().physics().gravity();
+        double mu = sim.world().friction().kinetic(target.ballX(), target.ballY());
+        double rise = sim.world().terrain().height(target.x(), target.y())
+                - sim.world().terrain().height(target.ballX(), target.ballY());
+        double angle = target.angle();
+        double speed = Math.sqrt(Math.max(2 * g * (mu * target.distance() + rise), 0.01));
+        Shot best = null;
+        double bestCost = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < maxShots; i++) {
+            Shot shot = sim.limit(Shot.polar(angle, speed));
+            ShotResult r = target.simulate(sim, shot);
+            if (target.reached(r)) return new Aimed(shot, true);
+            double cost = target.cost(r);
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = shot;
+            }
+            if (r.outcome().isPenalty()) {
+                speed *= 0.85;
+                continue;
+            }
+            double ex = r.endX() - target.ballX(), ey = r.endY() - target.ballY();
+            double travelled = Math.hypot(ex, ey);
+            if (travelled > 1e-3) angle += Math.IEEEremainder(target.angle() - Math.atan2(ey, ex), 2 * Math.PI);
+            speed = Math.min(speed * Math.sqrt(target.distance() / Math.max(travelled, 0.05)), sim.maxSpeed());
+        }
+        return best == null ? null : new Aimed(best, false);
+    }
+}

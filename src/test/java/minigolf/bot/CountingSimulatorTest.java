@@ -1,0 +1,135 @@
+package minigolf.bot;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import minigolf.bot.planner.PlannerBot;
+import minigolf.bot.search.GridBot;
+import minigolf.physics.ShotResult;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+/** Counting, budget, best-shot memory and cancellation. */
+class CountingSimulatorTest {
+    private final World flat = BenchCourses.load("flat-7m");
+
+    @Test
+    void countsEverySimulationIncludingVariantsAndEnforcesTheBudget() {
+        CountingSimulator sim = new CountingSimulator(flat, SimulationSettings.DEFAULT, 5, CancellationToken.none(),
+                BotProgress.NONE);
+        CountingSimulator variant = sim.variant(flat, false);
+        sim.simulate(-3.5, 0, Shot.of(1, 0));
+        variant.simulate(-3.5, 0, Shot.of(1, 0));
+        sim.simulate(-3.5, 0, Shot.of(2, 0));
+        assertEquals(3, sim.count());
+        assertEquals(3, variant.count());
+        assertEquals(2, sim.remaining());
+        sim.simulate(-3.5, 0, Shot.of(2, 0));
+        sim.simulate(-3.5, 0, Shot.of(2, 0));
+        assertThrows(BudgetExhaustedException.class, () -> sim.simulate(-3.5, 0, Shot.of(1, 0)));
+        assertEquals(5, sim.count());
+    }
+
+    @Test
+    void limitsShotsToTheMaximumSpeedAndRejectsChips() {
+        CountingSimulator sim = new CountingSimulator(BenchCourses.load("flat-20m"));
+        // 10 m/s on a 5 m/s course is played at 5 m/s: it stops after 25 / (2 mu g) = 21.237 m.
+        ShotResult r = sim.simulate(-11.5, 0, Shot.of(10, 0));
+        assertEquals(-11.5 + 25 / (2 * 0.06 * 9.81), r.endX(), 1e-3);
+        assertThrows(IllegalArgumentException.class, () -> sim.simulate(0, 0, new Shot(1, 0, 1)));
+    }
+
+    @Test
+    void remembersTheBestShotFromTheBallOnly() {
+        CountingSimulator sim = new CountingSimulator(flat);
+        sim.beginShot(-3.5, 0, r -> Math.abs(r.endX() - 3.5));
+        assertNull(sim.bestShot());
+        Shot near = Shot.of(3.6, 0), far = Shot.of(2, 0);
+        sim.simulate(-3.5, 0, far);
+        sim.simulate(-3.5, 0, near);
+        sim.simulate(-3.4, 0, Shot.of(3.7, 0)); // another position: not a candidate
+        assertEquals(near, sim.bestShot());
+    }
+
+    @Test
+    void aCancelledTokenStopsABotBeforeItSimulates() {
+        CancellationToken token = new CancellationToken();
+        token.cancel();
+        CountingSimulator sim = new CountingSimulator(flat, SimulationSettings.DEFAULT, 1000, token, BotProgress.NONE);
+        assertThrows(BotCancelledException.class, () -> new PlannerBot().nextShot(new BotRequest(sim, -3.5, 0, 0, 1)));
+        assertEquals(0, sim.count());
+    }
+
+    @Test
+    void cancellingFromAnotherThreadStopsTheBotWithin50Ms() throws Exception {
+        // The grid bot on the lake scans thousands of shots: cancel it mid-search.
+        World lake = BenchCourses.load("lake-bowl");
+        CancellationToken token = new CancellationToken();
+        CountDownLatch started = new CountDownLatch(1);
+        AtomicLong stoppedAt = new AtomicLong();
+        AtomicReference<Throwable> thrown = new AtomicReference<>();
+        BotProgress progress = (simulations, budget, phase) -> started.countDown();
+        CountingSimulator sim = new CountingSimulator(lake, SimulationSettings.DEFAULT, Long.MAX_VALUE, token, progress);
+        Thread worker = new Thread(() -> {
+            try {
+                new GridBot().nextShot(new BotRequest(sim, -3, 0, 0, 1));
+            } catch (Throwable t) {
+                thrown.set(t);
+            }
+            stoppedAt.set(System.nanoTime());
+        });
+        worker.start();
+        started.await();
+        Thread.sleep(20);
+        long cancelledAt = System.nanoTime();
+        token.cancel();
+        worker.join(5_000);
+        assertSame(BotCancelledException.class, thrown.get() == null ? null : thrown.get().getClass());
+        double latencyMs = (stoppedAt.get() - cancelledAt) / 1e6;
+        assertTrue(latencyMs < 50, "stopped " + latencyMs + " ms after the cancel");
+    }
+
+    @Test
+    void thePlannerStopsWithin50MsInWhateverPhaseItIs() throws Exception {
+        // Cancelled after 0-40 ms: building its grid, distance field or stroke plan, or simulating.
+        World slalom = BenchCourses.load("water-slalom");
+        int cancelled = 0;
+        for (int delayMs : new int[] {0, 2, 5, 10, 20, 40}) {
+            CancellationToken token = new CancellationToken();
+            AtomicLong stoppedAt = new AtomicLong();
+            AtomicReference<Throwable> thrown = new AtomicReference<>();
+            CountingSimulator sim = new CountingSimulator(slalom, SimulationSettings.DEFAULT, Long.MAX_VALUE, token,
+                    BotProgress.NONE);
+            CountDownLatch started = new CountDownLatch(1);
+            Thread worker = new Thread(() -> {
+                started.countDown();
+                try {
+                    // A fresh bot each time, so it builds its maps again.
+                    new PlannerBot().nextShot(new BotRequest(sim, -4.5, 0, 0, 1));
+                } catch (Throwable t) {
+                    thrown.set(t);
+                }
+                stoppedAt.set(System.nanoTime());
+            });
+            worker.start();
+            started.await();
+            Thread.sleep(delayMs);
+            long cancelledAt = System.nanoTime();
+            token.cancel();
+            worker.join(5_000);
+            if (thrown.get() == null) continue; // it finished before the cancel: nothing to measure
+            assertSame(BotCancelledException.class, thrown.get().getClass());
+            cancelled++;
+            double latencyMs = Math.max(0, stoppedAt.get() - cancelledAt) / 1e6;
+            assertTrue(latencyMs < 50, "delay " + delayMs + " ms: stopped " + latencyMs + " ms after the cancel");
+        }
+        assertTrue(cancelled >= 3, "only " + cancelled + " runs were still going when cancelled");
+    }
+}

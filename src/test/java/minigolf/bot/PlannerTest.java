@@ -1,0 +1,55 @@
+package minigolf.bot;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import minigolf.bot.planner.PlannerBot;
+import minigolf.physics.Outcome;
+import minigolf.physics.ShotResult;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.Simulator;
+import minigolf.physics.World;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** The planner on every bench course: holed, and in the fewest strokes where we know them. */
+class PlannerTest {
+    @ParameterizedTest
+    @CsvSource({
+        // course, most strokes allowed (1 = hole-in-one; two-putt: the hole is beyond a max-speed roll)
+        "flat-7m, 1", "flat-20m, 1", "lake-bowl, 1", "pond, 1", "sine-cross-limit, 1",
+        "two-putt, 2", "hills-water, 3", "water-slalom, 3"})
+    void holesEveryBenchCourse(String course, int maxStrokes) {
+        World world = BenchCourses.load(course);
+        for (long seed : new long[] {1, 2, 3}) {
+            Playthrough.Result r = Playthrough.play(new PlannerBot(), world, SimulationSettings.DEFAULT, 10, 100_000,
+                    seed, CancellationToken.none(), BotProgress.NONE);
+            assertTrue(r.holed(), course + " not holed: " + r);
+            assertTrue(r.strokes() <= maxStrokes, course + ": " + r.strokes() + " strokes");
+            assertTrue(r.shots().stream().noneMatch(s -> s.result().outcome().isPenalty()), course + ": a penalty");
+        }
+    }
+
+    @org.junit.jupiter.api.Test
+    void twoPuttNeedsTwoStrokesAndTakesTwo() {
+        World world = BenchCourses.load("two-putt");
+        double v = world.physics().maxSpeed(), mu = world.physics().kineticFriction();
+        double maxRoll = v * v / (2 * mu * world.physics().gravity());
+        double distance = world.course().start().distanceTo(world.hole().position());
+        assertTrue(maxRoll < distance, "no hole-in-one: " + maxRoll + " m < " + distance + " m");
+        Playthrough.Result r = Playthrough.play(new PlannerBot(), world, SimulationSettings.DEFAULT, 10, 100_000, 1,
+                CancellationToken.none(), BotProgress.NONE);
+        assertEquals(2, r.strokes());
+    }
+
+    @org.junit.jupiter.api.Test
+    void aimsAtTheCentreOfTheHoleNotItsEdge() {
+        // Rest rule: the planner's hole-in-one on flat ground rests within 3 cm of the centre.
+        World world = BenchCourses.load("flat-7m");
+        CountingSimulator sim = new CountingSimulator(world);
+        Shot shot = new PlannerBot().nextShot(new BotRequest(sim, -3.5, 0, 0, 1));
+        ShotResult r = new Simulator(world, SimulationSettings.DEFAULT).simulate(-3.5, 0, shot.vx(), shot.vy());
+        assertEquals(Outcome.HOLED, r.outcome());
+        assertTrue(Math.hypot(r.endX() - 3.5, r.endY()) < 0.03, "rest point " + r.endX() + ", " + r.endY());
+    }
+}

@@ -1,0 +1,112 @@
+package minigolf.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** solve and experiment as a user meets them. */
+class BotCommandsTest {
+    private static final Path BENCH = Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses/bench");
+
+    private record Run(int code, String out, String err) {
+    }
+
+    private static Run run(String... args) {
+        StringWriter out = new StringWriter(), err = new StringWriter();
+        int code = MinigolfCommand.execute(args, new PrintWriter(out), new PrintWriter(err));
+        return new Run(code, out.toString(), err.toString());
+    }
+
+    private static List<String> fields(JsonNode node) {
+        List<String> names = new ArrayList<>();
+        node.fieldNames().forEachRemaining(names::add);
+        return names;
+    }
+
+    @Test
+    void solvePrintsTheGameAsJson() throws IOException {
+        Run r = run("solve", BENCH.resolve("two-putt.json").toString(), "--bot", "planner", "--seed", "4");
+        assertEquals(0, r.code(), r.err());
+        JsonNode json = new ObjectMapper().readTree(r.out());
+        assertEquals(List.of("bot", "course", "holed", "strokes", "simulations", "wallMs", "shots"), fields(json));
+        assertEquals("planner", json.get("bot").asText());
+        assertEquals("Two-putt (no hole-in-one)", json.get("course").asText());
+        assertTrue(json.get("holed").asBoolean());
+        assertEquals(2, json.get("strokes").asInt());
+        JsonNode shots = json.get("shots");
+        assertEquals(2, shots.size());
+        assertEquals(List.of("velocity", "outcome", "end", "simulations"), fields(shots.get(0)));
+        assertEquals("stopped", shots.get(0).get("outcome").asText());
+        assertEquals("holed", shots.get(1).get("outcome").asText());
+        long sum = shots.get(0).get("simulations").asLong() + shots.get(1).get("simulations").asLong();
+        assertEquals(json.get("simulations").asLong(), sum);
+    }
+
+    @Test
+    void solveWithoutASolutionInTheBudgetReportsNotHoled() throws IOException {
+        Run r = run("solve", BENCH.resolve("lake-bowl.json").toString(), "--bot", "newton", "--budget", "3",
+                "--max-strokes", "2");
+        assertEquals(0, r.code(), r.err());
+        JsonNode json = new ObjectMapper().readTree(r.out());
+        assertFalse(json.get("holed").asBoolean());
+        assertTrue(json.get("simulations").asLong() <= 3);
+    }
+
+    @Test
+    void badArgumentsGiveOneLineAndExitCodeTwo(@TempDir Path dir) throws IOException {
+        Run unknown = run("solve", BENCH.resolve("flat-7m.json").toString(), "--bot", "oracle");
+        assertEquals(2, unknown.code());
+        assertEquals("minigolf: --bot: unknown bot 'oracle'; known: grid, local, newton, swarm, astar, astar-newton, "
+                + "astar-swarm, graph, planner", unknown.err().trim());
+        Path broken = dir.resolve("broken.json");
+        Files.writeString(broken, "{\"format\": 1}");
+        Run bad = run("solve", broken.toString());
+        assertEquals(2, bad.code());
+        assertTrue(bad.err().startsWith("minigolf: " + broken), bad.err());
+        assertEquals(1, bad.err().trim().lines().count());
+        Run noSuite = run("experiment", "--suite", dir.resolve("missing").toString(), "--out", dir.toString());
+        assertEquals(2, noSuite.code());
+        assertEquals("minigolf: --suite: " + dir.resolve("missing") + ": no such folder", noSuite.err().trim());
+        Run badBots = run("experiment", "--suite", BENCH.toString(), "--bots", "planner,nope", "--out", dir.toString());
+        assertEquals(2, badBots.code());
+        assertTrue(badBots.err().startsWith("minigolf: --bots: unknown bot 'nope'"), badBots.err());
+    }
+
+    @Test
+    void experimentWritesResultsSummaryAndCharts(@TempDir Path dir) throws IOException {
+        Path suite = Files.createDirectories(dir.resolve("suite"));
+        Files.copy(BENCH.resolve("flat-7m.json"), suite.resolve("flat-7m.json"));
+        Files.copy(BENCH.resolve("two-putt.json"), suite.resolve("two-putt.json"));
+        Path out = dir.resolve("out");
+        Run r = run("experiment", "--suite", suite.toString(), "--bots", "planner,astar", "--seeds", "2",
+                "--out", out.toString(), "--threads", "2");
+        assertEquals(0, r.code(), r.err());
+        List<String> csv = Files.readAllLines(out.resolve("results.csv"));
+        assertEquals("course,bot,seed,holed,strokes,hole_in_one,simulations,wall_ms", csv.get(0));
+        assertEquals(1 + 2 * 2 * 2, csv.size());
+        assertTrue(csv.get(1).startsWith("flat-7m,planner,1,true,1,true,"), csv.get(1));
+        String summary = Files.readString(out.resolve("summary.md"));
+        String line = summary.lines().filter(l -> l.startsWith("| two-putt | planner |")).findFirst().orElseThrow();
+        // Holed every time, never in one (it cannot be), in 2 strokes.
+        assertTrue(line.startsWith("| two-putt | planner | 100% | 0% |") && line.endsWith("| 2 |"), line);
+        for (String png : new String[] {"simulations.png", "success.png"}) {
+            byte[] bytes = Files.readAllBytes(out.resolve(png));
+            assertTrue(bytes.length > 1000);
+            assertEquals((byte) 0x89, bytes[0]);
+            assertEquals('P', bytes[1]);
+        }
+        assertTrue(r.err().contains("8/8 runs"), r.err());
+    }
+}
