@@ -156,13 +156,10 @@ public final class CountingSimulator {
     public ShotResult simulate(double x, double y, Shot shot, TrajectoryListener listener) {
         account.token.throwIfCancelled();
         if (account.used >= account.budget) throw new BudgetExhaustedException(account.budget);
-        if (!shot.isPutt()) {
-            throw new IllegalArgumentException("shots with a vertical component need the flight physics");
-        }
         Shot limited = limit(shot);
         account.used++;
         if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
-        ShotResult result = simulator.simulate(x, y, limited.vx(), limited.vy(), listener);
+        ShotResult result = play(simulator, x, y, limited, listener);
         if (primary && account.score != null && x == account.fromX && y == account.fromY) {
             double s = account.score.score(result);
             if (s < account.bestScore) {
@@ -172,6 +169,16 @@ public final class CountingSimulator {
             }
         }
         return result;
+    }
+
+    /**
+     * Runs a shot on the engine: a putt with the rolling call, a shot with a vertical component
+     * (a chip) with the 3-component one, exactly as the game plays them.
+     */
+    public static ShotResult play(Simulator simulator, double x, double y, Shot shot, TrajectoryListener listener) {
+        if (shot.isPutt()) return simulator.simulate(x, y, shot.vx(), shot.vy(), listener);
+        return listener == null ? simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz())
+                : simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz(), listener);
     }
 
     /** The shot as it is played: never faster than the course allows. */

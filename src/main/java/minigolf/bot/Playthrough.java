@@ -46,7 +46,7 @@ public final class Playthrough {
             long before = counting.count();
             Shot shot = bot.nextShot(new BotRequest(counting, x, y, strokes, seeds.nextLong()));
             shot = counting.limit(shot);
-            ShotResult result = game.simulate(x, y, shot.vx(), shot.vy());
+            ShotResult result = CountingSimulator.play(game, x, y, shot, null);
             played.add(new PlayedShot(shot, result, counting.count() - before));
             strokes++;
             if (result.outcome() == Outcome.HOLED) {

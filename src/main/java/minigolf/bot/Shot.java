@@ -2,7 +2,8 @@ package minigolf.bot;
 
 /**
  * A shot: the ball's initial velocity in m/s. {@code vz} is 0 for a putt along the ground; a
- * positive {@code vz} (a chip) needs the flight physics and is rejected until the engine has it.
+ * positive {@code vz} is a chip (the engine's 3-component shot, docs/physics.md). The speed limit
+ * applies to the whole vector.
  */
 public record Shot(double vx, double vy, double vz) {
     public Shot {

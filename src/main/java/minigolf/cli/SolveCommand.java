@@ -60,7 +60,8 @@ final class SolveCommand implements Callable<Integer> {
         ArrayNode shots = out.putArray("shots");
         for (Playthrough.PlayedShot s : result.shots()) {
             ObjectNode shot = shots.addObject();
-            shot.set("velocity", Json.array(s.shot().vx(), s.shot().vy()));
+            shot.set("velocity", s.shot().isPutt() ? Json.array(s.shot().vx(), s.shot().vy())
+                    : Json.array(s.shot().vx(), s.shot().vy(), s.shot().vz()));
             shot.put("outcome", s.result().outcome().jsonName());
             shot.set("end", Json.array(s.result().endX(), s.result().endY()));
             shot.put("simulations", s.simulations());

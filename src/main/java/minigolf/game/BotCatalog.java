@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.function.Supplier;
 import minigolf.bot.Bot;
 import minigolf.bot.BotRequest;
+import minigolf.bot.Bots;
 import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.SearchBot;
@@ -17,8 +18,9 @@ import minigolf.physics.World;
 /**
  * The bots the game can seat and watch ("Test bot"), by name. Bots of minigolf.bot are adapted to
  * {@link ShotPlanner} by {@link #fromBot}; each request gets a fresh planner (planners need not be
- * thread-safe). Until the bots issue registers its searching bots here, the catalogue holds the
- * "straight" putter: the physics guess straight at the hole, with no search.
+ * thread-safe). Every bot of {@link Bots} is registered, the default ({@link Bots#DEFAULT}, the
+ * planner) first, so it is what a new bot player and "Test bot" start with; last the "straight"
+ * putter: the physics guess straight at the hole, with no search.
  */
 public final class BotCatalog {
     /** Simulations a bot may spend on one stroke in the game. */
@@ -26,6 +28,10 @@ public final class BotCatalog {
     private static final Map<String, Supplier<ShotPlanner>> PLANNERS = new LinkedHashMap<>();
 
     static {
+        registerBot(Bots.DEFAULT, () -> Bots.create(Bots.DEFAULT));
+        for (String name : Bots.names()) {
+            if (!name.equals(Bots.DEFAULT)) registerBot(name, () -> Bots.create(name));
+        }
         register("straight", () -> new ShotPlanner() {
             public String name() {
                 return "straight";

@@ -13,6 +13,7 @@ import minigolf.bot.planner.PlannerBot;
 import minigolf.bot.search.GridBot;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
+import minigolf.physics.Simulator;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 
@@ -38,12 +39,31 @@ class CountingSimulatorTest {
     }
 
     @Test
-    void limitsShotsToTheMaximumSpeedAndRejectsChips() {
+    void limitsShotsToTheMaximumSpeed() {
         CountingSimulator sim = new CountingSimulator(BenchCourses.load("flat-20m"));
         // 10 m/s on a 5 m/s course is played at 5 m/s: it stops after 25 / (2 mu g) = 21.237 m.
         ShotResult r = sim.simulate(-11.5, 0, Shot.of(10, 0));
         assertEquals(-11.5 + 25 / (2 * 0.06 * 9.81), r.endX(), 1e-3);
-        assertThrows(IllegalArgumentException.class, () -> sim.simulate(0, 0, new Shot(1, 0, 1)));
+    }
+
+    @Test
+    void chipsArePlayedWithTheEnginesThreeComponentShotAndCount() {
+        CountingSimulator sim = new CountingSimulator(flat);
+        Simulator engine = new Simulator(flat, SimulationSettings.DEFAULT);
+        ShotResult chip = sim.simulate(-3.5, 0, new Shot(2, 0, 2));
+        ShotResult expected = engine.simulate(-3.5, 0, 2, 0, 2);
+        assertEquals(1, sim.count());
+        assertEquals(expected.endX(), chip.endX(), 0);
+        assertEquals(expected.endY(), chip.endY(), 0);
+        // A chip flies before it rolls: it is not the putt with the same horizontal velocity.
+        ShotResult putt = engine.simulate(-3.5, 0, 2, 0);
+        assertTrue(Math.abs(putt.endX() - chip.endX()) > 0.05, putt.endX() + " vs " + chip.endX());
+        // The limit applies to the whole vector: 10 m/s straight up-and-forward is played at maxSpeed.
+        double max = flat.physics().maxSpeed() * (1 - 1e-12);
+        ShotResult fast = sim.simulate(-3.5, 0, new Shot(10, 0, 10));
+        ShotResult scaled = engine.simulate(-3.5, 0, max / Math.sqrt(2), 0, max / Math.sqrt(2));
+        assertEquals(scaled.endX(), fast.endX(), 1e-9);
+        assertEquals(2, sim.count());
     }
 
     @Test

@@ -5,9 +5,11 @@ import minigolf.physics.World;
 
 /**
  * The course as a grid of square cells, each free or blocked, for the bots' path searches and
- * distance fields. A cell is blocked when its centre is: {@link #isBlocked(World, double, double)}
- * is the one place that decides (water and out of bounds now; obstacles, inflated by the ball's
- * radius, plug in there when the engine has them).
+ * distance fields. {@link #isBlocked(World, double, double)} is the one place that decides where a
+ * ball cannot be: water, out of bounds, and obstacles inflated by the ball's radius
+ * ({@link ObstacleFootprint}). A cell is blocked when its centre is, obstacles being inflated by a
+ * further half cell diagonal so that a thin fence between cell centres still cuts the grid. Cells
+ * blocked by trees only are marked as such ({@link #tree(int)}) for A*'s diagonal rule.
  */
 public final class CourseGrid {
     /** The most cells a grid is built with (finer cells on small courses, coarser on big ones). */
@@ -18,6 +20,7 @@ public final class CourseGrid {
     private final double minX, minY, cell;
     private final int cols, rows;
     private final boolean[] blocked;
+    private final boolean[] tree;
     /** Distance from each cell centre to the nearest blocked cell centre (chamfer estimate), metres. */
     private final double[] clearance;
 
@@ -29,16 +32,27 @@ public final class CourseGrid {
         this.cols = Math.max(1, (int) Math.ceil(world.bounds().width() / cell));
         this.rows = Math.max(1, (int) Math.ceil(world.bounds().depth() / cell));
         this.blocked = new boolean[cols * rows];
+        this.tree = new boolean[cols * rows];
+        ObstacleFootprint footprint = ObstacleFootprint.of(world);
+        double halfDiagonal = cell * Math.sqrt(0.5);
         for (int r = 0; r < rows; r++) {
             token.throwIfCancelled();
             for (int c = 0; c < cols; c++) {
-                blocked[r * cols + c] = isBlocked(world, centreX(c), centreY(r));
+                double x = centreX(c), y = centreY(r);
+                int i = r * cols + c;
+                if (lost(world, x, y)) {
+                    blocked[i] = true;
+                    continue;
+                }
+                byte kind = footprint.kind(x, y, halfDiagonal);
+                blocked[i] = kind != ObstacleFootprint.FREE;
+                tree[i] = kind == ObstacleFootprint.TREE;
             }
         }
         clearance = chamfer();
     }
 
-    /** Two-pass 3-4 chamfer distance transform: distance to water or the edge of the course. */
+    /** Two-pass 3-4 chamfer distance transform: distance to water, obstacles or the edge of the course. */
     private double[] chamfer() {
         double[] d = new double[cols * rows];
         double straight = cell, diagonal = cell * Math.sqrt(2);
@@ -69,7 +83,7 @@ public final class CourseGrid {
         return d;
     }
 
-    /** How far the cell at (x, y) is from water or the course's edge, in metres. */
+    /** How far the cell at (x, y) is from water, obstacles or the course's edge, in metres. */
     public double clearance(double x, double y) {
         return clearance[indexOf(x, y)];
     }
@@ -80,7 +94,7 @@ public final class CourseGrid {
 
     /**
      * Whether the straight segment between two points stays on cells at least {@code margin} from
-     * water and the edge (sampled every half cell).
+     * water, obstacles and the edge (sampled every half cell).
      */
     public boolean clearLine(double x0, double y0, double x1, double y1, double margin) {
         double length = Math.hypot(x1 - x0, y1 - y0);
@@ -104,8 +118,16 @@ public final class CourseGrid {
         return new CourseGrid(world, cell, token);
     }
 
-    /** Whether a ball at (x, y) is lost: in water or out of bounds. The single blocking test of all bots. */
+    /**
+     * Whether a ball's centre cannot be at (x, y): in water, out of bounds, or within the ball's
+     * radius of an obstacle. The single blocking test of all bots.
+     */
     public static boolean isBlocked(World world, double x, double y) {
+        return lost(world, x, y) || ObstacleFootprint.of(world).kind(x, y, 0) != ObstacleFootprint.FREE;
+    }
+
+    /** Whether a ball at (x, y) is lost: in water or out of bounds. */
+    public static boolean lost(World world, double x, double y) {
         return !world.bounds().contains(x, y) || world.terrain().height(x, y) < 0;
     }
 
@@ -155,6 +177,11 @@ public final class CourseGrid {
 
     public boolean blocked(int index) {
         return blocked[index];
+    }
+
+    /** Whether the cell is blocked by a tree trunk only (not water, the edge, a wall, a box or a model). */
+    public boolean tree(int index) {
+        return tree[index];
     }
 
     /**

@@ -26,10 +26,10 @@ public final class AStar {
         this.kinds = kinds.clone();
     }
 
-    /** The grid of a course: blocked cells (water, edge; later obstacles) are walls. */
+    /** The grid of a course: cells blocked by trees only are trees, other blocked cells (water, edge, walls, boxes, models) walls. */
     public static AStar of(CourseGrid grid) {
         byte[] kinds = new byte[grid.cols() * grid.rows()];
-        for (int i = 0; i < kinds.length; i++) kinds[i] = grid.blocked(i) ? WALL : FREE;
+        for (int i = 0; i < kinds.length; i++) kinds[i] = grid.tree(i) ? TREE : grid.blocked(i) ? WALL : FREE;
         return new AStar(grid.cols(), grid.rows(), kinds);
     }
 

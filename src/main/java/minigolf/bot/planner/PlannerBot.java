@@ -95,7 +95,7 @@ public final class PlannerBot extends SearchBot {
             Course c = world.course();
             Hole h = c.hole();
             Course probe = new Course(c.format(), c.name(), c.terrain(), c.bounds(), c.physics(), c.start(),
-                    new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones());
+                    new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones(), c.obstacles());
             probeWorld = new World(probe, world.terrain());
             probeSource = world;
         }
