@@ -23,6 +23,8 @@ public final class CourseGrid {
     private final boolean[] tree;
     /** Distance from each cell centre to the nearest blocked cell centre (chamfer estimate), metres. */
     private final double[] clearance;
+    /** The same to the nearest lost cell (water, out of bounds): hazards, where obstacles only bounce. */
+    private final double[] hazardClearance;
 
     private CourseGrid(World world, double cell, CancellationToken token) {
         this.world = world;
@@ -33,6 +35,7 @@ public final class CourseGrid {
         this.rows = Math.max(1, (int) Math.ceil(world.bounds().depth() / cell));
         this.blocked = new boolean[cols * rows];
         this.tree = new boolean[cols * rows];
+        boolean[] lost = new boolean[cols * rows];
         ObstacleFootprint footprint = ObstacleFootprint.of(world);
         double halfDiagonal = cell * Math.sqrt(0.5);
         for (int r = 0; r < rows; r++) {
@@ -42,6 +45,7 @@ public final class CourseGrid {
                 int i = r * cols + c;
                 if (lost(world, x, y)) {
                     blocked[i] = true;
+                    lost[i] = true;
                     continue;
                 }
                 byte kind = footprint.kind(x, y, halfDiagonal);
@@ -49,11 +53,12 @@ public final class CourseGrid {
                 tree[i] = kind == ObstacleFootprint.TREE;
             }
         }
-        clearance = chamfer();
+        clearance = chamfer(blocked);
+        hazardClearance = footprint.isEmpty() ? clearance : chamfer(lost);
     }
 
     /** Two-pass 3-4 chamfer distance transform: distance to water, obstacles or the edge of the course. */
-    private double[] chamfer() {
+    private double[] chamfer(boolean[] blocked) {
         double[] d = new double[cols * rows];
         double straight = cell, diagonal = cell * Math.sqrt(2);
         for (int r = 0; r < rows; r++) {
@@ -90,6 +95,30 @@ public final class CourseGrid {
 
     public double clearance(int index) {
         return clearance[index];
+    }
+
+    /** How far the cell at (x, y) is from water or the course's edge (obstacles not counted), metres. */
+    public double hazardClearance(double x, double y) {
+        return hazardClearance[indexOf(x, y)];
+    }
+
+    public double hazardClearance(int index) {
+        return hazardClearance[index];
+    }
+
+    /**
+     * Whether the straight segment stays on free cells at least {@code hazardMargin} from water and
+     * the edge and {@code obstacleMargin} from obstacles (sampled every half cell).
+     */
+    public boolean clearLine(double x0, double y0, double x1, double y1, double hazardMargin, double obstacleMargin) {
+        double length = Math.hypot(x1 - x0, y1 - y0);
+        int samples = Math.max(1, (int) Math.ceil(length / (0.5 * cell)));
+        for (int k = 0; k <= samples; k++) {
+            double f = (double) k / samples;
+            int i = indexOf(x0 + f * (x1 - x0), y0 + f * (y1 - y0));
+            if (blocked[i] || hazardClearance[i] < hazardMargin || clearance[i] < obstacleMargin) return false;
+        }
+        return true;
     }
 
     /**

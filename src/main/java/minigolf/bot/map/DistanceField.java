@@ -7,8 +7,8 @@ import minigolf.bot.CancellationToken;
 
 /**
  * Shortest distance over free cells from every cell to the hole (Dijkstra, 8 neighbours, no
- * corner cutting): how far a rest point really is from the hole when water lies between. Cells
- * close to water cost more (up to {@code 1 + NEAR_WATER_COST} times within {@code SAFE_CLEARANCE}),
+ * corner cutting): how far a rest point really is from the hole when water or walls lie between.
+ * Cells close to water (not obstacles: those only bounce the ball) cost more (up to {@code 1 + NEAR_WATER_COST} times within {@code SAFE_CLEARANCE}),
  * so paths keep off the banks and rest points beside water score worse.
  */
 public final class DistanceField {
@@ -44,7 +44,7 @@ public final class DistanceField {
                     boolean diagonal = dc != 0 && dr != 0;
                     if (diagonal && !grid.diagonalAllowed(c, r, dc, dr)) continue;
                     int j = grid.index(nc, nr);
-                    double nearWater = Math.max(0, 1 - grid.clearance(j) / SAFE_CLEARANCE);
+                    double nearWater = Math.max(0, 1 - grid.hazardClearance(j) / SAFE_CLEARANCE);
                     double d = distance[i] + (diagonal ? SQRT2 : 1) * grid.cell() * (1 + NEAR_WATER_COST * nearWater);
                     if (d < distance[j]) {
                         distance[j] = d;

@@ -338,7 +338,8 @@ public final class PlannerBot extends SearchBot {
 
         double layupCost(StrokePlan p, int i) {
             double d = field.at(p.x(i), p.y(i));
-            return (Double.isFinite(d) ? d : 1e6) - Math.min(grid.clearance(p.x(i), p.y(i)), 1.0);
+            return (Double.isFinite(d) ? d : 1e6) - Math.min(grid.hazardClearance(p.x(i), p.y(i)), 1.0)
+                    - 0.3 * Math.min(grid.clearance(p.x(i), p.y(i)), 0.5);
         }
 
         /** The last resort: many directions and speeds, keep the rest point nearest the hole. */
@@ -371,7 +372,7 @@ public final class PlannerBot extends SearchBot {
         double[] visiblePointAlongPath(double distance) {
             for (double d = distance; d > 0.2; d -= 0.1) {
                 double[] p = pointAlongPath(d);
-                if (grid.clearLine(px, py, p[0], p[1], 0.1)) return p;
+                if (grid.clearLine(px, py, p[0], p[1], 0.1, StrokePlan.LINE_OBSTACLE_CLEARANCE)) return p;
             }
             return pointAlongPath(Math.min(distance, 0.2));
         }

@@ -9,7 +9,7 @@ import minigolf.physics.World;
 
 /**
  * How many strokes the hole is from each resting place, in the straight-putt approximation: a
- * coarse grid of cells well clear of water; a cell is one stroke from the hole when a straight
+ * coarse grid of cells well clear of water (and a little clear of obstacles); a cell is one stroke from the hole when a straight
  * putt from it sees the hole clear of water and the hole is within a maximum-speed roll, k + 1
  * strokes when it so sees a cell k strokes away. Built once per course (breadth first from the
  * hole); the planner lays up to the reachable cell with the fewest strokes left.
@@ -19,8 +19,12 @@ final class StrokePlan {
     private static final int TARGET_CELLS = 700;
     /** A resting place this far from water at least (robust to a small error of the lay-up). */
     static final double REST_CLEARANCE = 0.3;
-    /** A putt's line keeps this far from water. */
+    /** ... and this far from obstacles (a ball beside a wall still has a shot). */
+    static final double REST_OBSTACLE_CLEARANCE = 0.12;
+    /** A putt's line keeps this far from water ... */
     static final double LINE_CLEARANCE = 0.1;
+    /** ... and from obstacles (beyond the ball's radius, which the grid already adds). */
+    static final double LINE_OBSTACLE_CLEARANCE = 0.04;
 
     private final World world;
     private final CourseGrid fine;
@@ -46,7 +50,8 @@ final class StrokePlan {
         List<Integer> frontier = new ArrayList<>();
         List<Integer> candidates = new ArrayList<>();
         for (int i = 0; i < strokes.length; i++) {
-            if (fine.clearance(x(i), y(i)) >= REST_CLEARANCE && !CourseGrid.isBlocked(world, x(i), y(i))) {
+            if (fine.hazardClearance(x(i), y(i)) >= REST_CLEARANCE && fine.clearance(x(i), y(i)) >= REST_OBSTACLE_CLEARANCE
+                    && !CourseGrid.isBlocked(world, x(i), y(i))) {
                 candidates.add(i);
             }
         }
@@ -96,7 +101,7 @@ final class StrokePlan {
     boolean putt(double x0, double y0, double x1, double y1) {
         double distance = Math.hypot(x1 - x0, y1 - y0);
         if (distance > 0.99 * reach(x0, y0, x1, y1)) return false;
-        return fine.clearLine(x0, y0, x1, y1, LINE_CLEARANCE);
+        return fine.clearLine(x0, y0, x1, y1, LINE_CLEARANCE, LINE_OBSTACLE_CLEARANCE);
     }
 
     /** How far a maximum-speed shot rolls from (x0, y0) towards a point at the height of (x1, y1). */
