@@ -30,6 +30,36 @@ class PlannerTest {
         }
     }
 
+    @ParameterizedTest
+    @CsvSource({
+        // course, most strokes allowed: what the planner takes (measured, docs/bots.md)
+        "maze-a, 7", "maze-b, 3", "maze-b-hills, 5", "maze-c, 1", "maze-c-hills, 2", "maze-d, 4", "maze-e, 5",
+        "tree-field, 2", "water-bank, 2"})
+    void holesEveryMazeAndObstacleCourse(String course, int maxStrokes) {
+        World world = BenchCourses.load(course);
+        assertTrue(!world.course().obstacles().isEmpty(), course + " has obstacles");
+        for (long seed : new long[] {1, 7}) {
+            Playthrough.Result r = Playthrough.play(new PlannerBot(), world, SimulationSettings.DEFAULT, 10, 100_000,
+                    seed, CancellationToken.none(), BotProgress.NONE);
+            assertTrue(r.holed(), course + " not holed: " + r);
+            assertTrue(r.strokes() <= maxStrokes, course + ": " + r.strokes() + " strokes");
+            assertTrue(r.shots().stream().noneMatch(s -> s.result().outcome().isPenalty()), course + ": a penalty");
+        }
+    }
+
+    @org.junit.jupiter.api.Test
+    void banksRoundTheBigObstacleOfMazeCInOneStroke() {
+        // The box stands across the straight line from the start to the hole: the ball must go round it.
+        World world = BenchCourses.load("maze-c");
+        Simulator engine = new Simulator(world, SimulationSettings.DEFAULT);
+        double v = world.physics().maxSpeed();
+        assertTrue(engine.simulate(-4, 0, 0.7 * v, 0).endX() < -0.75, "the straight putt stops at the box");
+        Playthrough.Result r = Playthrough.play(new PlannerBot(), world, SimulationSettings.DEFAULT, 10, 100_000, 1,
+                CancellationToken.none(), BotProgress.NONE);
+        assertEquals(1, r.strokes());
+        assertEquals(Outcome.HOLED, r.shots().get(0).result().outcome());
+    }
+
     @org.junit.jupiter.api.Test
     void twoPuttNeedsTwoStrokesAndTakesTwo() {
         World world = BenchCourses.load("two-putt");
