@@ -2,6 +2,7 @@ package minigolf.render;
 
 import minigolf.course.Bounds;
 import minigolf.course.Course;
+import minigolf.course.TerrainSpec;
 import minigolf.course.Zone;
 import minigolf.physics.FrictionField;
 import minigolf.terrain.Terrain;
@@ -96,8 +97,11 @@ public final class TerrainMesh {
             }
         }
         int q = 0;
+        // Deleted grid cells are holes in the course: their quads are left out.
+        TerrainSpec.HeightGrid mask = course.terrain() instanceof TerrainSpec.HeightGrid g && g.deletedCount() > 0 ? g : null;
         for (int j = 0; j < ny; j++) {
             for (int i = 0; i < nx; i++) {
+                if (mask != null && mask.isDeletedAt(b.minX() + (i + 0.5) * dx, b.minY() + (j + 0.5) * dy)) continue;
                 int a = j * cols + i, c = a + cols;
                 // Split each quad along the diagonal that better follows the surface.
                 if (Math.abs(h[a] - h[c + 1]) <= Math.abs(h[a + 1] - h[c])) {
@@ -133,6 +137,7 @@ public final class TerrainMesh {
                 q = tri(idx, q, top0, bot1, top1);
             }
         }
+        if (q < idx.length) idx = java.util.Arrays.copyOf(idx, q);
         return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH);
     }
 
