@@ -40,8 +40,13 @@ public final class CourseGrids {
         }
         double w = (cols - 1) * spacing, d = (rows - 1) * spacing;
         Vec2 origin = new Vec2(-w / 2, -d / 2);
-        Terrain t = heightExpression == null || heightExpression.isBlank() ? null
-                : Terrains.create(new TerrainSpec.HeightExpression(heightExpression));
+        Terrain t;
+        try {
+            t = heightExpression == null || heightExpression.isBlank() ? null
+                    : Terrains.create(new TerrainSpec.HeightExpression(heightExpression));
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException("height expression: " + e.getMessage(), e);
+        }
         double[][] h = new double[rows][cols];
         for (int j = 0; j < rows; j++) {
             for (int i = 0; i < cols; i++) h[j][i] = t == null ? 0.1 : t.height(origin.x() + i * spacing, origin.y() + j * spacing);
