@@ -195,9 +195,11 @@ public final class ToolController {
             return "deleted " + what;
         }
         EditableCourse c = editor.course();
-        int i = c.cellColumn(x), j = c.cellRow(y);
+        // The tool sits on a node: take the cell whose lower-left corner it is (the last one at the far edges);
+        // half a cell's offset keeps rounding in the tool's position from picking the neighbour.
+        int i = c.cellColumn(Math.min(x + 0.5 * c.spacing(), c.nodeX(c.columns() - 1)));
+        int j = c.cellRow(Math.min(y + 0.5 * c.spacing(), c.nodeY(c.rows() - 1)));
         if (i < 0 || j < 0) return "no cell under the tool";
-        // The tool sits on nodes; take the cell whose lower-left corner it is on (the last one at the far edges).
         editor.setCellDeleted(i, j, !c.isDeleted(i, j));
         return (c.isDeleted(i, j) ? "deleted" : "restored") + " cell (" + i + ", " + j + ")";
     }

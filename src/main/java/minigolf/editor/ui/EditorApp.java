@@ -96,6 +96,7 @@ public final class EditorApp {
     private int dragObject = -1;
     private double dragStartX, dragStartY, lastDabX, lastDabY;
     private double lastX, lastY;
+    private boolean cursorSeen;
     // Dialog fields.
     private final ImString newName = new ImString("My course", 128), newExpression = new ImString("", 256);
     private final ImDouble newWidth = new ImDouble(10), newDepth = new ImDouble(6), newSpacing = new ImDouble(0.05);
@@ -133,6 +134,7 @@ public final class EditorApp {
                 imgui = ui;
                 if (options.frames() <= 0 && recovery.exists()) dialog = Dialog.RECOVERY;
                 try {
+                    buildScene();
                     loop();
                 } finally {
                     if (botCheck != null) botCheck.cancel();
@@ -272,6 +274,12 @@ public final class EditorApp {
             }
         });
         glfwSetCursorPosCallback(h, (win, x, y) -> {
+            if (!cursorSeen) { // the first event only says where the pointer already was (e.g. under Xvfb)
+                cursorSeen = true;
+                lastX = x;
+                lastY = y;
+                return;
+            }
             float dx = (float) (x - lastX), dy = (float) (y - lastY);
             lastX = x;
             lastY = y;
@@ -388,6 +396,7 @@ public final class EditorApp {
 
     /** Cursor (window coordinates) to the terrain point under it, or null. */
     private double[] pick(double cx, double cy) {
+        if (camera == null) return null;
         int[] ww = new int[1], wh = new int[1];
         glfwGetWindowSize(window.handle(), ww, wh);
         int fw = window.framebufferWidth(), fh = window.framebufferHeight();
@@ -557,7 +566,7 @@ public final class EditorApp {
 
     private void toolsPanel(int fh) {
         ImGui.setNextWindowPos(8, 32, ImGuiCond.Always);
-        ImGui.setNextWindowSize(300, fh - 80, ImGuiCond.Always);
+        ImGui.setNextWindowSize(300, 0, ImGuiCond.Always);
         ImGui.begin("Tools", ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoResize | ImGuiWindowFlags.NoCollapse);
         if (ImGui.radioButton("Terrain tool", tool.mode() == ToolController.Mode.TERRAIN)) tool.setMode(ToolController.Mode.TERRAIN);
         ImGui.sameLine();
