@@ -528,7 +528,7 @@ public final class EditorApp {
             dl.addCircle(q[0], q[1], 18, 0xFF2020FF, 24, 4f);
             dl.addLine(q[0] - 12, q[1] - 12, q[0] + 12, q[1] + 12, 0xFF2020FF, 4f);
             dl.addLine(q[0] - 12, q[1] + 12, q[0] + 12, q[1] - 12, 0xFF2020FF, 4f);
-            dl.addText(q[0] + 20, q[1] - 8, 0xFF4040FF, p.message());
+            dl.addText(q[0] + 20, q[1] + 14, 0xFF4040FF, p.message());
         }
     }
 
