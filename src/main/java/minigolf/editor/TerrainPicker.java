@@ -10,6 +10,8 @@ import minigolf.terrain.Terrain;
  */
 public final class TerrainPicker {
     private static final int BISECTIONS = 30;
+    /** The longest stretch of ray searched, in metres. */
+    private static final double MAX_DISTANCE = 1000;
 
     private TerrainPicker() {
     }
@@ -38,6 +40,8 @@ public final class TerrainPicker {
                 t1 = Math.min(t1, Math.max(ta, tb));
             }
         }
+        // A ray straight up or down never leaves the slab: bound it (the camera is never that far away).
+        t1 = Math.min(t1, t0 + MAX_DISTANCE);
         if (t0 > t1) return null;
         double prev = t0;
         if (above(terrain, ox, oy, oz, dx, dy, dz, prev) <= 0) return point(ox, oy, oz, dx, dy, dz, prev);

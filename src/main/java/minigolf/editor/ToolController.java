@@ -100,12 +100,14 @@ public final class ToolController {
 
     /** Handles one key; returns a short message for the status line (null when there is nothing to say). */
     public String press(EditorKey key) {
-        double step = editor.course().spacing();
+        // Keys move the tool from node to node (a mouse-placed tool snaps to the nearest node first).
+        EditableCourse g = editor.course();
+        int ni = g.nearestColumn(x), nj = g.nearestRow(y);
         switch (key) {
-            case UP -> moveTo(x, y + step);
-            case DOWN -> moveTo(x, y - step);
-            case LEFT -> moveTo(x - step, y);
-            case RIGHT -> moveTo(x + step, y);
+            case UP -> moveTo(g.nodeX(ni), g.nodeY(nj + 1));
+            case DOWN -> moveTo(g.nodeX(ni), g.nodeY(nj - 1));
+            case LEFT -> moveTo(g.nodeX(ni - 1), g.nodeY(nj));
+            case RIGHT -> moveTo(g.nodeX(ni + 1), g.nodeY(nj));
             case TOGGLE_TOOL -> {
                 mode = mode == Mode.TERRAIN ? Mode.OBJECT : Mode.TERRAIN;
                 return (mode == Mode.TERRAIN ? "terrain tool: " + action.label() : "object tool: " + kind.name().toLowerCase(Locale.ROOT));
