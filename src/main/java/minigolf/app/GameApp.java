@@ -556,6 +556,16 @@ public final class GameApp implements UiActions, UiView {
     }
 
     @Override
+    public void createCourse() {
+        try {
+            minigolf.editor.ui.ProcessLauncher.start("edit");
+            say("the editor opens in its own window");
+        } catch (IOException e) {
+            say("cannot open the editor: " + e.getMessage());
+        }
+    }
+
+    @Override
     public void quit() {
         window.requestClose();
     }

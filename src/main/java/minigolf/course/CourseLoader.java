@@ -39,7 +39,8 @@ public final class CourseLoader {
     static final List<String> TOP_FIELDS = List.of(
             "format", "name", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles");
     static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
-    static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction");
+    static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction",
+            "deletedCells");
     static final List<String> BOUNDS_FIELDS = List.of("min", "max");
     static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model",
             "ballRadius", "ballMass", "dragCoefficient", "airDensity", "groundRestitution");
@@ -253,7 +254,36 @@ public final class CourseLoader {
                     ? matrix(o.get("kineticFriction"), join(path, "kineticFriction"), rows, cols, true) : null;
             double[][] stat = o.has("staticFriction")
                     ? matrix(o.get("staticFriction"), join(path, "staticFriction"), rows, cols, true) : null;
-            return new TerrainSpec.HeightGrid(origin, spacing, heights, kinetic, stat);
+            boolean[][] deleted = o.has("deletedCells")
+                    ? deletedCells(o.get("deletedCells"), join(path, "deletedCells"), rows - 1, cols - 1) : null;
+            return new TerrainSpec.HeightGrid(origin, spacing, heights, kinetic, stat, deleted);
+        }
+
+        /** {@code [[i, j], ...]}: the cells (column i, row j) removed from the course, each listed once. */
+        boolean[][] deletedCells(JsonNode n, String path, int cellRows, int cellCols) throws CourseException {
+            if (!n.isArray()) throw error(path, "expected an array of [i, j] cell indices, got " + kind(n));
+            boolean[][] mask = new boolean[cellRows][cellCols];
+            for (int k = 0; k < n.size(); k++) {
+                String cp = path + "[" + k + "]";
+                JsonNode c = n.get(k);
+                if (!c.isArray() || c.size() != 2) throw error(cp, "expected [i, j] (two integers), got "
+                        + (c.isArray() ? "an array of " + c.size() : kind(c)));
+                int i = cellIndex(c.get(0), cp + "[0]", cellCols, "columns");
+                int j = cellIndex(c.get(1), cp + "[1]", cellRows, "rows");
+                if (mask[j][i]) throw error(cp, "cell [" + i + ", " + j + "] is listed twice");
+                mask[j][i] = true;
+            }
+            return mask;
+        }
+
+        private int cellIndex(JsonNode v, String path, int count, String what) throws CourseException {
+            if (!v.isIntegralNumber()) throw error(path, "expected an integer cell index, got " + kind(v));
+            long index = v.asLong();
+            if (index < 0 || index >= count || !v.canConvertToInt()) {
+                throw error(path, "cell index " + v.asText() + " is outside 0.." + (count - 1) + " (the grid has "
+                        + count + " cell " + what + ")");
+            }
+            return (int) index;
         }
 
         /**

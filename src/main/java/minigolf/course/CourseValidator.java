@@ -23,6 +23,17 @@ public final class CourseValidator {
     static void checkInBounds(Course course, String sourceName) throws CourseException {
         checkInBounds(course.start(), "start", course.bounds(), sourceName);
         checkInBounds(course.hole().position(), "hole.position", course.bounds(), sourceName);
+        if (course.terrain() instanceof TerrainSpec.HeightGrid g && g.deleted() != null) {
+            checkNotDeleted(course.start(), "start", g, sourceName);
+            checkNotDeleted(course.hole().position(), "hole.position", g, sourceName);
+        }
+    }
+
+    private static void checkNotDeleted(Vec2 p, String path, TerrainSpec.HeightGrid g, String sourceName)
+            throws CourseException {
+        if (g.isDeletedAt(p.x(), p.y())) {
+            throw new CourseException(sourceName, path, point(p) + " is on a deleted terrain cell (out of bounds)");
+        }
     }
 
     private static void checkInBounds(Vec2 p, String path, Bounds bounds, String sourceName) throws CourseException {

@@ -147,6 +147,19 @@ public final class CourseWriter {
             sb.append(",\n      \"staticFriction\": ");
             matrix(sb, g.staticFriction(), "terrain.grid.staticFriction");
         }
+        int deletedCount = g.deletedCount();
+        if (deletedCount > 0) {
+            sb.append(",\n      \"deletedCells\": [");
+            int written = 0;
+            for (int j = 0; j < g.deleted().length; j++) {
+                for (int i = 0; i < g.deleted()[j].length; i++) {
+                    if (!g.deleted()[j][i]) continue;
+                    sb.append(written % 16 == 0 ? "\n        " : " ").append('[').append(i).append(", ").append(j).append(']');
+                    if (++written < deletedCount) sb.append(',');
+                }
+            }
+            sb.append("\n      ]");
+        }
         sb.append("\n    }\n  }");
     }
 

@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import minigolf.collision.CollisionScene;
 import minigolf.collision.Hit;
-import minigolf.course.Bounds;
 import minigolf.course.Hole;
 import minigolf.course.HoleRule;
 import minigolf.course.PhysicsModel;
@@ -48,7 +47,7 @@ public final class Stroke {
 
     private final Terrain terrain;
     private final FrictionField friction;
-    private final Bounds bounds;
+    private final PlayArea area;
     private final double gravity;
     private final boolean complete;
     private final Integrator integrator;
@@ -126,7 +125,7 @@ public final class Stroke {
         }
         this.terrain = world.terrain();
         this.friction = world.friction();
-        this.bounds = world.bounds();
+        this.area = world.playArea();
         this.gravity = physics.gravity();
         this.complete = physics.model() == PhysicsModel.COMPLETE;
         this.integrator = settings.integrator();
@@ -151,7 +150,7 @@ public final class Stroke {
         this.vy = vy0;
         sampleCurrent();
         this.z = h;
-        if (!bounds.contains(x, y)) {
+        if (!area.contains(x, y)) {
             finish(Outcome.OUT, x, y, z);
         } else if (h < 0) {
             finish(Outcome.WATER, x, y, z);
@@ -533,7 +532,7 @@ public final class Stroke {
      * 1 mm settles the ball into rolling.
      */
     private void land() {
-        if (!bounds.contains(x, y)) {
+        if (!area.contains(x, y)) {
             finish(Outcome.OUT, x, y, z);
             return;
         }
@@ -713,7 +712,7 @@ public final class Stroke {
     }
 
     private Outcome hazardAt(double px, double py) {
-        if (!bounds.contains(px, py)) return Outcome.OUT;
+        if (!area.contains(px, py)) return Outcome.OUT;
         if (terrain.height(px, py) < 0) return Outcome.WATER;
         return null;
     }

@@ -22,11 +22,13 @@ public final class World {
     private final Terrain terrain;
     private final FrictionField friction;
     private final CollisionScene obstacles;
+    private final PlayArea playArea;
 
     public World(Course course, Terrain terrain) {
         this.course = course;
         this.terrain = terrain;
         this.friction = new FrictionField(course.physics(), course.zones(), course.terrain());
+        this.playArea = new PlayArea(course);
         this.obstacles = course.obstacles().isEmpty() ? null
                 : CollisionScene.build(course.obstacles(), terrain::height, course.bounds(), course.physics().ballRadius());
     }
@@ -70,6 +72,11 @@ public final class World {
     /** The obstacles as collision geometry, or null when the course has none. */
     public CollisionScene obstacles() {
         return obstacles;
+    }
+
+    /** The bounds less the deleted terrain cells: where the ball is in play. */
+    public PlayArea playArea() {
+        return playArea;
     }
 
     public Bounds bounds() {

@@ -51,6 +51,22 @@ public final class Mesh implements AutoCloseable {
         glBindBuffer(GL_ARRAY_BUFFER, 0);
     }
 
+    /**
+     * Overwrites part of the vertex buffer in place (glBufferSubData): {@code vertices} go to the
+     * buffer from float {@code firstFloat} on. For live edits that keep the vertex count.
+     */
+    public void updateVertices(int firstFloat, float[] vertices) {
+        FloatBuffer buffer = memAllocFloat(vertices.length);
+        try {
+            buffer.put(vertices).flip();
+            glBindBuffer(GL_ARRAY_BUFFER, vbo);
+            glBufferSubData(GL_ARRAY_BUFFER, (long) firstFloat * Float.BYTES, buffer);
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+        } finally {
+            memFree(buffer);
+        }
+    }
+
     public int indexCount() {
         return indexCount;
     }

@@ -1,9 +1,11 @@
 package minigolf.render;
 
 import minigolf.course.Course;
+import minigolf.course.Obstacle;
 import minigolf.terrain.Terrain;
 import org.joml.Vector3f;
 
+import java.nio.file.Path;
 import java.util.List;
 
 import static org.lwjgl.opengl.GL11.*;
@@ -17,10 +19,13 @@ import static org.lwjgl.opengl.GL30.*;
 public final class SceneRenderer implements AutoCloseable {
     /** Shadow map texels per side: about 5 mm per texel on a 10 m course. */
     public static final int SHADOW_MAP_SIZE = 2048;
+    /** How far above the highest caster the shadow map reaches, so a chipped ball keeps its shadow. */
+    static final double FLIGHT_HEADROOM = 1.0;
 
     private final SkyPass sky;
     private final TerrainPass terrain;
     private final ObjectsPass objects;
+    private final ObstaclesPass obstacles;
     private final WaterPass water;
     private final List<RenderPass> passes;
     private final FrameContext frame = new FrameContext(FrameContext.Sun.afternoon());
@@ -31,34 +36,48 @@ public final class SceneRenderer implements AutoCloseable {
     private float lastTime;
     private boolean waterReflections = true;
     private final ShaderProgram depthShader;
-    private final ShadowMap shadowMap;
+    private ShadowMap shadowMap;
+    /** The heights the shadow map is fitted to (its box must hold every caster). */
+    private final double shadowMinZ;
+    private double shadowMaxZ;
+    private final int shadowMapSize;
     private boolean shadows = true;
     /** The water's render targets' size relative to the viewport (0.5: a quarter of the pixels). */
     private float waterTargetScale = 0.5f;
 
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode) {
+        this(course, surface, mode, SHADOW_MAP_SIZE);
+    }
+
+    /** As above with a shadow map of {@code shadowMapSize}² texels (see {@link RenderQuality}). */
+    public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode, int shadowMapSize) {
         this.course = course;
+        this.shadowMapSize = shadowMapSize;
         SkyPass s = null;
         TerrainPass t = null;
+        ObstaclesPass ob = null;
         ObjectsPass o = null;
         try {
             s = new SkyPass();
             t = new TerrainPass(course, surface, mode);
+            ob = new ObstaclesPass(course.obstacles(), surface::height);
             o = new ObjectsPass(course, surface);
             water = new WaterPass(course, surface);
         } catch (RuntimeException e) {
-            for (RenderPass p : new RenderPass[]{o, t, s}) if (p != null) p.close();
+            for (RenderPass p : new RenderPass[]{o, ob, t, s}) if (p != null) p.close();
             throw e;
         }
         sky = s;
         terrain = t;
+        obstacles = ob;
         objects = o;
-        passes = List.of(sky, terrain, objects, water);
+        passes = List.of(sky, terrain, obstacles, objects, water);
         ShaderProgram depth = null;
         try {
             depth = ShaderProgram.load("shadow");
-            double minZ = Math.min(0, t.minHeight()) - 0.5, maxZ = Math.max(0, t.maxHeight()) + ObjectsPass.FLAG_HEIGHT + 0.1;
-            shadowMap = new ShadowMap(course.bounds(), minZ, maxZ, frame.sun.direction(), SHADOW_MAP_SIZE);
+            shadowMinZ = Math.min(0, t.minHeight()) - 0.5;
+            shadowMaxZ = casterTop();
+            shadowMap = new ShadowMap(course.bounds(), shadowMinZ, shadowMaxZ, frame.sun.direction(), shadowMapSize);
         } catch (RuntimeException e) {
             if (depth != null) depth.close();
             for (RenderPass p : passes) p.close();
@@ -79,6 +98,42 @@ public final class SceneRenderer implements AutoCloseable {
 
     public WaterPass waterPass() {
         return water;
+    }
+
+    public ObstaclesPass obstaclesPass() {
+        return obstacles;
+    }
+
+    /**
+     * Rebuilds the drawn obstacles (walls, boxes, trees, models) from {@code list}, e.g. when the
+     * editor places, moves or deletes one; null or empty draws none. The shadow map is refitted if
+     * something now stands higher than it reaches.
+     */
+    public void setObstacles(List<Obstacle> list) {
+        obstacles.setObstacles(list);
+        refitShadowMap();
+    }
+
+    /** The course file's folder, where model obstacles' .mtl files are looked for first (then the classpath). */
+    public void setCourseFolder(Path folder) {
+        obstacles.setCourseFolder(folder);
+    }
+
+    /** The highest caster: terrain, flag, obstacles, plus room for a ball in flight. */
+    private double casterTop() {
+        double top = Math.max(0, terrain.maxHeight()) + ObjectsPass.FLAG_HEIGHT + 0.1;
+        return Math.max(top, obstacles.top()) + FLIGHT_HEADROOM;
+    }
+
+    private void refitShadowMap() {
+        double top = casterTop();
+        if (top <= shadowMaxZ) return;
+        ShadowMap fitted = new ShadowMap(course.bounds(), shadowMinZ, top, frame.sun.direction(), shadowMapSize);
+        shadowMap.close();
+        shadowMap = fitted;
+        shadowMaxZ = top;
+        frame.shadowMap = shadowMap;
+        minimapFrame.shadowMap = shadowMap;
     }
 
     public Vector3f ballCenter() {
@@ -119,10 +174,11 @@ public final class SceneRenderer implements AutoCloseable {
         var b = course.bounds();
         double pad = 0.02 * Math.max(b.width(), b.depth());
         minimapFrame.updateTopDown(b.minX() - pad, b.minY() - pad, b.maxX() + pad, b.maxY() + pad,
-                Math.min(0, terrain.minHeight()) - 1, Math.max(0, terrain.maxHeight()) + ObjectsPass.FLAG_HEIGHT + 1,
+                Math.min(0, terrain.minHeight()) - 1, Math.max(Math.max(0, terrain.maxHeight()) + ObjectsPass.FLAG_HEIGHT, obstacles.top()) + 1,
                 inner, inner, lastTime);
         terrain.render(minimapFrame);
         water.renderSimple(minimapFrame);
+        obstacles.renderMinimap(minimapFrame);
         float metresPerPixel = (float) (Math.max(b.width(), b.depth()) + 2 * pad) / inner;
         objects.renderMinimap(minimapFrame, 4f * metresPerPixel);
         glDisable(GL_SCISSOR_TEST);
@@ -185,6 +241,7 @@ public final class SceneRenderer implements AutoCloseable {
         depthShader.use();
         depthShader.set("uLightViewProjection", shadowMap.lightViewProjection());
         terrain.drawDepth(depthShader);
+        obstacles.drawDepth(depthShader);
         objects.drawShadowCasters(depthShader);
         shadowMap.end();
     }
@@ -212,6 +269,7 @@ public final class SceneRenderer implements AutoCloseable {
         mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
         sky.render(mirrorFrame);
         terrain.render(mirrorFrame);
+        obstacles.render(mirrorFrame);
         objects.render(mirrorFrame);
 
         refraction.bind();
@@ -220,6 +278,7 @@ public final class SceneRenderer implements AutoCloseable {
         refractionFrame.copyOf(frame, w, h);
         refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
         terrain.render(refractionFrame);
+        obstacles.render(refractionFrame);
         objects.render(refractionFrame);
 
         glDisable(GL_CLIP_DISTANCE0);

@@ -2,6 +2,7 @@ package minigolf.render;
 
 import minigolf.course.Bounds;
 import minigolf.course.Course;
+import minigolf.course.TerrainSpec;
 import minigolf.course.Zone;
 import minigolf.physics.FrictionField;
 import minigolf.terrain.Terrain;
@@ -96,8 +97,11 @@ public final class TerrainMesh {
             }
         }
         int q = 0;
+        // Deleted grid cells are holes in the course: their quads are left out.
+        TerrainSpec.HeightGrid mask = course.terrain() instanceof TerrainSpec.HeightGrid g && g.deletedCount() > 0 ? g : null;
         for (int j = 0; j < ny; j++) {
             for (int i = 0; i < nx; i++) {
+                if (mask != null && mask.isDeletedAt(b.minX() + (i + 0.5) * dx, b.minY() + (j + 0.5) * dy)) continue;
                 int a = j * cols + i, c = a + cols;
                 // Split each quad along the diagonal that better follows the surface.
                 if (Math.abs(h[a] - h[c + 1]) <= Math.abs(h[a + 1] - h[c])) {
@@ -133,7 +137,46 @@ public final class TerrainMesh {
                 q = tri(idx, q, top0, bot1, top1);
             }
         }
+        if (q < idx.length) idx = java.util.Arrays.copyOf(idx, q);
         return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH);
+    }
+
+    /** Surface vertices of whole mesh rows, to overwrite a built mesh's vertex buffer from {@code firstFloat}. */
+    public record Patch(int firstFloat, float[] vertices) {
+    }
+
+    /**
+     * The surface vertices (positions, normals, colours as {@link #build} makes them) of the mesh
+     * rows that cover [minX, maxX] x [minY, maxY], for a live update after the terrain changed
+     * there. Colours use the given height range (the built mesh's), so the patch matches its
+     * surroundings; the skirts and the triangulation are left as they are. Null if the region
+     * misses the course.
+     */
+    public static Patch surfacePatch(Course course, Terrain terrain, ColorMode mode, double minH, double maxH,
+                                     double minX, double minY, double maxX, double maxY) {
+        Bounds b = course.bounds();
+        double spacing = sampleSpacing(b);
+        int nx = quads(b.width(), spacing), ny = quads(b.depth(), spacing);
+        int cols = nx + 1, rows = ny + 1;
+        double dx = b.width() / nx, dy = b.depth() / ny;
+        int j0 = Math.max(0, (int) Math.floor((minY - b.minY()) / dy));
+        int j1 = Math.min(rows - 1, (int) Math.ceil((maxY - b.minY()) / dy));
+        if (j0 > j1 || maxX < b.minX() || minX > b.maxX()) return null;
+        FrictionField friction = new FrictionField(course.physics(), course.zones(), course.terrain());
+        float[] v = new float[(j1 - j0 + 1) * cols * 9];
+        double[] s = new double[3];
+        float[] rgb = new float[3];
+        int p = 0;
+        for (int j = j0; j <= j1; j++) {
+            for (int i = 0; i < cols; i++) {
+                double x = b.minX() + i * dx, y = b.minY() + j * dy;
+                terrain.sample(x, y, s);
+                double len = Math.sqrt(s[1] * s[1] + s[2] * s[2] + 1);
+                surfaceColor(mode, friction.kinetic(x, y), x, y, s[0], minH, maxH, b, rgb);
+                p = put(v, p, x, y, s[0], -s[1] / len, -s[2] / len, 1 / len, rgb);
+            }
+        }
+        return new Patch(j0 * cols * 9, v);
     }
 
     private static int put(float[] v, int p, double x, double y, double z, double nx, double ny, double nz, float[] c) {

@@ -5,8 +5,8 @@ import minigolf.terrain.Terrain;
 
 /** The course surface and its side walls, lit by the sun. */
 public final class TerrainPass implements RenderPass {
-    private final Course course;
-    private final Terrain terrain;
+    private Course course;
+    private Terrain terrain;
     private final ShaderProgram shader = ShaderProgram.load("terrain");
     private TerrainMesh.ColorMode mode;
     private Mesh mesh;
@@ -32,6 +32,34 @@ public final class TerrainPass implements RenderPass {
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
         mode = newMode;
+    }
+
+    /**
+     * Live edit: the terrain changed inside [minX, maxX] x [minY, maxY]; the mesh rows there are
+     * re-sampled and uploaded in place with glBufferSubData (the rest of the mesh is untouched).
+     * Returns the number of floats uploaded.
+     */
+    public int updateRegion(Course newCourse, Terrain newTerrain, double minX, double minY, double maxX, double maxY) {
+        course = newCourse;
+        terrain = newTerrain;
+        TerrainMesh.Patch patch = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight, minX, minY, maxX, maxY);
+        return applyPatch(patch);
+    }
+
+    /** Uploads re-sampled surface rows (see {@link TerrainMesh#surfacePatch}); returns the floats uploaded. */
+    public int applyPatch(TerrainMesh.Patch patch) {
+        if (patch == null) return 0;
+        mesh.updateVertices(patch.firstFloat(), patch.vertices());
+        return patch.vertices().length;
+    }
+
+    /** Rebuilds the whole mesh from a changed course (skirts, triangulation, deleted cells, colour range). */
+    public void rebuild(Course newCourse, Terrain newTerrain) {
+        course = newCourse;
+        terrain = newTerrain;
+        TerrainMesh.ColorMode m = mode;
+        mode = null;
+        setColorMode(m);
     }
 
     /** The lowest and highest surface heights sampled for the mesh. */

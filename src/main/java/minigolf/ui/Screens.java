@@ -118,11 +118,7 @@ public final class Screens {
         ImGui.sameLine();
         ImGui.setNextItemWidth(120);
         ImGui.combo("##testbot", testBot, botNames.toArray(new String[0]));
-        ImGui.beginDisabled();
-        ImGui.button("Create course", bw, bh);
-        ImGui.endDisabled();
-        ImGui.sameLine();
-        ImGui.textDisabled("(the editor is its own issue)");
+        if (ImGui.button("Create course", bw, bh)) actions.createCourse();
         if (!view.savedGames().isEmpty() && ImGui.beginMenu("Load saved game")) {
             for (Path p : view.savedGames()) if (ImGui.menuItem(p.getFileName().toString())) actions.loadGame(p);
             ImGui.endMenu();

@@ -27,5 +27,8 @@ public interface UiActions {
 
     void toMainMenu();
 
+    /** Opens the course editor (in its own window) on a new course. */
+    void createCourse();
+
     void quit();
 }

@@ -1,0 +1,91 @@
+package minigolf.editor;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import minigolf.course.Course;
+import minigolf.course.CourseException;
+import minigolf.course.CourseLoader;
+import minigolf.course.CourseWriter;
+import minigolf.io.AtomicFile;
+
+/**
+ * The editor's autosave: the course being edited is written (atomically) to a recovery file in
+ * the config folder every few seconds while it has unsaved changes, with the path of the file it
+ * came from beside it. A clean close removes both; if they are still there at the next start the
+ * editor crashed or was killed, and the editor offers the recovered course.
+ */
+public final class Recovery {
+    /** Seconds between autosaves of a changed course. */
+    public static final double INTERVAL_SECONDS = 10;
+
+    private final Path course;
+    private final Path origin;
+    private double lastSave = Double.NEGATIVE_INFINITY;
+    private long savedVersion = -1;
+
+    /** A recovered course and the file it was edited from (null for a course never saved). */
+    public record Recovered(Course course, Path originalFile) {
+    }
+
+    public Recovery(Path directory) {
+        this.course = directory.resolve("editor-recovery.json");
+        this.origin = directory.resolve("editor-recovery.origin");
+    }
+
+    public Path file() {
+        return course;
+    }
+
+    /** Writes the course now. */
+    public void save(Course c, Path originalFile) throws IOException {
+        Files.createDirectories(course.getParent());
+        AtomicFile.write(origin, (originalFile == null ? "" : originalFile.toAbsolutePath().toString())
+                .getBytes(StandardCharsets.UTF_8));
+        AtomicFile.write(course, CourseWriter.toJson(c).getBytes(StandardCharsets.UTF_8));
+    }
+
+    /**
+     * Autosaves if the editor has unsaved changes that are not in the recovery file yet and the
+     * interval has passed since the last autosave. Returns whether it wrote.
+     */
+    public boolean autosave(CourseEditor editor, double nowSeconds) throws IOException {
+        if (!editor.isDirty() || nowSeconds - lastSave < INTERVAL_SECONDS || savedVersion == editor.version()) return false;
+        save(editor.toCourse(), editor.file());
+        lastSave = nowSeconds;
+        savedVersion = editor.version();
+        return true;
+    }
+
+    /** Whether a recovery file is waiting from an earlier session. */
+    public boolean exists() {
+        return Files.isRegularFile(course);
+    }
+
+    /** The recovered course; model files are looked up beside the original file. */
+    public Recovered load() throws CourseException {
+        Path original = null;
+        try {
+            String text = Files.isRegularFile(origin) ? Files.readString(origin, StandardCharsets.UTF_8).trim() : "";
+            if (!text.isEmpty()) original = Path.of(text);
+            String json = Files.readString(course, StandardCharsets.UTF_8);
+            String source = original != null ? original.toString() : course.toString();
+            return new Recovered(CourseLoader.parse(json, source), original);
+        } catch (IOException | RuntimeException e) {
+            throw new CourseException(course.toString(), null, "cannot read the recovery file: " + e.getMessage(), e);
+        }
+    }
+
+    /** Removes the recovery file (after a clean close, or when the user declines it). */
+    public void clear() {
+        try {
+            Files.deleteIfExists(course);
+            Files.deleteIfExists(origin);
+        } catch (IOException e) {
+            // A stale recovery file is only offered again; nothing is lost.
+        }
+        savedVersion = -1;
+        lastSave = Double.NEGATIVE_INFINITY;
+    }
+}

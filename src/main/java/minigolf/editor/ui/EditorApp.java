@@ -1,0 +1,837 @@
+package minigolf.editor.ui;
+
+import imgui.ImDrawList;
+import imgui.ImGui;
+import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiWindowFlags;
+import imgui.type.ImDouble;
+import imgui.type.ImInt;
+import imgui.type.ImString;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import minigolf.course.Course;
+import minigolf.course.CourseException;
+import minigolf.course.CourseWriter;
+import minigolf.course.HoleRule;
+import minigolf.course.Obstacle;
+import minigolf.course.PhysicsModel;
+import minigolf.course.PhysicsSettings;
+import minigolf.course.Vec2;
+import minigolf.editor.BotCheck;
+import minigolf.editor.ChangeSet;
+import minigolf.editor.CourseEditor;
+import minigolf.editor.EditableCourse;
+import minigolf.editor.EditorKey;
+import minigolf.editor.ObstacleTools;
+import minigolf.editor.Problem;
+import minigolf.editor.Recovery;
+import minigolf.editor.TerrainPicker;
+import minigolf.editor.ToolController;
+import minigolf.game.BotCatalog;
+import minigolf.game.ShotPlanner;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+import minigolf.render.OrbitCamera;
+import minigolf.render.Png;
+import minigolf.render.SceneRenderer;
+import minigolf.render.TerrainMesh;
+import minigolf.render.Window;
+import minigolf.ui.ImGuiLayer;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+
+import static org.lwjgl.glfw.GLFW.*;
+import static org.lwjgl.opengl.GL11.*;
+import static org.lwjgl.system.MemoryUtil.memAlloc;
+import static org.lwjgl.system.MemoryUtil.memFree;
+
+/**
+ * The course editor's window: the game's renderer and orbit camera, ImGui panels, mouse picking
+ * of the terrain and the original keyboard scheme. All editing goes through {@link ToolController}
+ * and {@link CourseEditor}; this class only turns input into their calls and draws.
+ * Camera: right drag turns, middle drag pans, the wheel zooms; the left button uses the tool.
+ */
+public final class EditorApp {
+    /**
+     * How the editor is started.
+     *
+     * @param scriptedKeys GLFW key presses {key, mods}, one per frame from the first, through the same
+     *                     path as the keyboard (tests, the command line)
+     * @param recoveryDir  where the autosave goes
+     */
+    public record Options(Path screenshot, int frames, List<int[]> scriptedKeys, Path recoveryDir, boolean visible) {
+    }
+
+    private enum Dialog { NONE, NEW, OPEN, SAVE_AS, RECOVERY, CONFIRM_CLOSE }
+
+    private static final String[] ACTIONS = {"Raise", "Lower", "Smooth", "Flatten", "Paint grass", "Paint sand",
+            "Paint friction", "Set height", "Delete cells", "Restore cells", "Place start", "Place hole"};
+    private static final String[] KINDS = {"Wall", "Tree", "Box"};
+
+    private final Options options;
+    private final Recovery recovery;
+    private CourseEditor editor;
+    private ToolController tool;
+    private Window window;
+    private ImGuiLayer imgui;
+    private SceneRenderer renderer;
+    private OrbitCamera camera;
+    private boolean heightMap, rebuildScene = true;
+    private String message;
+    private double messageUntil;
+    private List<Problem> problems = List.of();
+    private boolean problemsStale = true;
+    private double lastValidation = -1;
+    private Dialog dialog = Dialog.NONE;
+    private BotCheck botCheck;
+    private final ImInt botChoice = new ImInt(0);
+    private Path playFile;
+    // Mouse.
+    private boolean rotating, panning, stroking, dragging;
+    private int dragObject = -1;
+    private double dragStartX, dragStartY, lastDabX, lastDabY;
+    private double lastX, lastY;
+    private boolean cursorSeen;
+    // Dialog fields.
+    private final ImString newName = new ImString("My course", 128), newExpression = new ImString("", 256);
+    private final ImDouble newWidth = new ImDouble(10), newDepth = new ImDouble(6), newSpacing = new ImDouble(0.05);
+    private final ImString pathField = new ImString("courses/my-course.json", 512);
+    // Panel fields.
+    private final ImDouble startX = new ImDouble(), startY = new ImDouble(), holeX = new ImDouble(), holeY = new ImDouble();
+    private final ImDouble holeRadius = new ImDouble(), gravity = new ImDouble(), kinetic = new ImDouble(),
+            statics = new ImDouble(), maxSpeed = new ImDouble();
+    private final ImInt holeRule = new ImInt(), maxObjects = new ImInt();
+    private final ImString courseName = new ImString(128);
+    private long fieldsVersion = -1;
+    private int selected = -1;
+    private float time;
+
+    public EditorApp(CourseEditor editor, Options options) {
+        this.editor = editor;
+        this.tool = new ToolController(editor);
+        this.options = options;
+        this.recovery = new Recovery(options.recoveryDir());
+    }
+
+    public CourseEditor editor() {
+        return editor;
+    }
+
+    /** Runs until the window closes or the frames are done; returns the editor at the end. */
+    public CourseEditor run() {
+        Window.Options wo = options.visible() ? Window.Options.visibleDefaults() : new Window.Options(true, false, 0, true, 3, 3);
+        try (Window w = new Window("Minigolf editor", 1400, 860, wo)) {
+            window = w;
+            window.setVsync(options.frames() <= 0);
+            installInput();
+            float scale = Math.max(1f, window.framebufferHeight() / 900f);
+            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale)) {
+                imgui = ui;
+                if (options.frames() <= 0 && recovery.exists()) dialog = Dialog.RECOVERY;
+                try {
+                    buildScene();
+                    loop();
+                } finally {
+                    if (botCheck != null) botCheck.cancel();
+                    if (renderer != null) renderer.close();
+                }
+            }
+        }
+        // A normal exit: the recovery file is no longer needed (a crash leaves it for the next start).
+        if (dialog != Dialog.RECOVERY) recovery.clear();
+        if (playFile != null) playFile.toFile().delete();
+        return editor;
+    }
+
+    private void loop() {
+        double start = glfwGetTime();
+        int frame = 0;
+        while (!window.shouldClose()) {
+            double now = glfwGetTime();
+            time = (float) (now - start);
+            window.pollEvents();
+            if (frame < options.scriptedKeys().size()) {
+                int[] k = options.scriptedKeys().get(frame);
+                onKey(k[0], k[1]);
+            }
+            int fw = window.framebufferWidth(), fh = window.framebufferHeight();
+            if (fw <= 0 || fh <= 0 || window.isIconified()) {
+                sleep(50);
+                continue;
+            }
+            applyChanges(now);
+            autosave(now);
+            drawFrame(fw, fh);
+            frame++;
+            if (options.frames() > 0 && frame >= Math.max(options.frames(), options.scriptedKeys().size() + 1)) {
+                if (options.screenshot() != null) saveScreenshot(options.screenshot(), fw, fh);
+                window.swapBuffers();
+                break;
+            }
+            window.swapBuffers();
+        }
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void say(String text) {
+        if (text == null) return;
+        message = text;
+        messageUntil = glfwGetTime() + 5;
+    }
+
+    // ---- Scene updates -----------------------------------------------------------------------
+
+    /** Brings the drawn scene up to date with the edits of this frame. */
+    private void applyChanges(double now) {
+        ChangeSet changes = editor.takeChanges();
+        if (!changes.isEmpty()) problemsStale = true;
+        if (rebuildScene || changes.structureChanged() || (changes.hasNodes() && !editor.isStroking())) {
+            buildScene();
+        } else {
+            if (changes.hasNodes()) {
+                int[] r = changes.nodeRange();
+                EditableCourse c = editor.course();
+                // Bicubic interpolation reaches two nodes beyond a changed node.
+                double pad = 2 * c.spacing();
+                World w = editor.world();
+                renderer.terrainPass().updateRegion(w.course(), w.terrain(), c.nodeX(r[0]) - pad, c.nodeY(r[1]) - pad,
+                        c.nodeX(r[2]) + pad, c.nodeY(r[3]) + pad);
+            }
+            if (changes.obstaclesChanged()) renderer.setObstacles(editor.course().obstacles());
+        }
+        // Validation (A* included) after the course settles, at most twice a second.
+        if (problemsStale && !editor.isStroking() && now - lastValidation > 0.5) {
+            problems = editor.validate();
+            problemsStale = false;
+            lastValidation = now;
+        }
+    }
+
+    private void buildScene() {
+        rebuildScene = false;
+        World w = editor.world();
+        if (renderer != null) renderer.close();
+        renderer = null;
+        renderer = new SceneRenderer(w.course(), w.terrain(),
+                heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN);
+        if (editor.file() != null) renderer.setCourseFolder(editor.file().toAbsolutePath().getParent());
+        if (camera == null) {
+            int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
+            camera = OrbitCamera.behindBall(w.course(), w.terrain(), (float) fw / fh);
+        }
+        String file = editor.file() == null ? "unsaved" : editor.file().getFileName().toString();
+        window.setTitle("Minigolf editor - " + w.course().name() + " (" + file + ")");
+    }
+
+    private void autosave(double now) {
+        try {
+            if (recovery.autosave(editor, now)) say("autosaved to " + recovery.file());
+        } catch (IOException | RuntimeException e) {
+            say("autosave failed: " + e.getMessage());
+        }
+    }
+
+    // ---- Input ----------------------------------------------------------------------------------
+
+    private void installInput() {
+        long h = window.handle();
+        glfwSetKeyCallback(h, (win, key, scancode, action, mods) -> {
+            if (action == GLFW_RELEASE || (imgui != null && imgui.wantsKeyboard())) return;
+            boolean repeatable = key == GLFW_KEY_W || key == GLFW_KEY_A || key == GLFW_KEY_S || key == GLFW_KEY_D;
+            if (action == GLFW_REPEAT && !repeatable) return;
+            onKey(key, mods);
+        });
+        glfwSetWindowCloseCallback(h, win -> {
+            if (editor.isDirty()) {
+                glfwSetWindowShouldClose(win, false);
+                dialog = Dialog.CONFIRM_CLOSE;
+            }
+        });
+        glfwSetMouseButtonCallback(h, (win, button, action, mods) -> {
+            boolean down = action == GLFW_PRESS;
+            double[] x = new double[1], y = new double[1];
+            glfwGetCursorPos(win, x, y);
+            lastX = x[0];
+            lastY = y[0];
+            if (down && imgui != null && imgui.wantsMouse()) return;
+            if (button == GLFW_MOUSE_BUTTON_RIGHT) rotating = down;
+            if (button == GLFW_MOUSE_BUTTON_MIDDLE) panning = down;
+            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+                if (down) toolDown(x[0], y[0]);
+                else toolUp(x[0], y[0]);
+            }
+        });
+        glfwSetCursorPosCallback(h, (win, x, y) -> {
+            if (!cursorSeen) { // the first event only says where the pointer already was (e.g. under Xvfb)
+                cursorSeen = true;
+                lastX = x;
+                lastY = y;
+                return;
+            }
+            float dx = (float) (x - lastX), dy = (float) (y - lastY);
+            lastX = x;
+            lastY = y;
+            if (rotating) {
+                camera.rotate(-dx * 0.006f, dy * 0.006f);
+            } else if (panning) {
+                int[] ww = new int[1], wh = new int[1];
+                glfwGetWindowSize(win, ww, wh);
+                camera.pan(dx, dy, Math.max(1, wh[0]));
+            } else if (imgui == null || !imgui.wantsMouse()) {
+                toolMove(x, y);
+            }
+        });
+        glfwSetScrollCallback(h, (win, xoff, yoff) -> {
+            if (imgui == null || !imgui.wantsMouse()) camera.zoom((float) yoff);
+        });
+    }
+
+    /** One key press (the GLFW callback and scripted input both end here). */
+    public void onKey(int key, int mods) {
+        boolean ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+        if (ctrl) {
+            switch (key) {
+                case GLFW_KEY_Z -> say(tool.press(EditorKey.UNDO));
+                case GLFW_KEY_Y -> say(tool.press(EditorKey.REDO));
+                case GLFW_KEY_S -> save();
+                default -> {
+                }
+            }
+            return;
+        }
+        EditorKey k = switch (key) {
+            case GLFW_KEY_W -> EditorKey.UP;
+            case GLFW_KEY_A -> EditorKey.LEFT;
+            case GLFW_KEY_S -> EditorKey.DOWN;
+            case GLFW_KEY_D -> EditorKey.RIGHT;
+            case GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT -> EditorKey.TOGGLE_TOOL;
+            case GLFW_KEY_M -> EditorKey.WALL;
+            case GLFW_KEY_B -> EditorKey.TREE;
+            case GLFW_KEY_ENTER, GLFW_KEY_KP_ENTER -> EditorKey.PLACE;
+            case GLFW_KEY_P -> EditorKey.DELETE;
+            case GLFW_KEY_Q -> EditorKey.ROTATE_LEFT;
+            case GLFW_KEY_E -> EditorKey.ROTATE_RIGHT;
+            default -> null;
+        };
+        if (k != null) {
+            say(tool.press(k));
+            return;
+        }
+        switch (key) {
+            case GLFW_KEY_H -> toggleHeightMap();
+            case GLFW_KEY_R -> camera.reset();
+            case GLFW_KEY_F11 -> window.toggleFullscreen();
+            default -> {
+            }
+        }
+    }
+
+    private void toggleHeightMap() {
+        heightMap = !heightMap;
+        renderer.terrainPass().setColorMode(heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN);
+    }
+
+    private void toolDown(double cx, double cy) {
+        double[] p = pick(cx, cy);
+        if (p == null) return;
+        tool.moveTo(p[0], p[1]);
+        if (tool.isBrushAction()) {
+            editor.beginStroke(tool.brush(), p[0], p[1], tool.radius, tool.strength);
+            stroking = true;
+            lastDabX = p[0];
+            lastDabY = p[1];
+            return;
+        }
+        if (tool.mode() == ToolController.Mode.OBJECT) {
+            int k = editor.obstacleNear(p[0], p[1], ToolController.PICK_DISTANCE);
+            if (k >= 0) { // drag an existing object
+                selected = k;
+                dragObject = k;
+                dragging = true;
+                dragStartX = p[0];
+                dragStartY = p[1];
+                return;
+            }
+        }
+        say(tool.applyAt(p[0], p[1]));
+    }
+
+    private void toolMove(double cx, double cy) {
+        double[] p = pick(cx, cy);
+        if (p == null) return;
+        tool.moveTo(p[0], p[1]);
+        if (stroking && Math.hypot(p[0] - lastDabX, p[1] - lastDabY) >= 0.25 * tool.radius) {
+            editor.dab(p[0], p[1]);
+            lastDabX = p[0];
+            lastDabY = p[1];
+        }
+    }
+
+    private void toolUp(double cx, double cy) {
+        if (stroking) {
+            stroking = false;
+            editor.endStroke();
+        }
+        if (dragging) {
+            dragging = false;
+            double[] p = pick(cx, cy);
+            if (p != null && Math.hypot(p[0] - dragStartX, p[1] - dragStartY) > 1e-3) {
+                editor.moveObstacle(dragObject, p[0] - dragStartX, p[1] - dragStartY);
+            }
+            dragObject = -1;
+        }
+    }
+
+    /** Cursor (window coordinates) to the terrain point under it, or null. */
+    private double[] pick(double cx, double cy) {
+        if (camera == null) return null;
+        int[] ww = new int[1], wh = new int[1];
+        glfwGetWindowSize(window.handle(), ww, wh);
+        int fw = window.framebufferWidth(), fh = window.framebufferHeight();
+        double x = cx * fw / Math.max(1, ww[0]), y = cy * fh / Math.max(1, wh[0]);
+        float nx = (float) (2 * x / fw - 1), ny = (float) (1 - 2 * y / fh);
+        Matrix4f inv = camera.viewProjection((float) fw / fh, new Matrix4f()).invert();
+        Vector4f near = new Vector4f(nx, ny, -1, 1).mul(inv), far = new Vector4f(nx, ny, 1, 1).mul(inv);
+        near.div(near.w);
+        far.div(far.w);
+        World w = editor.world();
+        return TerrainPicker.pick(w.terrain(), w.bounds(), near.x, near.y, near.z, far.x - near.x, far.y - near.y,
+                far.z - near.z, 0.5 * editor.course().spacing());
+    }
+
+    // ---- Actions --------------------------------------------------------------------------------
+
+    private void save() {
+        if (editor.file() == null) {
+            dialog = Dialog.SAVE_AS;
+            return;
+        }
+        saveTo(editor.file());
+    }
+
+    private boolean saveTo(Path file) {
+        try {
+            editor.saveAs(file);
+            say("saved " + file);
+            rebuildScene = true; // the title shows the file
+            return true;
+        } catch (CourseException e) {
+            say(e.getMessage());
+            problems = editor.validate();
+            return false;
+        }
+    }
+
+    private void playIt() {
+        try {
+            Course c = editor.toCourse();
+            Path folder = editor.file() != null ? editor.file().toAbsolutePath().getParent() : options.recoveryDir();
+            java.nio.file.Files.createDirectories(folder);
+            playFile = folder.resolve(".editor-play.json");
+            CourseWriter.save(c, playFile);
+            ProcessLauncher.start("play", playFile.toString());
+            say("the game opens in its own window");
+        } catch (IOException | CourseException e) {
+            say("cannot play: " + e.getMessage());
+        }
+    }
+
+    private void askBot() {
+        List<String> names = BotCatalog.names();
+        if (names.isEmpty()) return;
+        ShotPlanner planner = BotCatalog.planner(names.get(Math.min(botChoice.get(), names.size() - 1)));
+        if (botCheck != null) botCheck.cancel();
+        botCheck = BotCheck.start(planner, editor.world(), SimulationSettings.DEFAULT, 12, 1);
+    }
+
+    private void replaceEditor(CourseEditor next) {
+        editor.endStroke();
+        editor = next;
+        tool = new ToolController(next);
+        camera = null;
+        selected = -1;
+        fieldsVersion = -1;
+        problemsStale = true;
+        rebuildScene = true;
+    }
+
+    // ---- Drawing --------------------------------------------------------------------------------
+
+    private void drawFrame(int fw, int fh) {
+        if (message != null && glfwGetTime() > messageUntil) message = null;
+        renderer.render(camera, fw, fh, time);
+        int mini = Math.min(fw, fh) / 5;
+        renderer.renderMinimap(fw - mini - 12, 40, mini, fw, fh);
+        glViewport(0, 0, fw, fh);
+        imgui.newFrame();
+        drawMarkers(fw, fh);
+        menuBar();
+        toolsPanel(fh);
+        coursePanel(fw, fh);
+        statusLine(fw, fh);
+        dialogs(fw, fh);
+        imgui.render();
+    }
+
+    /** Screen position of a point on the course, in ImGui (framebuffer, top-left) pixels; null behind the camera. */
+    private float[] screen(double x, double y, double z) {
+        return camera.project(new Vector3f((float) x, (float) y, (float) z), window.framebufferWidth(), window.framebufferHeight());
+    }
+
+    private void drawMarkers(int fw, int fh) {
+        ImDrawList dl = ImGui.getBackgroundDrawList();
+        World w = editor.world();
+        // The tool: a ring on the terrain (the brush radius) or a cross for the object tool.
+        double tx = tool.x(), ty = tool.y();
+        int toolColour = tool.mode() == ToolController.Mode.TERRAIN ? 0xFF40E0FF : 0xFFFF9040; // ABGR
+        double r = tool.mode() == ToolController.Mode.TERRAIN ? tool.radius : ToolController.PICK_DISTANCE;
+        float[] prev = null;
+        for (int k = 0; k <= 48; k++) {
+            double a = 2 * Math.PI * k / 48, x = tx + r * Math.cos(a), y = ty + r * Math.sin(a);
+            float[] s = screen(x, y, w.terrain().height(x, y) + 0.01);
+            if (s != null && prev != null) dl.addLine(prev[0], prev[1], s[0], s[1], toolColour, 2f);
+            prev = s;
+        }
+        float[] c = screen(tx, ty, w.terrain().height(tx, ty));
+        if (c != null) {
+            dl.addLine(c[0] - 8, c[1], c[0] + 8, c[1], toolColour, 2f);
+            dl.addLine(c[0], c[1] - 8, c[0], c[1] + 8, toolColour, 2f);
+        }
+        // Start: a labelled ring (the ball is drawn by the renderer).
+        Vec2 st = w.course().start();
+        float[] s = screen(st.x(), st.y(), w.terrain().height(st.x(), st.y()));
+        if (s != null) {
+            dl.addCircle(s[0], s[1], 10, 0xFFFFFFFF, 20, 2f);
+            dl.addText(s[0] + 12, s[1] - 8, 0xFFFFFFFF, "start");
+        }
+        if (selected >= 0 && selected < editor.course().obstacles().size()) {
+            Vec2 oc = ObstacleTools.center(editor.course().obstacles().get(selected));
+            float[] o = screen(oc.x(), oc.y(), w.terrain().height(oc.x(), oc.y()) + 0.05);
+            if (o != null) dl.addCircle(o[0], o[1], 14, 0xFF00FFFF, 24, 3f);
+        }
+        // Validation problems where they are.
+        for (Problem p : problems) {
+            float[] q = screen(p.x(), p.y(), Math.max(0, w.terrain().height(p.x(), p.y())));
+            if (q == null) continue;
+            dl.addCircle(q[0], q[1], 18, 0xFF2020FF, 24, 4f);
+            dl.addLine(q[0] - 12, q[1] - 12, q[0] + 12, q[1] + 12, 0xFF2020FF, 4f);
+            dl.addLine(q[0] - 12, q[1] + 12, q[0] + 12, q[1] - 12, 0xFF2020FF, 4f);
+            dl.addText(q[0] + 20, q[1] + 14, 0xFF4040FF, p.message());
+        }
+    }
+
+    private void menuBar() {
+        if (!ImGui.beginMainMenuBar()) return;
+        if (ImGui.beginMenu("File")) {
+            if (ImGui.menuItem("New...", "")) dialog = Dialog.NEW;
+            if (ImGui.menuItem("Open...", "")) dialog = Dialog.OPEN;
+            if (ImGui.menuItem("Save", "Ctrl+S")) save();
+            if (ImGui.menuItem("Save as...", "")) dialog = Dialog.SAVE_AS;
+            if (ImGui.menuItem("Quit", "")) {
+                if (editor.isDirty()) dialog = Dialog.CONFIRM_CLOSE;
+                else glfwSetWindowShouldClose(window.handle(), true);
+            }
+            ImGui.endMenu();
+        }
+        if (ImGui.beginMenu("Edit")) {
+            String u = editor.undoLabel(), r = editor.redoLabel();
+            if (ImGui.menuItem("Undo " + (u == null ? "" : u), "Ctrl+Z", false, u != null)) say(tool.press(EditorKey.UNDO));
+            if (ImGui.menuItem("Redo " + (r == null ? "" : r), "Ctrl+Y", false, r != null)) say(tool.press(EditorKey.REDO));
+            ImGui.endMenu();
+        }
+        if (ImGui.beginMenu("View")) {
+            if (ImGui.menuItem("Height map", "H", heightMap, true)) toggleHeightMap();
+            if (ImGui.menuItem("Reset camera", "R")) camera.reset();
+            ImGui.endMenu();
+        }
+        if (ImGui.beginMenu("Test")) {
+            if (ImGui.menuItem("Play it", "")) playIt();
+            if (ImGui.menuItem("Ask a bot", "")) askBot();
+            ImGui.endMenu();
+        }
+        ImGui.endMainMenuBar();
+    }
+
+    private void toolsPanel(int fh) {
+        ImGui.setNextWindowPos(8, 32, ImGuiCond.Always);
+        ImGui.setNextWindowSize(300, 0, ImGuiCond.Always);
+        ImGui.begin("Tools", ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoResize | ImGuiWindowFlags.NoCollapse);
+        if (ImGui.radioButton("Terrain tool", tool.mode() == ToolController.Mode.TERRAIN)) tool.setMode(ToolController.Mode.TERRAIN);
+        ImGui.sameLine();
+        if (ImGui.radioButton("Object tool", tool.mode() == ToolController.Mode.OBJECT)) tool.setMode(ToolController.Mode.OBJECT);
+        ImGui.textDisabled("SHIFT switches, WASD moves, ENTER applies");
+        ImGui.separator();
+        if (tool.mode() == ToolController.Mode.TERRAIN) {
+            ToolController.TerrainAction[] all = ToolController.TerrainAction.values();
+            for (int i = 0; i < all.length; i++) {
+                if (ImGui.radioButton(ACTIONS[i], tool.action() == all[i])) tool.setAction(all[i]);
+                if (i % 2 == 0) ImGui.sameLine(150);
+            }
+            ImGui.separator();
+            float[] rad = {(float) tool.radius}, str = {(float) tool.strength};
+            if (ImGui.sliderFloat("Radius m", rad, 0.05f, 3f, "%.2f")) tool.radius = rad[0];
+            if (ImGui.sliderFloat("Strength", str, 0.005f, 1f, "%.3f")) tool.strength = str[0];
+            ImDouble hh = new ImDouble(tool.typedHeight), k = new ImDouble(tool.typedKinetic), s = new ImDouble(tool.typedStatic);
+            if (ImGui.inputDouble("Height m", hh)) tool.typedHeight = hh.get();
+            if (ImGui.inputDouble("Typed mu_k", k)) tool.typedKinetic = k.get();
+            if (ImGui.inputDouble("Typed mu_s", s)) tool.typedStatic = s.get();
+            EditableCourse c = editor.course();
+            int ni = c.nearestColumn(tool.x()), nj = c.nearestRow(tool.y());
+            ImGui.text(String.format(Locale.ROOT, "Node (%d, %d): h = %.3f m", ni, nj, c.height(ni, nj)));
+            ImGui.text(String.format(Locale.ROOT, "mu_k %.3f  mu_s %.3f", c.kineticFriction(ni, nj), c.staticFriction(ni, nj)));
+        } else {
+            for (int i = 0; i < KINDS.length; i++) {
+                if (ImGui.radioButton(KINDS[i], tool.kind() == ToolController.ObjectKind.values()[i])) {
+                    tool.setKind(ToolController.ObjectKind.values()[i]);
+                }
+                ImGui.sameLine();
+            }
+            ImGui.newLine();
+            ImGui.textDisabled("M wall, B tree, ENTER places, P deletes, Q/E turn");
+            float[] len = {(float) tool.wallLength}, tr = {(float) tool.treeRadius}, bs = {(float) tool.boxSize};
+            if (ImGui.sliderFloat("Wall length", len, 0.2f, 5f, "%.2f")) tool.wallLength = len[0];
+            if (ImGui.sliderFloat("Tree radius", tr, 0.05f, 0.5f, "%.2f")) tool.treeRadius = tr[0];
+            if (ImGui.sliderFloat("Box size", bs, 0.1f, 2f, "%.2f")) tool.boxSize = bs[0];
+        }
+        ImGui.separator();
+        List<Obstacle> list = editor.course().obstacles();
+        ImGui.text("Objects: " + list.size() + " of at most " + editor.maxObstacles());
+        for (int i = 0; i < list.size() && i < 200; i++) {
+            Vec2 oc = ObstacleTools.center(list.get(i));
+            String label = String.format(Locale.ROOT, "%d %s (%.2f, %.2f)##o%d", i, ObstacleTools.describe(list.get(i)), oc.x(), oc.y(), i);
+            if (ImGui.selectable(label, i == selected)) selected = i;
+        }
+        if (selected >= 0 && selected < list.size()) {
+            if (ImGui.button("Turn left")) editor.rotateObstacle(selected, ToolController.ROTATE_STEP_DEG);
+            ImGui.sameLine();
+            if (ImGui.button("Turn right")) editor.rotateObstacle(selected, -ToolController.ROTATE_STEP_DEG);
+            ImGui.sameLine();
+            if (ImGui.button("Delete")) {
+                editor.removeObstacle(selected);
+                selected = -1;
+            }
+        }
+        ImGui.end();
+    }
+
+    private void syncFields() {
+        if (fieldsVersion == editor.version()) return;
+        fieldsVersion = editor.version();
+        Course c = editor.toCourse();
+        startX.set(c.start().x());
+        startY.set(c.start().y());
+        holeX.set(c.hole().position().x());
+        holeY.set(c.hole().position().y());
+        holeRadius.set(c.hole().radius());
+        holeRule.set(c.hole().rule().ordinal());
+        gravity.set(c.physics().gravity());
+        kinetic.set(c.physics().kineticFriction());
+        statics.set(c.physics().staticFriction());
+        maxSpeed.set(c.physics().maxSpeed());
+        maxObjects.set(editor.maxObstacles());
+        courseName.set(c.name());
+    }
+
+    private void coursePanel(int fw, int fh) {
+        syncFields();
+        ImGui.setNextWindowPos(fw - 8, fh - 48, ImGuiCond.Always, 1f, 1f);
+        ImGui.setNextWindowSize(330, 0, ImGuiCond.Always);
+        ImGui.begin("Course", ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
+        try {
+            ImGui.inputText("Name", courseName);
+            if (ImGui.isItemDeactivatedAfterEdit()) editor.setName(courseName.get());
+            ImGui.inputDouble("Start x", startX);
+            ImGui.inputDouble("Start y", startY);
+            if (ImGui.button("Set start")) editor.setStart(startX.get(), startY.get());
+            ImGui.inputDouble("Hole x", holeX);
+            ImGui.inputDouble("Hole y", holeY);
+            if (ImGui.button("Set hole")) editor.setHole(holeX.get(), holeY.get());
+            ImGui.inputDouble("Hole radius", holeRadius);
+            if (ImGui.isItemDeactivatedAfterEdit()) editor.setHoleRadius(holeRadius.get());
+            if (ImGui.combo("Hole rule", holeRule, new String[]{"rest", "capture"})) {
+                editor.setHoleRule(HoleRule.values()[holeRule.get()]);
+            }
+            ImGui.separator();
+            ImGui.inputDouble("Gravity", gravity);
+            ImGui.inputDouble("mu_k", kinetic);
+            ImGui.inputDouble("mu_s", statics);
+            ImGui.inputDouble("Max speed", maxSpeed);
+            if (ImGui.button("Apply physics")) {
+                PhysicsSettings p = editor.toCourse().physics();
+                editor.setPhysics(new PhysicsSettings(gravity.get(), kinetic.get(), statics.get(), maxSpeed.get(), p.model(),
+                        p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution()));
+            }
+            if (ImGui.inputInt("Max objects", maxObjects)) editor.setMaxObstacles(Math.max(0, maxObjects.get()));
+        } catch (IllegalArgumentException e) {
+            say(e.getMessage());
+            fieldsVersion = -1;
+        }
+        ImGui.separator();
+        if (problems.isEmpty()) {
+            ImGui.textColored(0.5f, 1f, 0.5f, 1f, "No problems: ready to save");
+        } else {
+            for (Problem p : problems) ImGui.textColored(1f, 0.4f, 0.4f, 1f, p.message());
+        }
+        ImGui.separator();
+        List<String> names = BotCatalog.names();
+        ImGui.setNextItemWidth(120);
+        ImGui.combo("##bot", botChoice, names.toArray(new String[0]));
+        ImGui.sameLine();
+        if (ImGui.button("Ask a bot")) askBot();
+        ImGui.sameLine();
+        if (ImGui.button("Play it")) playIt();
+        if (botCheck != null) {
+            if (!botCheck.isDone()) ImGui.progressBar((float) botCheck.progress(), 200, 0, "bot playing...");
+            else if (botCheck.result() != null) ImGui.text(botCheck.result().describe());
+            else ImGui.text(botCheck.failure());
+        }
+        ImGui.end();
+    }
+
+    private void statusLine(int fw, int fh) {
+        ImGui.setNextWindowPos(8, fh - 8, ImGuiCond.Always, 0f, 1f);
+        ImGui.begin("##status", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+        String state = editor.isDirty() ? "unsaved changes" : "saved";
+        String tip = String.format(Locale.ROOT, "%s | tool (%.2f, %.2f) | %s%s", state, tool.x(), tool.y(),
+                tool.mode() == ToolController.Mode.TERRAIN ? "terrain: " + tool.action().label()
+                        : "object: " + tool.kind().name().toLowerCase(Locale.ROOT),
+                message != null ? " | " + message : "");
+        ImGui.text(tip);
+        ImGui.end();
+    }
+
+    private void dialogs(int fw, int fh) {
+        if (dialog == Dialog.NONE) return;
+        ImGui.setNextWindowPos(fw * 0.5f, fh * 0.5f, ImGuiCond.Always, 0.5f, 0.5f);
+        ImGui.begin("##dialog", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize);
+        switch (dialog) {
+            case NEW -> {
+                ImGui.text("New course");
+                ImGui.inputText("Name", newName);
+                ImGui.inputDouble("Width m", newWidth);
+                ImGui.inputDouble("Depth m", newDepth);
+                ImGui.inputDouble("Grid spacing m", newSpacing);
+                ImGui.inputText("Height h(x, y)", newExpression);
+                ImGui.textDisabled("empty: flat; e.g. 0.2 + 0.1*sin(x)*cos(y)");
+                if (ImGui.button("Create")) {
+                    try {
+                        replaceEditor(CourseEditor.create(newName.get(), newWidth.get(), newDepth.get(), newSpacing.get(),
+                                newExpression.get()));
+                        dialog = Dialog.NONE;
+                    } catch (IllegalArgumentException e) {
+                        say(e.getMessage());
+                    }
+                }
+                ImGui.sameLine();
+                if (ImGui.button("Cancel")) dialog = Dialog.NONE;
+            }
+            case OPEN, SAVE_AS -> {
+                ImGui.text(dialog == Dialog.OPEN ? "Open course file" : "Save course as");
+                ImGui.setNextItemWidth(420);
+                ImGui.inputText("##path", pathField);
+                if (ImGui.button(dialog == Dialog.OPEN ? "Open" : "Save")) {
+                    Path p = Path.of(pathField.get().trim());
+                    if (dialog == Dialog.OPEN) {
+                        try {
+                            replaceEditor(CourseEditor.open(p));
+                            dialog = Dialog.NONE;
+                        } catch (CourseException e) {
+                            say(e.getMessage());
+                        }
+                    } else if (saveTo(p)) {
+                        dialog = Dialog.NONE;
+                    }
+                }
+                ImGui.sameLine();
+                if (ImGui.button("Cancel")) dialog = Dialog.NONE;
+            }
+            case RECOVERY -> {
+                ImGui.text("The editor did not close cleanly last time.");
+                ImGui.text("Recover the unsaved course from " + recovery.file() + "?");
+                if (ImGui.button("Recover")) {
+                    try {
+                        replaceEditor(CourseEditor.recovered(recovery.load()));
+                        say("recovered: save it to keep it");
+                    } catch (CourseException e) {
+                        say(e.getMessage());
+                    }
+                    dialog = Dialog.NONE;
+                }
+                ImGui.sameLine();
+                if (ImGui.button("Discard")) {
+                    recovery.clear();
+                    dialog = Dialog.NONE;
+                }
+            }
+            case CONFIRM_CLOSE -> {
+                ImGui.text("The course has unsaved changes.");
+                if (ImGui.button("Save and close")) {
+                    if (editor.file() == null) dialog = Dialog.SAVE_AS;
+                    else if (saveTo(editor.file())) glfwSetWindowShouldClose(window.handle(), true);
+                }
+                ImGui.sameLine();
+                if (ImGui.button("Close without saving")) {
+                    dialog = Dialog.NONE;
+                    editor.endStroke();
+                    glfwSetWindowShouldClose(window.handle(), true);
+                }
+                ImGui.sameLine();
+                if (ImGui.button("Cancel")) dialog = Dialog.NONE;
+            }
+            default -> {
+            }
+        }
+        ImGui.end();
+    }
+
+    private void saveScreenshot(Path png, int w, int h) {
+        ByteBuffer pixels = memAlloc(w * h * 4);
+        try {
+            glReadBuffer(GL_BACK);
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+            Png.writeBottomUp(png, w, h, pixels);
+        } finally {
+            memFree(pixels);
+        }
+    }
+
+    /**
+     * A key for scripted input: a letter (W, A, S, D, M, B, P, Q, E, H), ENTER, SHIFT, or CTRL+Z,
+     * CTRL+Y, CTRL+S. Returns {glfwKey, mods}.
+     *
+     * @throws IllegalArgumentException for a name it does not know
+     */
+    public static int[] parseKey(String name) {
+        String n = name.trim().toUpperCase(Locale.ROOT);
+        int mods = 0;
+        if (n.startsWith("CTRL+")) {
+            mods = GLFW_MOD_CONTROL;
+            n = n.substring(5);
+        }
+        int key = switch (n) {
+            case "ENTER" -> GLFW_KEY_ENTER;
+            case "SHIFT" -> GLFW_KEY_LEFT_SHIFT;
+            default -> n.length() == 1 && n.charAt(0) >= 'A' && n.charAt(0) <= 'Z' ? GLFW_KEY_A + (n.charAt(0) - 'A') : -1;
+        };
+        if (key < 0) throw new IllegalArgumentException("unknown key '" + name + "' (letters, ENTER, SHIFT, CTRL+letter)");
+        return new int[]{key, mods};
+    }
+
+    /** The problems shown on the course now (for tests). */
+    public List<Problem> problems() {
+        return new ArrayList<>(problems);
+    }
+}

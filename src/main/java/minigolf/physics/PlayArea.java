@@ -1,0 +1,29 @@
+package minigolf.physics;
+
+import minigolf.course.Bounds;
+import minigolf.course.Course;
+import minigolf.course.TerrainSpec;
+
+/**
+ * Where the ball is in play: inside the bounds and not over a deleted terrain cell. A ball that
+ * leaves it is out of bounds; the stroke locates the crossing by the same bisection for both.
+ */
+public final class PlayArea {
+    private final Bounds bounds;
+    /** The grid whose deleted cells are holes in the course, or null when none is deleted. */
+    private final TerrainSpec.HeightGrid grid;
+
+    public PlayArea(Course course) {
+        this.bounds = course.bounds();
+        this.grid = course.terrain() instanceof TerrainSpec.HeightGrid g && g.deletedCount() > 0 ? g : null;
+    }
+
+    public boolean contains(double x, double y) {
+        return bounds.contains(x, y) && (grid == null || !grid.isDeletedAt(x, y));
+    }
+
+    /** Whether some cells are deleted (the area is not just the bounds' rectangle). */
+    public boolean hasDeletedCells() {
+        return grid != null;
+    }
+}

@@ -1,0 +1,158 @@
+package minigolf.render;
+
+import minigolf.collision.ObstacleGeometry;
+import minigolf.course.HeightProbe;
+import minigolf.course.Obstacle;
+import minigolf.mesh.ObjException;
+import minigolf.mesh.ObjParser;
+import minigolf.mesh.TriangleMesh;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * The obstacles' meshes on the CPU (testable without GL), in world coordinates and the
+ * position/normal/colour layout. The solid part is exactly what physics collides with: walls and
+ * boxes from {@link ObstacleGeometry#triangles}, trunks from {@link ObstacleGeometry#treeCylinder},
+ * models from their .obj triangles placed the same way. Tree crowns are decoration (not solid) and
+ * kept apart, so the minimap can show only what the ball hits.
+ */
+public final class ObstacleMeshes {
+    public static final float[] WALL_COLOR = {0.60f, 0.47f, 0.32f};
+    public static final float[] BOX_COLOR = {0.68f, 0.40f, 0.30f};
+    public static final float[] TRUNK_COLOR = {0.40f, 0.28f, 0.17f};
+    /** Sides of the drawn trunk polygon (the physics cylinder is round; 16 sides differ by under 2%). */
+    public static final int TRUNK_SEGMENTS = 16;
+    /** The crown's radius relative to the trunk's height, and its least size relative to the trunk's radius. */
+    static final double CROWN_PER_HEIGHT = 0.32, CROWN_PER_RADIUS = 2.5;
+
+    /** The solid obstacles and the decorative crowns; either may have no triangles. */
+    public record Built(MeshData solid, MeshData decoration) {
+    }
+
+    private ObstacleMeshes() {
+    }
+
+    /**
+     * Builds both meshes. {@code modelMaterials} gives the colours of a model obstacle's materials
+     * (see {@link MaterialLibrary#forModel}).
+     */
+    public static Built build(List<Obstacle> obstacles, HeightProbe ground,
+                              Function<Obstacle.Model, MaterialLibrary> modelMaterials) {
+        Writer solid = new Writer(), crowns = new Writer();
+        Crown crown = Crown.get();
+        for (Obstacle o : obstacles) {
+            if (o instanceof Obstacle.Tree tree) {
+                double[] c = ObstacleGeometry.treeCylinder(tree, ground);
+                solid.append(Shapes.cylinder(c[0], c[1], c[3], c[4], c[2], TRUNK_SEGMENTS,
+                        TRUNK_COLOR[0], TRUNK_COLOR[1], TRUNK_COLOR[2]));
+                double size = Math.max(CROWN_PER_HEIGHT * tree.height(), CROWN_PER_RADIUS * c[2]);
+                // Each tree turns its crown by an angle from its position, so a wood does not repeat itself.
+                double turn = Math.floorMod((long) Math.floor(c[0] * 1000 + c[1] * 7919), 360);
+                crowns.model(crown.mesh, crown.materials, c[0], c[1], c[4] + 0.85 * size, turn, size);
+            } else if (o instanceof Obstacle.Model m) {
+                solid.model(m.mesh(), modelMaterials.apply(m), m.position().x(), m.position().y(), m.position().z(),
+                        m.rotationDeg(), m.scale());
+            } else {
+                float[] colour = o instanceof Obstacle.Wall ? WALL_COLOR : BOX_COLOR;
+                solid.flatTriangles(ObstacleGeometry.triangles(o, ground), colour);
+            }
+        }
+        return new Built(solid.build(), crowns.build());
+    }
+
+    /** The decorative tree crown, loaded once from the classpath. */
+    private record Crown(TriangleMesh mesh, MaterialLibrary materials) {
+        private static Crown instance;
+
+        static synchronized Crown get() {
+            if (instance == null) {
+                try (InputStream in = ObstacleMeshes.class.getResourceAsStream("/models/tree-crown.obj")) {
+                    if (in == null) throw new RenderException("missing resource /models/tree-crown.obj", null);
+                    instance = new Crown(ObjParser.parse(in), MaterialLibrary.resource("/models/tree-crown.mtl"));
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
+                } catch (ObjException e) {
+                    throw new RenderException("/models/tree-crown.obj: " + e.getMessage(), e);
+                }
+            }
+            return instance;
+        }
+    }
+
+    /** Appends triangles to one growing PNC vertex array (no indices shared: 0, 1, 2, ...). */
+    private static final class Writer {
+        private float[] v = new float[9 * 3 * 64];
+        private int floats;
+
+        private void ensure(int more) {
+            if (floats + more > v.length) v = java.util.Arrays.copyOf(v, Math.max(2 * v.length, floats + more));
+        }
+
+        private void vertex(double x, double y, double z, double nx, double ny, double nz, float[] c) {
+            ensure(9);
+            floats = Shapes.putPnc(v, floats, x, y, z, nx, ny, nz, c[0], c[1], c[2]);
+        }
+
+        /** World triangles (9 doubles each), each lit with its own face normal; tops a little lighter. */
+        void flatTriangles(double[] t, float[] colour) {
+            float[] top = {Math.min(1, colour[0] * 1.18f), Math.min(1, colour[1] * 1.18f), Math.min(1, colour[2] * 1.18f)};
+            for (int k = 0; k + 8 < t.length; k += 9) {
+                double ux = t[k + 3] - t[k], uy = t[k + 4] - t[k + 1], uz = t[k + 5] - t[k + 2];
+                double wx = t[k + 6] - t[k], wy = t[k + 7] - t[k + 1], wz = t[k + 8] - t[k + 2];
+                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                double l = Math.sqrt(nx * nx + ny * ny + nz * nz);
+                if (l == 0) continue; // degenerate: nothing to see
+                nx /= l;
+                ny /= l;
+                nz /= l;
+                float[] c = Math.abs(nz) > 0.9 ? top : colour;
+                for (int p = 0; p < 3; p++) vertex(t[k + 3 * p], t[k + 3 * p + 1], t[k + 3 * p + 2], nx, ny, nz, c);
+            }
+        }
+
+        /** Indexed PNC data appended as plain triangles. */
+        void append(MeshData d) {
+            int stride = d.stride();
+            for (int i : d.indices()) {
+                ensure(stride);
+                System.arraycopy(d.vertices(), i * stride, v, floats, stride);
+                floats += stride;
+            }
+        }
+
+        /**
+         * A mesh placed as a model obstacle is: p to (x, y, z) + Rz(rotationDeg)(scale p), the same
+         * arithmetic as ObstacleGeometry, coloured by each part's material.
+         */
+        void model(TriangleMesh mesh, MaterialLibrary materials, double x, double y, double z, double rotationDeg, double scale) {
+            double a = Math.toRadians(rotationDeg), cos = Math.cos(a), sin = Math.sin(a);
+            float[] p = mesh.positions(), n = mesh.normals();
+            int[] idx = mesh.indices();
+            float[][] colourOfTriangle = new float[idx.length / 3][];
+            for (TriangleMesh.Part part : mesh.parts()) {
+                float[] c = materials.color(part.material());
+                for (int t = part.firstTriangle(); t < part.firstTriangle() + part.triangleCount(); t++) colourOfTriangle[t] = c;
+            }
+            double flip = Math.signum(scale) == 0 ? 1 : Math.signum(scale);
+            for (int k = 0; k < idx.length; k++) {
+                int i = idx[k];
+                double px = scale * p[3 * i], py = scale * p[3 * i + 1], pz = scale * p[3 * i + 2];
+                double nx = flip * n[3 * i], ny = flip * n[3 * i + 1], nz = flip * n[3 * i + 2];
+                float[] c = colourOfTriangle[k / 3] != null ? colourOfTriangle[k / 3] : MaterialLibrary.DEFAULT_COLOR;
+                vertex(x + cos * px - sin * py, y + sin * px + cos * py, z + pz,
+                        cos * nx - sin * ny, sin * nx + cos * ny, nz, c);
+            }
+        }
+
+        MeshData build() {
+            float[] vertices = java.util.Arrays.copyOf(v, floats);
+            int[] indices = new int[floats / 9];
+            for (int i = 0; i < indices.length; i++) indices[i] = i;
+            return new MeshData(MeshData.PNC, vertices, indices);
+        }
+    }
+}

@@ -1,0 +1,143 @@
+package minigolf.render;
+
+import minigolf.course.HeightProbe;
+import minigolf.course.Obstacle;
+import org.joml.Matrix3f;
+import org.joml.Matrix4f;
+
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The course's obstacles (walls, boxes, trunks, models) and the trees' decorative crowns, each
+ * group one static mesh in world coordinates (one draw call for 200 obstacles). Rebuilt by
+ * {@link #setObstacles} when the course changes (the editor places, moves and deletes them live).
+ */
+public final class ObstaclesPass implements RenderPass {
+    private final HeightProbe ground;
+    private final ShaderProgram shader = ShaderProgram.load("object");
+    private final Matrix4f identity = new Matrix4f();
+    private final Matrix3f normalMatrix = new Matrix3f();
+    private final Map<String, MaterialLibrary> materials = new HashMap<>();
+    private Path courseFolder;
+    private List<Obstacle> obstacles = List.of();
+    private Mesh solid;
+    private Mesh decoration;
+    private double top = Double.NEGATIVE_INFINITY;
+    private int solidTriangles, decorationTriangles;
+
+    public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
+        this.ground = ground;
+        try {
+            setObstacles(obstacles);
+        } catch (RuntimeException e) {
+            close();
+            throw e;
+        }
+    }
+
+    /** Replaces the drawn obstacles (null or empty: none). */
+    public void setObstacles(List<Obstacle> list) {
+        obstacles = list == null ? List.of() : List.copyOf(list);
+        ObstacleMeshes.Built built = ObstacleMeshes.build(obstacles, ground, this::materialsOf);
+        freeMeshes();
+        solidTriangles = built.solid().triangleCount();
+        decorationTriangles = built.decoration().triangleCount();
+        solid = solidTriangles > 0 ? new Mesh(built.solid()) : null;
+        decoration = decorationTriangles > 0 ? new Mesh(built.decoration()) : null;
+        top = Math.max(highest(built.solid()), highest(built.decoration()));
+    }
+
+    /** Where model obstacles' .mtl files are looked for before the classpath (the course file's folder); rebuilds. */
+    public void setCourseFolder(Path folder) {
+        courseFolder = folder;
+        materials.clear();
+        setObstacles(obstacles);
+    }
+
+    public List<Obstacle> obstacles() {
+        return obstacles;
+    }
+
+    /** Triangles drawn for the solid obstacles and for the crowns. */
+    public int solidTriangles() {
+        return solidTriangles;
+    }
+
+    public int decorationTriangles() {
+        return decorationTriangles;
+    }
+
+    /** The highest point of anything drawn here, or -infinity when there is nothing. */
+    public double top() {
+        return top;
+    }
+
+    private MaterialLibrary materialsOf(Obstacle.Model m) {
+        return materials.computeIfAbsent(m.file(), f -> MaterialLibrary.forModel(f, m.mesh(), courseFolder));
+    }
+
+    private static double highest(MeshData d) {
+        double max = Double.NEGATIVE_INFINITY;
+        float[] v = d.vertices();
+        for (int i = 2; i < v.length; i += 9) max = Math.max(max, v[i]);
+        return max;
+    }
+
+    @Override
+    public void render(FrameContext frame) {
+        if (solid == null && decoration == null) return;
+        begin(frame);
+        if (solid != null) {
+            shader.set("uSpecularStrength", 0.12f);
+            shader.set("uShininess", 16f);
+            solid.draw();
+        }
+        if (decoration != null) {
+            shader.set("uSpecularStrength", 0.05f);
+            shader.set("uShininess", 8f);
+            decoration.draw();
+        }
+    }
+
+    /** The minimap shows only what the ball can hit (no crowns, which would hide the trunks). */
+    void renderMinimap(FrameContext frame) {
+        if (solid == null) return;
+        begin(frame);
+        shader.set("uSpecularStrength", 0f);
+        shader.set("uShininess", 8f);
+        solid.draw();
+    }
+
+    /** Draws everything here into the shadow map (the depth shader is in use). */
+    void drawDepth(ShaderProgram depthShader) {
+        depthShader.set("uModel", identity);
+        if (solid != null) solid.draw();
+        if (decoration != null) decoration.draw();
+    }
+
+    private void begin(FrameContext frame) {
+        shader.use();
+        shader.set("uViewProjection", frame.viewProjection);
+        shader.set("uClipPlane", frame.clipPlane);
+        Lighting.apply(shader, frame);
+        shader.set("uModel", identity);
+        shader.set("uNormalMatrix", identity.normal(normalMatrix));
+        shader.set("uTint", 1f, 1f, 1f);
+    }
+
+    private void freeMeshes() {
+        if (solid != null) solid.close();
+        if (decoration != null) decoration.close();
+        solid = null;
+        decoration = null;
+    }
+
+    @Override
+    public void close() {
+        freeMeshes();
+        shader.close();
+    }
+}
