@@ -149,7 +149,7 @@ public final class SavedGames {
                 throw f.error(p, e.getMessage());
             }
             double[] ball = f.vec(o, p, "ball");
-            if (!world.bounds().contains(ball[0], ball[1])) throw f.error(p + ".ball", "lies outside the course bounds");
+            if (!world.playArea().contains(ball[0], ball[1])) throw f.error(p + ".ball", "lies outside the course (its bounds or a deleted cell)");
             int strokes = f.integer(o, p, "strokes", 0, 10_000);
             int penalties = f.integer(o, p, "penalties", 0, strokes);
             PlayerStatus status = PlayerStatus.fromJsonName(f.text(o, p, "status"));

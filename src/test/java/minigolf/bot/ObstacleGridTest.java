@@ -105,4 +105,14 @@ class ObstacleGridTest {
             assertTrue(cut, "column at x = " + x);
         }
     }
+
+    @Test
+    void deletedTerrainCellsAreLostLikeTheOutsideOfTheBounds() {
+        // The physics test's flat 10 x 4 m grid with the cell column 6 <= x < 7 deleted.
+        World world = World.of(minigolf.physics.DeletedCellsTest.flat(6, 10));
+        assertFalse(CourseGrid.lost(world, 5.9, 2));
+        assertTrue(CourseGrid.lost(world, 6.5, 2));
+        assertTrue(CourseGrid.isBlocked(world, 6.5, 2));
+        assertFalse(CourseGrid.lost(world, 7.1, 2));
+    }
 }

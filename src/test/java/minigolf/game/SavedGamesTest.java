@@ -78,7 +78,7 @@ class SavedGamesTest {
                 () -> SavedGames.parse(good.replace("minigolf-saved-game", "course"), "x.json"));
         assertProblem("x.json: players[1].kind: must be human or bot",
                 () -> SavedGames.parse(good.replace("\"bot\",", "\"robot\","), "x.json"));
-        assertProblem("x.json: players[0].ball: lies outside the course bounds",
+        assertProblem("x.json: players[0].ball: lies outside the course (its bounds or a deleted cell)",
                 () -> SavedGames.parse(good.replaceFirst("\"ball\" : \\[ -3\\.0", "\"ball\" : [ -30.0"), "x.json"));
         assertProblem("x.json: course.hole.radius: must be > 0, got -0.1",
                 () -> SavedGames.parse(good.replace("\"radius\" : 0.1", "\"radius\" : -0.1"), "x.json"));

@@ -16,9 +16,9 @@ import minigolf.course.Vec2;
 import org.junit.jupiter.api.Test;
 
 /** A deleted grid cell is out of bounds, located exactly as the edge of the bounds is. */
-class DeletedCellsTest {
+public class DeletedCellsTest {
     /** A flat 10 x 4 m grid (1 m cells) at h = 0.1, mu_k 0.1; column {@code deletedColumn} of cells removed (-1: none). */
-    static Course flat(int deletedColumn, double maxX) {
+    public static Course flat(int deletedColumn, double maxX) {
         double[][] h = new double[5][11];
         for (double[] row : h) java.util.Arrays.fill(row, 0.1);
         boolean[][] mask = null;

@@ -155,9 +155,9 @@ public final class CourseGrid {
         return lost(world, x, y) || ObstacleFootprint.of(world).kind(x, y, 0) != ObstacleFootprint.FREE;
     }
 
-    /** Whether a ball at (x, y) is lost: in water or out of bounds. */
+    /** Whether a ball at (x, y) is lost: in water or out of bounds (outside the bounds or on a deleted cell). */
     public static boolean lost(World world, double x, double y) {
-        return !world.bounds().contains(x, y) || world.terrain().height(x, y) < 0;
+        return !world.playArea().contains(x, y) || world.terrain().height(x, y) < 0;
     }
 
     public World world() {
