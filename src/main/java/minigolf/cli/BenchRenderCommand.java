@@ -6,6 +6,7 @@ import java.util.concurrent.Callable;
 import minigolf.physics.World;
 import minigolf.render.Offscreen;
 import minigolf.render.OrbitCamera;
+import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import picocli.CommandLine.Command;
@@ -31,8 +32,15 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Option(names = "--size", paramLabel = "WxH", description = "Frame size (default 1280x720).")
     String size = "1280x720";
 
-    @Option(names = "--samples", paramLabel = "N", description = "Multisampling, as the game window's (default 4; 0 off).")
-    int samples = 4;
+    @Option(names = "--samples", paramLabel = "N", description = "Multisampling (default: the quality's, as the game window's; 0 off).")
+    Integer samples;
+
+    @Option(names = "--quality", paramLabel = "Q",
+            description = "auto (default: as the game picks it from GL_RENDERER), high (real GPUs) or software (llvmpipe).")
+    String quality = "auto";
+
+    @Option(names = "--water-scale", paramLabel = "S", description = "The water targets' size relative to the frame (default: the quality's).")
+    Float waterScale;
 
     @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction.")
     boolean noReflections;
@@ -43,12 +51,21 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         if (frames < 1) throw new UserError("--frames: must be at least 1, got " + frames);
-        if (samples < 0 || samples > 16) throw new UserError("--samples: must be 0 to 16, got " + samples);
+        if (samples != null && (samples < 0 || samples > 16)) throw new UserError("--samples: must be 0 to 16, got " + samples);
+        if (waterScale != null && !(waterScale >= 0.1f && waterScale <= 1f)) throw new UserError("--water-scale: must be 0.1 to 1, got " + waterScale);
+        RenderQuality chosen = RenderQuality.named(quality);
+        if (chosen == null && !quality.equalsIgnoreCase("auto")) {
+            throw new UserError("--quality: must be auto, high or software, got '" + quality + "'");
+        }
         ImageSize s = ImageSize.parse("--size", size);
         World world = CourseArgument.load(course);
         ObjectNode out = Json.object();
-        try (Offscreen off = new Offscreen(s.width(), s.height(), samples);
-             SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN)) {
+        RenderQuality q = chosen != null ? chosen : RenderQuality.probe();
+        int msaa = samples != null ? samples : q.samples();
+        try (Offscreen off = new Offscreen(s.width(), s.height(), msaa);
+             SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN, q)) {
+            renderer.setCourseFolder(course.toAbsolutePath().getParent());
+            if (waterScale != null) renderer.setWaterTargetScale(waterScale);
             renderer.setWaterReflections(!noReflections);
             renderer.setShadows(!noShadows);
             OrbitCamera camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) s.width() / s.height());
@@ -64,7 +81,9 @@ final class BenchRenderCommand implements Callable<Integer> {
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);
             out.put("fps", Math.round(10000 / ms) / 10.0);
             out.put("size", s.width() + "x" + s.height());
-            out.put("samples", samples);
+            out.put("quality", q.name());
+            out.put("samples", msaa);
+            out.put("waterScale", renderer.waterTargetScale());
             out.put("shadows", !noShadows);
             out.put("reflections", !noReflections);
             out.put("course", world.course().name());

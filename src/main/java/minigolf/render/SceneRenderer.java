@@ -43,16 +43,22 @@ public final class SceneRenderer implements AutoCloseable {
     private final int shadowMapSize;
     private boolean shadows = true;
     /** The water's render targets' size relative to the viewport (0.5: a quarter of the pixels). */
-    private float waterTargetScale = 0.5f;
+    private float waterTargetScale;
+    /** Whether the water's mirrored and refracted scenes are shadowed too (barely visible there). */
+    private final boolean shadowsInWater;
+    /** The shadow map holds only what stands still, so it is drawn again only after a change. */
+    private boolean shadowMapDirty = true;
 
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode) {
-        this(course, surface, mode, SHADOW_MAP_SIZE);
+        this(course, surface, mode, RenderQuality.HIGH);
     }
 
-    /** As above with a shadow map of {@code shadowMapSize}² texels (see {@link RenderQuality}). */
-    public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode, int shadowMapSize) {
+    /** As above at a chosen quality (shadow map size, water targets; see {@link RenderQuality#current()}). */
+    public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode, RenderQuality quality) {
         this.course = course;
-        this.shadowMapSize = shadowMapSize;
+        this.shadowMapSize = quality.shadowMapSize();
+        this.waterTargetScale = quality.waterTargetScale();
+        this.shadowsInWater = quality.shadowsInWater();
         SkyPass s = null;
         TerrainPass t = null;
         ObstaclesPass ob = null;
@@ -112,6 +118,16 @@ public final class SceneRenderer implements AutoCloseable {
     public void setObstacles(List<Obstacle> list) {
         obstacles.setObstacles(list);
         refitShadowMap();
+        shadowMapDirty = true;
+    }
+
+    /**
+     * Redraws the sun's shadow map before the next frame. It holds the terrain, the obstacles and the
+     * flag and is drawn only when they change; call this after changing the terrain's mesh (the
+     * balls' shadows are analytic and need nothing).
+     */
+    public void invalidateShadows() {
+        shadowMapDirty = true;
     }
 
     /** The course file's folder, where model obstacles' .mtl files are looked for first (then the classpath). */
@@ -132,6 +148,7 @@ public final class SceneRenderer implements AutoCloseable {
         shadowMap.close();
         shadowMap = fitted;
         shadowMaxZ = top;
+        shadowMapDirty = true;
         frame.shadowMap = shadowMap;
         minimapFrame.shadowMap = shadowMap;
     }
@@ -199,6 +216,10 @@ public final class SceneRenderer implements AutoCloseable {
         return shadows;
     }
 
+    public float waterTargetScale() {
+        return waterTargetScale;
+    }
+
     public boolean waterReflections() {
         return waterReflections;
     }
@@ -214,9 +235,11 @@ public final class SceneRenderer implements AutoCloseable {
         frame.update(camera, width, height, time);
         int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
         frame.shadowsOn = shadows;
+        objects.ballShadows(frame);
         minimapFrame.shadowsOn = false; // a map reads better without shadows
-        if (shadows) {
+        if (shadows && shadowMapDirty) {
             renderShadowMap();
+            shadowMapDirty = false;
             glBindFramebuffer(GL_FRAMEBUFFER, target);
         }
         boolean targets = water.hasWater() && waterReflections;
@@ -235,7 +258,7 @@ public final class SceneRenderer implements AutoCloseable {
         for (RenderPass pass : passes) pass.render(frame);
     }
 
-    /** The sun's view of the casters (terrain, pole, flag, balls) into the shadow map. */
+    /** The sun's view of the casters that stand still (terrain, obstacles, pole, flag) into the shadow map. */
     private void renderShadowMap() {
         shadowMap.begin();
         depthShader.use();
@@ -266,6 +289,7 @@ public final class SceneRenderer implements AutoCloseable {
         glClearColor(0.62f, 0.78f, 0.93f, 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         mirrorFrame.mirrorOf(frame, w, h);
+        mirrorFrame.shadowsOn = shadows && shadowsInWater;
         mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
         sky.render(mirrorFrame);
         terrain.render(mirrorFrame);
@@ -276,6 +300,7 @@ public final class SceneRenderer implements AutoCloseable {
         glClearColor(0.30f, 0.27f, 0.18f, 1f); // lake-bed mud where nothing was drawn
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         refractionFrame.copyOf(frame, w, h);
+        refractionFrame.shadowsOn = shadows && shadowsInWater;
         refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
         terrain.render(refractionFrame);
         obstacles.render(refractionFrame);
