@@ -9,6 +9,7 @@ uniform int uShadowsOn;
 uniform float uShadowTexel;     // one shadow-map texel, in texture units
 uniform float uShadowNormalOffset; // metres
 uniform float uShadowBias;      // depth units
+uniform int uShadowTaps;        // 4 (default) or 1
 
 // Balls are small and move every frame, so they are not in the (static) shadow map: each casts an
 // analytic soft shadow, the distance from its centre to the ray from the receiver towards the sun.
@@ -39,6 +40,7 @@ float mapVisibility(vec3 worldPos, vec3 n) {
     if (c.x <= 0.0 || c.x >= 1.0 || c.y <= 0.0 || c.y >= 1.0 || c.z >= 1.0) return 1.0;
     float z = c.z - uShadowBias;
     float t = uShadowTexel;
+    if (uShadowTaps == 1) return texture(uShadowMap, vec3(c.xy, z)); // one bilinear 2x2 tap (software rasterisers)
     float sum = texture(uShadowMap, vec3(c.xy + vec2(-0.5, -0.5) * t, z))
               + texture(uShadowMap, vec3(c.xy + vec2(0.5, -0.5) * t, z))
               + texture(uShadowMap, vec3(c.xy + vec2(-0.5, 0.5) * t, z))

@@ -73,13 +73,17 @@ final class BenchRenderCommand implements Callable<Integer> {
             int warmUp = Math.max(5, Math.min(30, frames / 5));
             for (int i = 0; i < warmUp; i++) frame(off, renderer, camera, s, side, i);
             off.finish();
+            long cpuStart = processCpuMillis();
             long start = System.nanoTime();
             for (int i = 0; i < frames; i++) frame(off, renderer, camera, s, side, warmUp + i);
             off.finish();
             double ms = (System.nanoTime() - start) / 1e6 / frames;
+            long cpuEnd = processCpuMillis();
             out.put("frames", frames);
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);
             out.put("fps", Math.round(10000 / ms) / 10.0);
+            // CPU time of the whole process (llvmpipe's threads included): steadier than wall time on a shared machine.
+            if (cpuStart >= 0 && cpuEnd >= 0) out.put("cpuMsPerFrame", Math.round((cpuEnd - cpuStart) * 10.0 / frames) / 10.0);
             out.put("size", s.width() + "x" + s.height());
             out.put("quality", q.name());
             out.put("samples", msaa);
@@ -91,6 +95,17 @@ final class BenchRenderCommand implements Callable<Integer> {
         }
         spec.commandLine().getOut().println(Json.write(out));
         return 0;
+    }
+
+    /** User + system CPU time of this process in ms from /proc/self/stat (Linux, 100 ticks a second), or -1. */
+    static long processCpuMillis() {
+        try {
+            String stat = java.nio.file.Files.readString(java.nio.file.Path.of("/proc/self/stat"));
+            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+            return (Long.parseLong(f[11]) + Long.parseLong(f[12])) * 10;
+        } catch (java.io.IOException | RuntimeException e) {
+            return -1;
+        }
     }
 
     /** One game-like frame: the camera turns slowly, the water moves, the minimap is drawn; the GPU finishes it. */

@@ -16,10 +16,12 @@ import static org.lwjgl.opengl.GL11.glGetString;
  * @param shadowMapSize    texels per side of the sun's shadow map
  * @param waterTargetScale the water's reflection/refraction images relative to the viewport
  * @param shadowsInWater   whether the mirrored and refracted scenes sample the shadow map too
+ * @param shadowTaps       depth-compare taps per shadowed pixel: 4 (a 3x3-texel footprint) or 1 (2x2)
  */
-public record RenderQuality(String name, int samples, int shadowMapSize, float waterTargetScale, boolean shadowsInWater) {
-    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true);
-    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 2048, 0.35f, false);
+public record RenderQuality(String name, int samples, int shadowMapSize, float waterTargetScale, boolean shadowsInWater,
+                            int shadowTaps) {
+    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4);
+    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 2048, 0.35f, false, 1);
 
     /** Whether a GL_RENDERER string names a software rasteriser. */
     public static boolean isSoftware(String glRenderer) {

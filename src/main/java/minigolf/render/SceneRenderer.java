@@ -41,6 +41,7 @@ public final class SceneRenderer implements AutoCloseable {
     private final double shadowMinZ;
     private double shadowMaxZ;
     private final int shadowMapSize;
+    private final int shadowTaps;
     private boolean shadows = true;
     /** The water's render targets' size relative to the viewport (0.5: a quarter of the pixels). */
     private float waterTargetScale;
@@ -59,6 +60,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.shadowMapSize = quality.shadowMapSize();
         this.waterTargetScale = quality.waterTargetScale();
         this.shadowsInWater = quality.shadowsInWater();
+        this.shadowTaps = quality.shadowTaps();
         SkyPass s = null;
         TerrainPass t = null;
         ObstaclesPass ob = null;
@@ -84,6 +86,7 @@ public final class SceneRenderer implements AutoCloseable {
             shadowMinZ = Math.min(0, t.minHeight()) - 0.5;
             shadowMaxZ = casterTop();
             shadowMap = new ShadowMap(course.bounds(), shadowMinZ, shadowMaxZ, frame.sun.direction(), shadowMapSize);
+            shadowMap.setTaps(shadowTaps);
         } catch (RuntimeException e) {
             if (depth != null) depth.close();
             for (RenderPass p : passes) p.close();
@@ -145,6 +148,7 @@ public final class SceneRenderer implements AutoCloseable {
         double top = casterTop();
         if (top <= shadowMaxZ) return;
         ShadowMap fitted = new ShadowMap(course.bounds(), shadowMinZ, top, frame.sun.direction(), shadowMapSize);
+        fitted.setTaps(shadowTaps);
         shadowMap.close();
         shadowMap = fitted;
         shadowMaxZ = top;
