@@ -1,4 +1,4 @@
-// Sun shadows: an orthographic depth map from the sun, sampled with hardware depth comparison
+// Sun shadows: an orthographic depth map from the sun of everything that stands still, sampled with hardware depth comparison
 // (sampler2DShadow, linear: each tap is itself a 2x2 bilinear PCF) at four points half a texel and
 // a texel apart, which covers a 3x3 texel footprint with 4 taps instead of 9 (cheap on llvmpipe). The receiver's point is
 // pushed along its normal by a texel or two (normal offset) so that lit surfaces do not shadow
@@ -9,18 +9,47 @@ uniform int uShadowsOn;
 uniform float uShadowTexel;     // one shadow-map texel, in texture units
 uniform float uShadowNormalOffset; // metres
 uniform float uShadowBias;      // depth units
+uniform int uShadowTaps;        // 4 (default) or 1
 
-// 1 fully lit, 0 fully in shadow.
-float sunVisibility(vec3 worldPos, vec3 n) {
-    if (uShadowsOn == 0) return 1.0;
+// Balls are small and move every frame, so they are not in the (static) shadow map: each casts an
+// analytic soft shadow, the distance from its centre to the ray from the receiver towards the sun.
+// Needs uSunDirection from lighting.glsl (included first).
+#define MAX_BALL_SHADOWS 8
+uniform int uBallCount;
+uniform vec4 uBalls[MAX_BALL_SHADOWS]; // centre xyz, radius w
+
+float ballVisibility(vec3 p) {
+    float v = 1.0;
+    vec3 l = normalize(uSunDirection);
+    for (int i = 0; i < uBallCount; i++) {
+        vec3 d = uBalls[i].xyz - p;
+        float r = uBalls[i].w;
+        float s = dot(d, l);
+        // Behind the receiver, or the receiver is this ball's own surface (its lit side must stay lit).
+        if (s <= 0.0 || dot(d, d) < r * r * 1.1025) continue;
+        float miss = length(d - s * l);
+        float soft = 0.15 * r + 0.01 * s; // the penumbra widens with distance, as the sun's disc makes it
+        v *= smoothstep(r - soft, r + soft, miss);
+    }
+    return v;
+}
+
+float mapVisibility(vec3 worldPos, vec3 n) {
     vec4 p = uLightViewProjection * vec4(worldPos + n * uShadowNormalOffset, 1.0);
     vec3 c = p.xyz / p.w * 0.5 + 0.5;
     if (c.x <= 0.0 || c.x >= 1.0 || c.y <= 0.0 || c.y >= 1.0 || c.z >= 1.0) return 1.0;
     float z = c.z - uShadowBias;
     float t = uShadowTexel;
+    if (uShadowTaps == 1) return texture(uShadowMap, vec3(c.xy, z)); // one bilinear 2x2 tap (software rasterisers)
     float sum = texture(uShadowMap, vec3(c.xy + vec2(-0.5, -0.5) * t, z))
               + texture(uShadowMap, vec3(c.xy + vec2(0.5, -0.5) * t, z))
               + texture(uShadowMap, vec3(c.xy + vec2(-0.5, 0.5) * t, z))
               + texture(uShadowMap, vec3(c.xy + vec2(0.5, 0.5) * t, z));
     return sum * 0.25;
+}
+
+// 1 fully lit, 0 fully in shadow.
+float sunVisibility(vec3 worldPos, vec3 n) {
+    if (uShadowsOn == 0) return 1.0;
+    return mapVisibility(worldPos, n) * ballVisibility(worldPos);
 }

@@ -33,6 +33,7 @@ import minigolf.render.AimView;
 import minigolf.render.BallView;
 import minigolf.render.OrbitCamera;
 import minigolf.render.Png;
+import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
@@ -86,6 +87,7 @@ public final class GameApp implements UiActions, UiView {
 
     private Window window;
     private SceneRenderer renderer;
+    private RenderQuality quality = RenderQuality.HIGH;
     private OrbitCamera camera;
     private ImGuiLayer imgui;
     private boolean rebuildScene;
@@ -109,7 +111,8 @@ public final class GameApp implements UiActions, UiView {
 
     /** Runs until the window closes or the requested frames are done; returns the game at the end (or null). */
     public Game run() {
-        Window.Options wo = options.visible() ? Window.Options.visibleDefaults()
+        quality = RenderQuality.probe(); // llvmpipe: no MSAA, smaller water targets (docs/rendering.md)
+        Window.Options wo = options.visible() ? new Window.Options(true, true, quality.samples(), true, 3, 3)
                 : new Window.Options(true, false, 0, true, 3, 3);
         try (Window w = new Window("Minigolf", 1280, 720, wo)) {
             window = w;
@@ -246,7 +249,8 @@ public final class GameApp implements UiActions, UiView {
         if (renderer != null) renderer.close();
         renderer = null;
         renderer = new SceneRenderer(world.course(), world.terrain(),
-                settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN);
+                settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, quality);
+        if (coursePath != null) renderer.setCourseFolder(coursePath.toAbsolutePath().getParent());
         int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
         camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
         followTarget.set(camera.target());

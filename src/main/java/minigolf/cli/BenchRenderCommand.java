@@ -6,6 +6,7 @@ import java.util.concurrent.Callable;
 import minigolf.physics.World;
 import minigolf.render.Offscreen;
 import minigolf.render.OrbitCamera;
+import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import picocli.CommandLine.Command;
@@ -31,8 +32,15 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Option(names = "--size", paramLabel = "WxH", description = "Frame size (default 1280x720).")
     String size = "1280x720";
 
-    @Option(names = "--samples", paramLabel = "N", description = "Multisampling, as the game window's (default 4; 0 off).")
-    int samples = 4;
+    @Option(names = "--samples", paramLabel = "N", description = "Multisampling (default: the quality's, as the game window's; 0 off).")
+    Integer samples;
+
+    @Option(names = "--quality", paramLabel = "Q",
+            description = "auto (default: as the game picks it from GL_RENDERER), high (real GPUs) or software (llvmpipe).")
+    String quality = "auto";
+
+    @Option(names = "--water-scale", paramLabel = "S", description = "The water targets' size relative to the frame (default: the quality's).")
+    Float waterScale;
 
     @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction.")
     boolean noReflections;
@@ -43,12 +51,21 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         if (frames < 1) throw new UserError("--frames: must be at least 1, got " + frames);
-        if (samples < 0 || samples > 16) throw new UserError("--samples: must be 0 to 16, got " + samples);
+        if (samples != null && (samples < 0 || samples > 16)) throw new UserError("--samples: must be 0 to 16, got " + samples);
+        if (waterScale != null && !(waterScale >= 0.1f && waterScale <= 1f)) throw new UserError("--water-scale: must be 0.1 to 1, got " + waterScale);
+        RenderQuality chosen = RenderQuality.named(quality);
+        if (chosen == null && !quality.equalsIgnoreCase("auto")) {
+            throw new UserError("--quality: must be auto, high or software, got '" + quality + "'");
+        }
         ImageSize s = ImageSize.parse("--size", size);
         World world = CourseArgument.load(course);
         ObjectNode out = Json.object();
-        try (Offscreen off = new Offscreen(s.width(), s.height(), samples);
-             SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN)) {
+        RenderQuality q = chosen != null ? chosen : RenderQuality.probe();
+        int msaa = samples != null ? samples : q.samples();
+        try (Offscreen off = new Offscreen(s.width(), s.height(), msaa);
+             SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN, q)) {
+            renderer.setCourseFolder(course.toAbsolutePath().getParent());
+            if (waterScale != null) renderer.setWaterTargetScale(waterScale);
             renderer.setWaterReflections(!noReflections);
             renderer.setShadows(!noShadows);
             OrbitCamera camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) s.width() / s.height());
@@ -56,15 +73,21 @@ final class BenchRenderCommand implements Callable<Integer> {
             int warmUp = Math.max(5, Math.min(30, frames / 5));
             for (int i = 0; i < warmUp; i++) frame(off, renderer, camera, s, side, i);
             off.finish();
+            long cpuStart = processCpuMillis();
             long start = System.nanoTime();
             for (int i = 0; i < frames; i++) frame(off, renderer, camera, s, side, warmUp + i);
             off.finish();
             double ms = (System.nanoTime() - start) / 1e6 / frames;
+            long cpuEnd = processCpuMillis();
             out.put("frames", frames);
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);
             out.put("fps", Math.round(10000 / ms) / 10.0);
+            // CPU time of the whole process (llvmpipe's threads included): steadier than wall time on a shared machine.
+            if (cpuStart >= 0 && cpuEnd >= 0) out.put("cpuMsPerFrame", Math.round((cpuEnd - cpuStart) * 10.0 / frames) / 10.0);
             out.put("size", s.width() + "x" + s.height());
-            out.put("samples", samples);
+            out.put("quality", q.name());
+            out.put("samples", msaa);
+            out.put("waterScale", renderer.waterTargetScale());
             out.put("shadows", !noShadows);
             out.put("reflections", !noReflections);
             out.put("course", world.course().name());
@@ -72,6 +95,17 @@ final class BenchRenderCommand implements Callable<Integer> {
         }
         spec.commandLine().getOut().println(Json.write(out));
         return 0;
+    }
+
+    /** User + system CPU time of this process in ms from /proc/self/stat (Linux, 100 ticks a second), or -1. */
+    static long processCpuMillis() {
+        try {
+            String stat = java.nio.file.Files.readString(java.nio.file.Path.of("/proc/self/stat"));
+            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+            return (Long.parseLong(f[11]) + Long.parseLong(f[12])) * 10;
+        } catch (java.io.IOException | RuntimeException e) {
+            return -1;
+        }
     }
 
     /** One game-like frame: the camera turns slowly, the water moves, the minimap is drawn; the GPU finishes it. */

@@ -51,6 +51,7 @@ final class RenderCommand implements Callable<Integer> {
         try (Offscreen off = new Offscreen(s.width(), s.height(), 4);
              SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(),
                      heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN)) {
+            renderer.setCourseFolder(course.toAbsolutePath().getParent());
             renderer.setWaterReflections(!noReflections);
             OrbitCamera camera = camera(world, aspect);
             off.bind();

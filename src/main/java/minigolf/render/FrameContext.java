@@ -23,6 +23,11 @@ public final class FrameContext {
     /** The sun's shadow map that receivers sample (null: no shadow uniforms are set), and whether to use it. */
     public ShadowMap shadowMap;
     public boolean shadowsOn;
+    /** The balls' analytic shadows (shadow.glsl): centre x, y, z and radius per ball, the first {@code ballShadowCount}. */
+    public final float[] ballShadows = new float[4 * MAX_BALL_SHADOWS];
+    public int ballShadowCount;
+    /** As MAX_BALL_SHADOWS in shadow.glsl; further balls cast no shadow. */
+    public static final int MAX_BALL_SHADOWS = 8;
     /** Seconds since the renderer started; 0 in screenshots (deterministic frames). */
     public float time;
 
@@ -59,6 +64,8 @@ public final class FrameContext {
         time = src.time;
         shadowMap = src.shadowMap;
         shadowsOn = src.shadowsOn;
+        System.arraycopy(src.ballShadows, 0, ballShadows, 0, ballShadows.length);
+        ballShadowCount = src.ballShadowCount;
         return this;
     }
 
@@ -74,6 +81,8 @@ public final class FrameContext {
         time = src.time;
         shadowMap = src.shadowMap;
         shadowsOn = src.shadowsOn;
+        System.arraycopy(src.ballShadows, 0, ballShadows, 0, ballShadows.length);
+        ballShadowCount = src.ballShadowCount;
         return this;
     }
 

@@ -11,6 +11,10 @@ final class Lighting {
         shader.set("uSunColor", frame.sun.color());
         shader.set("uSkyAmbient", frame.sun.skyAmbient());
         shader.set("uGroundAmbient", frame.sun.groundAmbient());
-        if (frame.shadowMap != null) frame.shadowMap.apply(shader, frame.shadowsOn);
+        if (frame.shadowMap != null) {
+            frame.shadowMap.apply(shader, frame.shadowsOn);
+            shader.set("uBallCount", frame.ballShadowCount);
+            shader.setVec4Array("uBalls", frame.ballShadows, frame.ballShadowCount);
+        }
     }
 }

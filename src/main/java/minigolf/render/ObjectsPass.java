@@ -144,16 +144,26 @@ public final class ObjectsPass implements RenderPass {
         glEnable(GL_DEPTH_TEST);
     }
 
-    /** Draws what casts sun shadows (pole, flag, balls) with the depth-only shader. */
+    /** Draws what casts sun shadows and stands still (pole, flag) with the depth-only shader. */
     void drawShadowCasters(ShaderProgram depthShader) {
         depthShader.set("uModel", model.identity());
         pole.draw();
         cloth.draw();
+    }
+
+    /** Puts the balls (centre, radius) into the frame as analytic shadow casters; returns how many fit. */
+    int ballShadows(FrameContext frame) {
         float radius = (float) visualBallRadius();
-        for (BallView b : balls) {
-            depthShader.set("uModel", model.translation(b.x(), b.y(), b.z() + radius).scale(radius));
-            ball.draw();
+        int n = Math.min(balls.size(), FrameContext.MAX_BALL_SHADOWS);
+        for (int i = 0; i < n; i++) {
+            BallView b = balls.get(i);
+            frame.ballShadows[4 * i] = b.x();
+            frame.ballShadows[4 * i + 1] = b.y();
+            frame.ballShadows[4 * i + 2] = b.z() + radius;
+            frame.ballShadows[4 * i + 3] = radius;
         }
+        frame.ballShadowCount = n;
+        return n;
     }
 
     private void begin(FrameContext frame) {

@@ -41,18 +41,31 @@ public final class SceneRenderer implements AutoCloseable {
     private final double shadowMinZ;
     private double shadowMaxZ;
     private final int shadowMapSize;
+    private final int shadowTaps;
     private boolean shadows = true;
     /** The water's render targets' size relative to the viewport (0.5: a quarter of the pixels). */
-    private float waterTargetScale = 0.5f;
+    private float waterTargetScale;
+    /** Whether the water's mirrored and refracted scenes are shadowed too (barely visible there). */
+    private final boolean shadowsInWater;
+    /** The shadow map holds only what stands still, so it is drawn again only after a change. */
+    private boolean shadowMapDirty = true;
+    /** The minimap's still part, drawn again only after a change. */
+    private final RenderTarget minimapCache = new RenderTarget();
+    private boolean minimapDirty = true;
+    private final ShaderProgram blitShader;
+    private final int emptyVao;
 
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode) {
-        this(course, surface, mode, SHADOW_MAP_SIZE);
+        this(course, surface, mode, RenderQuality.HIGH);
     }
 
-    /** As above with a shadow map of {@code shadowMapSize}² texels (see {@link RenderQuality}). */
-    public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode, int shadowMapSize) {
+    /** As above at a chosen quality (shadow map size, water targets; see {@link RenderQuality#current()}). */
+    public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode, RenderQuality quality) {
         this.course = course;
-        this.shadowMapSize = shadowMapSize;
+        this.shadowMapSize = quality.shadowMapSize();
+        this.waterTargetScale = quality.waterTargetScale();
+        this.shadowsInWater = quality.shadowsInWater();
+        this.shadowTaps = quality.shadowTaps();
         SkyPass s = null;
         TerrainPass t = null;
         ObstaclesPass ob = null;
@@ -78,12 +91,22 @@ public final class SceneRenderer implements AutoCloseable {
             shadowMinZ = Math.min(0, t.minHeight()) - 0.5;
             shadowMaxZ = casterTop();
             shadowMap = new ShadowMap(course.bounds(), shadowMinZ, shadowMaxZ, frame.sun.direction(), shadowMapSize);
+            shadowMap.setTaps(shadowTaps);
         } catch (RuntimeException e) {
             if (depth != null) depth.close();
             for (RenderPass p : passes) p.close();
             throw e;
         }
         depthShader = depth;
+        ShaderProgram blit;
+        try {
+            blit = ShaderProgram.load("blit");
+        } catch (RuntimeException e) {
+            close();
+            throw e;
+        }
+        blitShader = blit;
+        emptyVao = glGenVertexArrays();
         frame.shadowMap = shadowMap;
         minimapFrame.shadowMap = shadowMap;
     }
@@ -112,6 +135,18 @@ public final class SceneRenderer implements AutoCloseable {
     public void setObstacles(List<Obstacle> list) {
         obstacles.setObstacles(list);
         refitShadowMap();
+        shadowMapDirty = true;
+        minimapDirty = true;
+    }
+
+    /**
+     * Call after changing the terrain's mesh: the sun's shadow map (terrain, obstacles, flag) and the
+     * minimap's cached image are drawn again before they are next used. (Balls need nothing: their
+     * shadows are analytic and they are drawn over the minimap each frame.)
+     */
+    public void terrainChanged() {
+        shadowMapDirty = true;
+        minimapDirty = true;
     }
 
     /** The course file's folder, where model obstacles' .mtl files are looked for first (then the classpath). */
@@ -129,9 +164,11 @@ public final class SceneRenderer implements AutoCloseable {
         double top = casterTop();
         if (top <= shadowMaxZ) return;
         ShadowMap fitted = new ShadowMap(course.bounds(), shadowMinZ, top, frame.sun.direction(), shadowMapSize);
+        fitted.setTaps(shadowTaps);
         shadowMap.close();
         shadowMap = fitted;
         shadowMaxZ = top;
+        shadowMapDirty = true;
         frame.shadowMap = shadowMap;
         minimapFrame.shadowMap = shadowMap;
     }
@@ -151,38 +188,76 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws the minimap, a top-down view of the whole course (terrain, water, hole, balls), into a
+     * Draws the minimap, a top-down view of the whole course (terrain, water, obstacles, hole, balls), into a
      * square of {@code sizePx} pixels whose TOP-LEFT corner is at (x, y) framebuffer pixels from the
      * framebuffer's TOP-LEFT corner (window/ImGui convention, not GL's). Call after {@link #render};
-     * it clears only its own square and restores the full viewport.
+     * it restores the full viewport. What stands still (terrain, water, obstacles) is drawn once into
+     * a cached image and copied each frame; only the hole and the balls are drawn on top.
      */
     public void renderMinimap(int x, int y, int sizePx, int framebufferWidth, int framebufferHeight) {
         if (sizePx < 8) return;
+        int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        if (minimapDirty || minimapCache.width() != sizePx) {
+            drawMinimapCache(sizePx);
+            minimapDirty = false;
+            glBindFramebuffer(GL_FRAMEBUFFER, target);
+        }
         int glY = framebufferHeight - y - sizePx;
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(x, glY, sizePx, sizePx);
         glViewport(x, glY, sizePx, sizePx);
+        glDisable(GL_DEPTH_TEST);
+        blitShader.use();
+        minimapCache.bindColour(0);
+        blitShader.set("uImage", 0);
+        glBindVertexArray(emptyVao);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glBindVertexArray(0);
+        int border = minimapBorder(sizePx), inner = sizePx - 2 * border;
+        glViewport(x + border, glY + border, inner, inner);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(x + border, glY + border, inner, inner);
+        float metresPerPixel = updateMinimapFrame(inner);
+        objects.renderMinimap(minimapFrame, 4f * metresPerPixel);
+        glDisable(GL_SCISSOR_TEST);
+        glEnable(GL_DEPTH_TEST);
+        glViewport(0, 0, framebufferWidth, framebufferHeight);
+    }
+
+    private static int minimapBorder(int sizePx) {
+        return Math.max(2, sizePx / 100);
+    }
+
+    /** The minimap's camera for an inner square of {@code inner} pixels; returns metres per pixel. */
+    private float updateMinimapFrame(int inner) {
+        var b = course.bounds();
+        double pad = 0.02 * Math.max(b.width(), b.depth());
+        minimapFrame.updateTopDown(b.minX() - pad, b.minY() - pad, b.maxX() + pad, b.maxY() + pad,
+                Math.min(0, terrain.minHeight()) - 1,
+                Math.max(Math.max(0, terrain.maxHeight()) + ObjectsPass.FLAG_HEIGHT, obstacles.top()) + 1,
+                inner, inner, lastTime);
+        return (float) (Math.max(b.width(), b.depth()) + 2 * pad) / inner;
+    }
+
+    /** The minimap's still part (frame, terrain, plain water, solid obstacles) into its cached image. */
+    private void drawMinimapCache(int sizePx) {
+        minimapCache.ensureSize(sizePx, sizePx);
+        minimapCache.bind();
+        glDisable(GL_MULTISAMPLE);
         glClearColor(0.08f, 0.10f, 0.08f, 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        int border = Math.max(2, sizePx / 100), inner = sizePx - 2 * border;
-        glViewport(x + border, glY + border, inner, inner);
-        glScissor(x + border, glY + border, inner, inner);
+        int border = minimapBorder(sizePx), inner = sizePx - 2 * border;
+        glViewport(border, border, inner, inner);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(border, border, inner, inner);
         glClearColor(0.20f, 0.24f, 0.20f, 1f);
         glClear(GL_COLOR_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
-        var b = course.bounds();
-        double pad = 0.02 * Math.max(b.width(), b.depth());
-        minimapFrame.updateTopDown(b.minX() - pad, b.minY() - pad, b.maxX() + pad, b.maxY() + pad,
-                Math.min(0, terrain.minHeight()) - 1, Math.max(Math.max(0, terrain.maxHeight()) + ObjectsPass.FLAG_HEIGHT, obstacles.top()) + 1,
-                inner, inner, lastTime);
+        updateMinimapFrame(inner);
         terrain.render(minimapFrame);
         water.renderSimple(minimapFrame);
         obstacles.renderMinimap(minimapFrame);
-        float metresPerPixel = (float) (Math.max(b.width(), b.depth()) + 2 * pad) / inner;
-        objects.renderMinimap(minimapFrame, 4f * metresPerPixel);
         glDisable(GL_SCISSOR_TEST);
-        glViewport(0, 0, framebufferWidth, framebufferHeight);
+        glEnable(GL_MULTISAMPLE);
     }
 
     /** Whether the water shows the mirrored scene and the refracted bed (on by default); off: flat colours, cheaper. */
@@ -197,6 +272,10 @@ public final class SceneRenderer implements AutoCloseable {
 
     public boolean shadows() {
         return shadows;
+    }
+
+    public float waterTargetScale() {
+        return waterTargetScale;
     }
 
     public boolean waterReflections() {
@@ -214,9 +293,11 @@ public final class SceneRenderer implements AutoCloseable {
         frame.update(camera, width, height, time);
         int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
         frame.shadowsOn = shadows;
+        objects.ballShadows(frame);
         minimapFrame.shadowsOn = false; // a map reads better without shadows
-        if (shadows) {
+        if (shadows && shadowMapDirty) {
             renderShadowMap();
+            shadowMapDirty = false;
             glBindFramebuffer(GL_FRAMEBUFFER, target);
         }
         boolean targets = water.hasWater() && waterReflections;
@@ -235,7 +316,7 @@ public final class SceneRenderer implements AutoCloseable {
         for (RenderPass pass : passes) pass.render(frame);
     }
 
-    /** The sun's view of the casters (terrain, pole, flag, balls) into the shadow map. */
+    /** The sun's view of the casters that stand still (terrain, obstacles, pole, flag) into the shadow map. */
     private void renderShadowMap() {
         shadowMap.begin();
         depthShader.use();
@@ -266,6 +347,7 @@ public final class SceneRenderer implements AutoCloseable {
         glClearColor(0.62f, 0.78f, 0.93f, 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         mirrorFrame.mirrorOf(frame, w, h);
+        mirrorFrame.shadowsOn = shadows && shadowsInWater;
         mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
         sky.render(mirrorFrame);
         terrain.render(mirrorFrame);
@@ -276,6 +358,7 @@ public final class SceneRenderer implements AutoCloseable {
         glClearColor(0.30f, 0.27f, 0.18f, 1f); // lake-bed mud where nothing was drawn
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         refractionFrame.copyOf(frame, w, h);
+        refractionFrame.shadowsOn = shadows && shadowsInWater;
         refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
         terrain.render(refractionFrame);
         obstacles.render(refractionFrame);
@@ -287,6 +370,9 @@ public final class SceneRenderer implements AutoCloseable {
 
     @Override
     public void close() {
+        if (blitShader != null) blitShader.close();
+        if (emptyVao != 0) glDeleteVertexArrays(emptyVao);
+        minimapCache.close();
         shadowMap.close();
         depthShader.close();
         for (int i = passes.size() - 1; i >= 0; i--) passes.get(i).close();

@@ -149,6 +149,14 @@ public final class ShaderProgram implements AutoCloseable {
         glUniform1f(location(uniform), v);
     }
 
+    /** A vec4[] uniform: the first {@code count} vectors (4 floats each) of {@code xyzw}. */
+    public void setVec4Array(String uniform, float[] xyzw, int count) {
+        if (count <= 0) return;
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            glUniform4fv(location(uniform), stack.floats(java.util.Arrays.copyOf(xyzw, 4 * count)));
+        }
+    }
+
     public void set(String uniform, int v) {
         glUniform1i(location(uniform), v);
     }

@@ -28,6 +28,7 @@ public final class ShadowMap implements AutoCloseable {
     private final Matrix4f lightViewProjection = new Matrix4f();
     private final float texelMetres;
     private final float depthRange;
+    private int taps = 4;
 
     /**
      * @param sunDirection unit vector towards the sun
@@ -88,6 +89,11 @@ public final class ShadowMap implements AutoCloseable {
         return lightViewProjection;
     }
 
+    /** Depth-compare taps per receiver pixel: 4 (3x3-texel footprint, default) or 1 (2x2). */
+    public void setTaps(int taps) {
+        this.taps = taps == 1 ? 1 : 4;
+    }
+
     public int size() {
         return size;
     }
@@ -121,6 +127,7 @@ public final class ShadowMap implements AutoCloseable {
         shader.set("uShadowsOn", on ? 1 : 0);
         shader.set("uLightViewProjection", lightViewProjection);
         shader.set("uShadowTexel", 1f / size);
+        shader.set("uShadowTaps", taps);
         shader.set("uShadowNormalOffset", 1.5f * texelMetres);
         // About two millimetres in depth units ([0, 1] over the light's depth range).
         shader.set("uShadowBias", 0.002f / depthRange);

@@ -156,4 +156,29 @@ class ObstacleRenderTest {
                     "no tower shadow 3.6 m up the ray: with " + p.describe(x, y) + ", without " + q.describe(x, y));
         }
     }
+
+    @Test
+    void theMinimapShowsObstaclesAddedAfterItWasFirstDrawn() {
+        Course course = TestCourses.flat(); // bounds -5..5; the minimap pads them by 2%: 10.4 m across
+        Obstacle thick = new Obstacle.Wall(new Vec2(1, -3), new Vec2(1, 3), 0.4, 0.3, 0.7);
+        int size = 240, x0 = 20, y0 = 20, border = 2, inner = size - 2 * border;
+        int px = x0 + border + Math.round((float) ((1 + 5.2) / 10.4 * inner));
+        int py = y0 + border + Math.round((float) ((5.2 - 1.0) / 10.4 * inner));
+        try (Offscreen off = new Offscreen(W, H, 0);
+             SceneRenderer r = new SceneRenderer(course, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN)) {
+            Pixels[] shots = new Pixels[2];
+            for (int k = 0; k < 2; k++) {
+                if (k == 1) r.setObstacles(List.of(thick));
+                off.bind();
+                r.render(ABOVE, W, H, 0f);
+                r.renderMinimap(x0, y0, size, W, H);
+                assertEquals(GL_NO_ERROR, glGetError());
+                Path png = TestCourses.screenshotDir().resolve("minimap-obstacle-" + k + ".png");
+                off.savePng(png);
+                shots[k] = Pixels.read(png);
+            }
+            assertTrue(grassy(shots[0], new int[]{px, py}), "no wall on the first minimap: " + shots[0].describe(px, py));
+            assertTrue(wooden(shots[1], new int[]{px, py}), "the wall on the redrawn minimap: " + shots[1].describe(px, py));
+        }
+    }
 }
