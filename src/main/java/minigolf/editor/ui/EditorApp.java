@@ -37,6 +37,7 @@ import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import minigolf.render.OrbitCamera;
 import minigolf.render.Png;
+import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
@@ -78,6 +79,7 @@ public final class EditorApp {
     private CourseEditor editor;
     private ToolController tool;
     private Window window;
+    private RenderQuality quality = RenderQuality.HIGH;
     private ImGuiLayer imgui;
     private SceneRenderer renderer;
     private OrbitCamera camera;
@@ -124,7 +126,9 @@ public final class EditorApp {
 
     /** Runs until the window closes or the frames are done; returns the editor at the end. */
     public CourseEditor run() {
-        Window.Options wo = options.visible() ? Window.Options.visibleDefaults() : new Window.Options(true, false, 0, true, 3, 3);
+        quality = RenderQuality.probe(); // llvmpipe: no MSAA, smaller water targets (docs/rendering.md)
+        Window.Options wo = options.visible() ? new Window.Options(true, true, quality.samples(), true, 3, 3)
+                : new Window.Options(true, false, 0, true, 3, 3);
         try (Window w = new Window("Minigolf editor", 1400, 860, wo)) {
             window = w;
             window.setVsync(options.frames() <= 0);
@@ -208,6 +212,8 @@ public final class EditorApp {
                 World w = editor.world();
                 renderer.terrainPass().updateRegion(w.course(), w.terrain(), c.nodeX(r[0]) - pad, c.nodeY(r[1]) - pad,
                         c.nodeX(r[2]) + pad, c.nodeY(r[3]) + pad);
+                // The sun's shadow map and the minimap are redrawn once, when the stroke ends and the
+                // scene is rebuilt: redrawing them for every dab would cost more than the dab itself.
             }
             if (changes.obstaclesChanged()) renderer.setObstacles(editor.course().obstacles());
         }
@@ -225,7 +231,7 @@ public final class EditorApp {
         if (renderer != null) renderer.close();
         renderer = null;
         renderer = new SceneRenderer(w.course(), w.terrain(),
-                heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN);
+                heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, quality);
         if (editor.file() != null) renderer.setCourseFolder(editor.file().toAbsolutePath().getParent());
         if (camera == null) {
             int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
