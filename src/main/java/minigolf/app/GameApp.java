@@ -1,7 +1,6 @@
 package minigolf.app;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -49,8 +48,6 @@ import org.joml.Vector4f;
 
 import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL11.*;
-import static org.lwjgl.system.MemoryUtil.memAlloc;
-import static org.lwjgl.system.MemoryUtil.memFree;
 
 /**
  * The game: one window, one render loop. Each frame polls input, advances the rolling ball at the
@@ -155,7 +152,7 @@ public final class GameApp implements UiActions, UiView {
             // ImGui sizes a new window in its first frames: stop once the scorecard has been drawn.
             boolean over = options.exitWhenOver() && overFrames >= 3;
             if ((options.frames() > 0 && frame >= options.frames()) || over) {
-                if (options.screenshot() != null) saveScreenshot(options.screenshot(), fw, fh);
+                if (options.screenshot() != null) Png.saveBackBuffer(options.screenshot(), fw, fh);
                 window.swapBuffers();
                 break;
             }
@@ -311,18 +308,6 @@ public final class GameApp implements UiActions, UiView {
         Vector3f t = camera.target();
         t.lerp(followTarget, 0.12f);
         camera.setTarget(t);
-    }
-
-    private void saveScreenshot(Path png, int w, int h) {
-        ByteBuffer pixels = memAlloc(w * h * 4);
-        try {
-            glReadBuffer(GL_BACK);
-            glPixelStorei(GL_PACK_ALIGNMENT, 1);
-            glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-            Png.writeBottomUp(png, w, h, pixels);
-        } finally {
-            memFree(pixels);
-        }
     }
 
     // ---- Input --------------------------------------------------------------------------------

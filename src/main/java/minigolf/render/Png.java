@@ -4,6 +4,7 @@ import java.nio.ByteBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import static org.lwjgl.opengl.GL11.*;
 import static org.lwjgl.stb.STBImageWrite.stbi_write_png;
 import static org.lwjgl.system.MemoryUtil.memAlloc;
 import static org.lwjgl.system.MemoryUtil.memFree;
@@ -58,6 +59,19 @@ public final class Png {
             }
         } finally {
             memFree(flipped);
+        }
+    }
+
+    /** Reads the current window's back buffer (width x height pixels) and writes it as a PNG. */
+    public static void saveBackBuffer(Path file, int width, int height) {
+        ByteBuffer pixels = memAlloc(width * height * 4);
+        try {
+            glReadBuffer(GL_BACK);
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+            writeBottomUp(file, width, height, pixels);
+        } finally {
+            memFree(pixels);
         }
     }
 }

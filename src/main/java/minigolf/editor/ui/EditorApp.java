@@ -8,7 +8,6 @@ import imgui.type.ImDouble;
 import imgui.type.ImInt;
 import imgui.type.ImString;
 import java.io.IOException;
-import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -48,8 +47,6 @@ import org.joml.Vector4f;
 
 import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL11.*;
-import static org.lwjgl.system.MemoryUtil.memAlloc;
-import static org.lwjgl.system.MemoryUtil.memFree;
 
 /**
  * The course editor's window: the game's renderer and orbit camera, ImGui panels, mouse picking
@@ -173,7 +170,7 @@ public final class EditorApp {
             drawFrame(fw, fh);
             frame++;
             if (options.frames() > 0 && frame >= Math.max(options.frames(), options.scriptedKeys().size() + 1)) {
-                if (options.screenshot() != null) saveScreenshot(options.screenshot(), fw, fh);
+                if (options.screenshot() != null) Png.saveBackBuffer(options.screenshot(), fw, fh);
                 window.swapBuffers();
                 break;
             }
@@ -800,18 +797,6 @@ public final class EditorApp {
             }
         }
         ImGui.end();
-    }
-
-    private void saveScreenshot(Path png, int w, int h) {
-        ByteBuffer pixels = memAlloc(w * h * 4);
-        try {
-            glReadBuffer(GL_BACK);
-            glPixelStorei(GL_PACK_ALIGNMENT, 1);
-            glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-            Png.writeBottomUp(png, w, h, pixels);
-        } finally {
-            memFree(pixels);
-        }
     }
 
     /**
