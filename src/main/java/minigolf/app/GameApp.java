@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.BiConsumer;
 import java.util.stream.Stream;
 import minigolf.course.CourseException;
 import minigolf.game.AimModel;
@@ -88,6 +89,8 @@ public final class GameApp implements UiActions, UiView {
     private OrbitCamera camera;
     private ImGuiLayer imgui;
     private boolean rebuildScene;
+    /** Called at the start of every pass of the loop (drawn or not) with the window: tests drive resizes with it. */
+    private BiConsumer<Integer, Window> loopHook = (pass, w) -> { };
 
     // Mouse.
     private boolean rotating, panning, aiming;
@@ -132,10 +135,17 @@ public final class GameApp implements UiActions, UiView {
         return game;
     }
 
+    /** Sets what runs at the start of every pass of the render loop (for tests: resize, minimise, close). */
+    public void onLoopPass(BiConsumer<Integer, Window> hook) {
+        loopHook = hook;
+    }
+
     private void loop() {
         double last = glfwGetTime(), start = last;
-        int frame = 0, overFrames = 0;
+        int frame = 0, overFrames = 0, pass = 0;
         while (!window.shouldClose()) {
+            loopHook.accept(pass++, window);
+            if (window.shouldClose()) break;
             double now = glfwGetTime(), elapsed = Math.min(0.25, now - last);
             last = now;
             window.pollEvents();
