@@ -737,6 +737,7 @@ public final class EditorApp {
             }
         }
         if (selectedZone < 0 || selectedZone >= zones.size()) return;
+        ImGui.textWrapped(ZoneTools.describe(zones.get(selectedZone))); // the list cuts long lines
         try {
             ImGui.inputDouble("Zone mu_k", zoneKinetic);
             if (ImGui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
