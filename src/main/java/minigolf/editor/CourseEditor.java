@@ -13,6 +13,8 @@ import minigolf.course.Obstacle;
 import minigolf.course.PhysicsSettings;
 import minigolf.course.TerrainSpec;
 import minigolf.course.Vec2;
+import minigolf.course.Vec3;
+import minigolf.course.Zone;
 import minigolf.physics.World;
 import minigolf.terrain.GridTerrain;
 
@@ -293,17 +295,99 @@ public final class CourseEditor {
         perform(new ObstacleEdit(index, o, ObstacleTools.rotated(o, degrees), "rotate " + ObstacleTools.describe(o)));
     }
 
-    /** Replaces the obstacle (e.g. its size typed in the object panel). */
+    /** Replaces the obstacle (e.g. its size typed in the object panel); nothing happens when it is the same. */
     public void replaceObstacle(int index, Obstacle replacement) {
+        replaceObstacle(index, replacement, "edit " + ObstacleTools.describe(obstacle(index)));
+    }
+
+    private void replaceObstacle(int index, Obstacle replacement, String label) {
         Obstacle o = obstacle(index);
+        if (o.equals(replacement)) return;
         endStroke();
-        perform(new ObstacleEdit(index, o, replacement, "edit " + ObstacleTools.describe(o)));
+        perform(new ObstacleEdit(index, o, replacement, label));
+    }
+
+    /** A wall's thickness (>= 0, 0 a thin fence) and height above the ground (> 0). */
+    public void setWallSize(int index, double thickness, double height) {
+        if (!(obstacle(index) instanceof Obstacle.Wall w)) throw new IllegalArgumentException("object " + index + " is not a wall");
+        if (!(thickness >= 0) || !(height > 0) || !Double.isFinite(thickness) || !Double.isFinite(height)) {
+            throw new IllegalArgumentException("wall thickness must be >= 0 and height > 0");
+        }
+        if (thickness == 0 && w.from().equals(w.to())) throw new IllegalArgumentException("a wall of no length needs a thickness");
+        replaceObstacle(index, new Obstacle.Wall(w.from(), w.to(), thickness, height, w.restitution()), "wall size");
+    }
+
+    /** A tree trunk's radius and height (both > 0). */
+    public void setTreeSize(int index, double radius, double height) {
+        if (!(obstacle(index) instanceof Obstacle.Tree t)) throw new IllegalArgumentException("object " + index + " is not a tree");
+        if (!(radius > 0) || !(height > 0) || !Double.isFinite(radius) || !Double.isFinite(height)) {
+            throw new IllegalArgumentException("tree radius and height must be > 0");
+        }
+        replaceObstacle(index, new Obstacle.Tree(t.position(), radius, height, t.restitution()), "tree size");
+    }
+
+    /** A box's width (x), depth (y) and height (z), all > 0: it keeps its centre in the plane and its bottom. */
+    public void setBoxSize(int index, double width, double depth, double height) {
+        if (!(obstacle(index) instanceof Obstacle.Box b)) throw new IllegalArgumentException("object " + index + " is not a box");
+        if (!(width > 0) || !(depth > 0) || !(height > 0) || !Double.isFinite(width + depth + height)) {
+            throw new IllegalArgumentException("box width, depth and height must be > 0");
+        }
+        Vec2 c = ObstacleTools.center(b);
+        replaceObstacle(index, new Obstacle.Box(new Vec3(c.x() - width / 2, c.y() - depth / 2, b.min().z()),
+                new Vec3(c.x() + width / 2, c.y() + depth / 2, b.min().z() + height), b.rotationDeg(), b.restitution()), "box size");
+    }
+
+    /** A model's scale (> 0). */
+    public void setModelScale(int index, double scale) {
+        if (!(obstacle(index) instanceof Obstacle.Model m)) throw new IllegalArgumentException("object " + index + " is not a model");
+        if (!(scale > 0) || !Double.isFinite(scale)) throw new IllegalArgumentException("model scale must be > 0");
+        replaceObstacle(index, new Obstacle.Model(m.file(), m.position(), m.rotationDeg(), scale, m.restitution(), m.mesh()),
+                "model scale");
+    }
+
+    /** The share of the normal speed a ball keeps when it bounces off the object, 0 to 1. */
+    public void setRestitution(int index, double restitution) {
+        Obstacle o = obstacle(index);
+        if (!(restitution >= 0 && restitution <= 1)) throw new IllegalArgumentException("restitution must be between 0 and 1");
+        replaceObstacle(index, ObstacleTools.withRestitution(o, restitution), "restitution");
     }
 
     public void removeObstacle(int index) {
         Obstacle o = obstacle(index);
         endStroke();
         perform(new ObstacleEdit(index, o, null, "delete " + ObstacleTools.describe(o)));
+    }
+
+    // ---- friction zones ----
+
+    /** The course's friction zones (later ones win where they overlap). */
+    public List<Zone> zones() {
+        return List.copyOf(course.zones);
+    }
+
+    public void removeZone(int index) {
+        Zone z = zone(index);
+        endStroke();
+        perform(new ZoneEdit(index, z, null, "delete zone"));
+    }
+
+    /** A zone's friction (both >= 0), its shape unchanged. */
+    public void setZoneFriction(int index, double kinetic, double statics) {
+        Zone z = zone(index);
+        if (!(kinetic >= 0) || !(statics >= 0) || !Double.isFinite(kinetic + statics)) {
+            throw new IllegalArgumentException("friction must be >= 0");
+        }
+        Zone next = new Zone(z.shape(), kinetic, statics);
+        if (next.equals(z)) return;
+        endStroke();
+        perform(new ZoneEdit(index, z, next, "zone friction"));
+    }
+
+    private Zone zone(int index) {
+        if (index < 0 || index >= course.zones.size()) {
+            throw new IllegalArgumentException("no zone " + index + " (the course has " + course.zones.size() + ")");
+        }
+        return course.zones.get(index);
     }
 
     /** The index of the obstacle nearest to (x, y) within {@code maxDistance}, or -1. */

@@ -27,7 +27,7 @@ public final class EditableCourse {
     final List<Obstacle> obstacles = new ArrayList<>();
     Properties properties;
     final Bounds bounds;
-    final List<Zone> zones;
+    final List<Zone> zones = new ArrayList<>();
 
     /** The course's fields that are not per node or per obstacle. */
     public record Properties(String name, Vec2 start, Hole hole, PhysicsSettings physics) {
@@ -50,7 +50,7 @@ public final class EditableCourse {
             }
         }
         this.bounds = bounds;
-        this.zones = List.copyOf(zones);
+        this.zones.addAll(zones);
         this.obstacles.addAll(obstacles);
         this.properties = properties;
     }

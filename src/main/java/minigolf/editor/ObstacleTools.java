@@ -65,6 +65,15 @@ public final class ObstacleTools {
         return Math.hypot(x - c.x(), y - c.y());
     }
 
+    /** The same obstacle with another restitution. */
+    public static Obstacle withRestitution(Obstacle o, double r) {
+        if (o instanceof Obstacle.Wall w) return new Obstacle.Wall(w.from(), w.to(), w.thickness(), w.height(), r);
+        if (o instanceof Obstacle.Tree t) return new Obstacle.Tree(t.position(), t.radius(), t.height(), r);
+        if (o instanceof Obstacle.Box b) return new Obstacle.Box(b.min(), b.max(), b.rotationDeg(), r);
+        Obstacle.Model m = (Obstacle.Model) o;
+        return new Obstacle.Model(m.file(), m.position(), m.rotationDeg(), m.scale(), r, m.mesh());
+    }
+
     private static double normalise(double deg) {
         double d = deg % 360;
         return d < 0 ? d + 360 : d;

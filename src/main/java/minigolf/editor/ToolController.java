@@ -25,7 +25,7 @@ public final class ToolController {
     }
 
     /** What the object tool places. */
-    public enum ObjectKind { WALL, TREE, BOX }
+    public enum ObjectKind { WALL, TREE, BOX, MODEL }
 
     /** How far from the tool an object counts as under it, in metres. */
     public static final double PICK_DISTANCE = 0.35;
@@ -44,6 +44,9 @@ public final class ToolController {
     public double wallLength = 1.0, wallThickness = 0.05, wallHeight = 0.15;
     public double treeRadius = 0.12, treeHeight = 1.2;
     public double boxSize = 0.4, boxHeight = 0.3;
+    /** The bundled model the object tool places (one of {@link ModelCatalog#BUNDLED}) and its scale. */
+    public String modelFile = ModelCatalog.BUNDLED.get(0);
+    public double modelScale = 1.0;
     public double restitution = Obstacle.DEFAULT_RESTITUTION;
 
     public ToolController(CourseEditor editor) {
@@ -218,6 +221,9 @@ public final class ToolController {
                 yield new Obstacle.Box(new Vec3(px - hs, py - hs, ground - 0.05), new Vec3(px + hs, py + hs, ground + boxHeight),
                         0, restitution);
             }
+            // Stands on the ground at the tool: the model's z = 0 goes to the terrain height there.
+            case MODEL -> new Obstacle.Model(modelFile, new Vec3(px, py, editor.world().terrain().height(px, py)), 0,
+                    modelScale, restitution, ModelCatalog.load(modelFile));
         };
     }
 }

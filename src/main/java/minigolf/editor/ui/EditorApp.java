@@ -20,16 +20,19 @@ import minigolf.course.Obstacle;
 import minigolf.course.PhysicsModel;
 import minigolf.course.PhysicsSettings;
 import minigolf.course.Vec2;
+import minigolf.course.Zone;
 import minigolf.editor.BotCheck;
 import minigolf.editor.ChangeSet;
 import minigolf.editor.CourseEditor;
 import minigolf.editor.EditableCourse;
 import minigolf.editor.EditorKey;
+import minigolf.editor.ModelCatalog;
 import minigolf.editor.ObstacleTools;
 import minigolf.editor.Problem;
 import minigolf.editor.Recovery;
 import minigolf.editor.TerrainPicker;
 import minigolf.editor.ToolController;
+import minigolf.editor.ZoneTools;
 import minigolf.game.BotCatalog;
 import minigolf.game.ShotPlanner;
 import minigolf.physics.SimulationSettings;
@@ -69,7 +72,7 @@ public final class EditorApp {
 
     private static final String[] ACTIONS = {"Raise", "Lower", "Smooth", "Flatten", "Paint grass", "Paint sand",
             "Paint friction", "Set height", "Delete cells", "Restore cells", "Place start", "Place hole"};
-    private static final String[] KINDS = {"Wall", "Tree", "Box"};
+    private static final String[] KINDS = {"Wall", "Tree", "Box", "Model"};
 
     private final Options options;
     private final Recovery recovery;
@@ -108,6 +111,12 @@ public final class EditorApp {
     private final ImString courseName = new ImString(128);
     private long fieldsVersion = -1;
     private int selected = -1;
+    // The selected object's fields (refreshed when the selection or the course changes) and the selected zone.
+    private final ImDouble objA = new ImDouble(), objB = new ImDouble(), objC = new ImDouble(), objRestitution = new ImDouble();
+    private int selectedFieldsFor = -1;
+    private long selectedFieldsVersion = -1;
+    private int selectedZone = -1;
+    private final ImDouble zoneKinetic = new ImDouble(), zoneStatic = new ImDouble();
     private float time;
 
     public EditorApp(CourseEditor editor, Options options) {
@@ -465,6 +474,7 @@ public final class EditorApp {
         tool = new ToolController(next);
         camera = null;
         selected = -1;
+        selectedZone = -1;
         fieldsVersion = -1;
         problemsStale = true;
         rebuildScene = true;
@@ -603,10 +613,7 @@ public final class EditorApp {
             }
             ImGui.newLine();
             ImGui.textDisabled("M wall, B tree, ENTER places, P deletes, Q/E turn");
-            float[] len = {(float) tool.wallLength}, tr = {(float) tool.treeRadius}, bs = {(float) tool.boxSize};
-            if (ImGui.sliderFloat("Wall length", len, 0.2f, 5f, "%.2f")) tool.wallLength = len[0];
-            if (ImGui.sliderFloat("Tree radius", tr, 0.05f, 0.5f, "%.2f")) tool.treeRadius = tr[0];
-            if (ImGui.sliderFloat("Box size", bs, 0.1f, 2f, "%.2f")) tool.boxSize = bs[0];
+            newObjectSettings();
         }
         ImGui.separator();
         List<Obstacle> list = editor.course().obstacles();
@@ -625,8 +632,123 @@ public final class EditorApp {
                 editor.removeObstacle(selected);
                 selected = -1;
             }
+            if (selected >= 0) selectedObjectFields(list.get(selected));
         }
+        zoneList();
         ImGui.end();
+    }
+
+    /** Sizes of the objects the tool will place. */
+    private void newObjectSettings() {
+        switch (tool.kind()) {
+            case WALL -> {
+                float[] len = {(float) tool.wallLength}, th = {(float) tool.wallThickness}, ht = {(float) tool.wallHeight};
+                if (ImGui.sliderFloat("Wall length", len, 0.2f, 5f, "%.2f")) tool.wallLength = len[0];
+                if (ImGui.sliderFloat("Thickness", th, 0f, 0.5f, "%.3f")) tool.wallThickness = th[0];
+                if (ImGui.sliderFloat("Height", ht, 0.02f, 1f, "%.2f")) tool.wallHeight = Math.max(0.01, ht[0]);
+            }
+            case TREE -> {
+                float[] tr = {(float) tool.treeRadius}, ht = {(float) tool.treeHeight};
+                if (ImGui.sliderFloat("Tree radius", tr, 0.05f, 0.5f, "%.2f")) tool.treeRadius = tr[0];
+                if (ImGui.sliderFloat("Tree height", ht, 0.2f, 3f, "%.2f")) tool.treeHeight = ht[0];
+            }
+            case BOX -> {
+                float[] bs = {(float) tool.boxSize}, ht = {(float) tool.boxHeight};
+                if (ImGui.sliderFloat("Box size", bs, 0.1f, 2f, "%.2f")) tool.boxSize = bs[0];
+                if (ImGui.sliderFloat("Box height", ht, 0.05f, 2f, "%.2f")) tool.boxHeight = ht[0];
+            }
+            case MODEL -> {
+                List<String> models = ModelCatalog.BUNDLED;
+                ImInt choice = new ImInt(Math.max(0, models.indexOf(tool.modelFile)));
+                if (ImGui.combo("Model", choice, models.toArray(new String[0]))) tool.modelFile = models.get(choice.get());
+                float[] sc = {(float) tool.modelScale};
+                if (ImGui.sliderFloat("Scale", sc, 0.1f, 3f, "%.2f")) tool.modelScale = Math.max(0.01, sc[0]);
+            }
+        }
+        float[] re = {(float) tool.restitution};
+        if (ImGui.sliderFloat("Restitution", re, 0f, 1f, "%.2f")) tool.restitution = re[0];
+    }
+
+    /** The selected object's sizes and restitution; a typed value is one undoable edit when the field is left. */
+    private void selectedObjectFields(Obstacle o) {
+        if (selected != selectedFieldsFor || editor.version() != selectedFieldsVersion) {
+            selectedFieldsFor = selected;
+            selectedFieldsVersion = editor.version();
+            double[] v = sizes(o);
+            objA.set(v[0]);
+            objB.set(v[1]);
+            objC.set(v[2]);
+            objRestitution.set(o.restitution());
+        }
+        try {
+            if (o instanceof Obstacle.Wall) {
+                ImGui.inputDouble("Thickness m", objA);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
+                ImGui.inputDouble("Height m", objB);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
+            } else if (o instanceof Obstacle.Tree) {
+                ImGui.inputDouble("Radius m", objA);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
+                ImGui.inputDouble("Height m", objB);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
+            } else if (o instanceof Obstacle.Box) {
+                ImGui.inputDouble("Width m", objA);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
+                ImGui.inputDouble("Depth m", objB);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
+                ImGui.inputDouble("Height m", objC);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
+            } else {
+                ImGui.inputDouble("Scale", objA);
+                if (ImGui.isItemDeactivatedAfterEdit()) editor.setModelScale(selected, objA.get());
+            }
+            ImGui.inputDouble("Restitution", objRestitution);
+            if (ImGui.isItemDeactivatedAfterEdit()) editor.setRestitution(selected, objRestitution.get());
+        } catch (IllegalArgumentException e) {
+            say(e.getMessage());
+            selectedFieldsFor = -1; // show the object's values again
+        }
+    }
+
+    /** The editable sizes of an object, in the order of its fields. */
+    private static double[] sizes(Obstacle o) {
+        if (o instanceof Obstacle.Wall w) return new double[]{w.thickness(), w.height(), 0};
+        if (o instanceof Obstacle.Tree t) return new double[]{t.radius(), t.height(), 0};
+        if (o instanceof Obstacle.Box b) {
+            return new double[]{b.max().x() - b.min().x(), b.max().y() - b.min().y(), b.max().z() - b.min().z()};
+        }
+        return new double[]{((Obstacle.Model) o).scale(), 0, 0};
+    }
+
+    /** The course's friction zones: listed, deletable, friction editable. */
+    private void zoneList() {
+        List<Zone> zones = editor.zones();
+        if (zones.isEmpty()) return;
+        ImGui.separator();
+        ImGui.text("Friction zones: " + zones.size() + " (later ones win)");
+        for (int i = 0; i < zones.size(); i++) {
+            if (ImGui.selectable(i + " " + ZoneTools.describe(zones.get(i)) + "##z" + i, i == selectedZone)) {
+                selectedZone = i;
+                zoneKinetic.set(zones.get(i).kineticFriction());
+                zoneStatic.set(zones.get(i).staticFriction());
+            }
+        }
+        if (selectedZone < 0 || selectedZone >= zones.size()) return;
+        ImGui.textWrapped(ZoneTools.describe(zones.get(selectedZone))); // the list cuts long lines
+        try {
+            ImGui.inputDouble("Zone mu_k", zoneKinetic);
+            if (ImGui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
+            ImGui.inputDouble("Zone mu_s", zoneStatic);
+            if (ImGui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
+            if (ImGui.button("Delete zone")) {
+                editor.removeZone(selectedZone);
+                selectedZone = -1;
+            }
+        } catch (IllegalArgumentException e) {
+            say(e.getMessage());
+            zoneKinetic.set(zones.get(selectedZone).kineticFriction());
+            zoneStatic.set(zones.get(selectedZone).staticFriction());
+        }
     }
 
     private void syncFields() {
