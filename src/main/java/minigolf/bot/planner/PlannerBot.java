@@ -35,6 +35,10 @@ import minigolf.physics.World;
 public final class PlannerBot extends SearchBot {
     private static final double SWEEP_STEP = Math.toRadians(4);
     private static final double SWEEP_HALF_WIDTH = Math.toRadians(120);
+    /** The fine sweep's step near shots that hit obstacles, and how many shots it may spend per stroke. */
+    private static final double FINE_STEP = Math.toRadians(0.1);
+    private static final double FINE_HALF_WIDTH = Math.toRadians(30);
+    private static final int FINE_PROBES = 800;
 
     private final CourseMaps maps = new CourseMaps();
     private World planWorld;
@@ -155,11 +159,13 @@ public final class PlannerBot extends SearchBot {
             if (first.holed) return first.shot;
             sim.phase("sweep");
             List<Candidate> candidates = new ArrayList<>();
+            List<double[]> collidedAngles = new ArrayList<>();
             boolean reachTested = false;
             for (double angle : sweepAngles()) {
                 Shot shot = guess(angle, pathLength);
                 Eval e = evaluate(shot, holeX, holeY);
                 if (e.holed) return shot;
+                if (e.collided) collidedAngles.add(new double[] {angle});
                 if (e.penalty) continue;
                 double d = field.at(e.restX, e.restY);
                 if (!Double.isFinite(d)) continue;
@@ -181,6 +187,50 @@ public final class PlannerBot extends SearchBot {
             for (int i = 0; i < Math.min(3, candidates.size()); i++) {
                 Attempt a = solveHole(candidates.get(i).shot, null);
                 if (a.holed) return a.shot;
+            }
+            return fineSweep(collidedAngles);
+        }
+
+        /**
+         * Obstacles (a tree field) leave corridors narrower than the coarse sweep's step between
+         * shots that hit them: the rest point is continuous inside a corridor and jumps at its
+         * edges, so neither the sweep nor Broyden from its shots sees one. Around each coarse shot
+         * that hit an obstacle, nearest the hole's direction first, directions FINE_STEP apart;
+         * a shot that touched nothing and stopped near the hole starts Broyden.
+         */
+        Shot fineSweep(List<double[]> collidedAngles) {
+            if (collidedAngles.isEmpty()) return null;
+            sim.phase("fine sweep");
+            double holeAngle = Math.atan2(holeY - py, holeX - px);
+            double[] lead = pointAlongPath(Math.min(1.5, 0.5 * pathLength));
+            double pathAngle = Math.atan2(lead[1] - py, lead[0] - px);
+            List<Double> tried = new ArrayList<>();
+            int probes = 0;
+            for (int k = 0; k * FINE_STEP <= FINE_HALF_WIDTH; k++) {
+                for (double base : new double[] {holeAngle, pathAngle}) {
+                    for (int sign : new int[] {1, -1}) {
+                        if (k == 0 && sign < 0) continue;
+                        double angle = base + sign * k * FINE_STEP;
+                        boolean duplicate = false;
+                        for (int t = Math.max(0, tried.size() - 8); t < tried.size(); t++) {
+                            if (Math.abs(Math.IEEEremainder(angle - tried.get(t), 2 * Math.PI)) < 0.5 * FINE_STEP) duplicate = true;
+                        }
+                        if (duplicate) continue;
+                        tried.add(angle);
+                        if (++probes > FINE_PROBES) return null;
+                        Shot shot = guess(angle, pathLength);
+                        Eval e = evaluate(shot, holeX, holeY);
+                        if (e.holed) return shot;
+                        if (e.penalty) continue;
+                        double d = field.at(e.restX, e.restY);
+                        if (Double.isFinite(d) && d < 0.6) {
+                            sim.phase("refine");
+                            Attempt a = solveHole(shot, e);
+                            if (a.holed) return a.shot;
+                            sim.phase("fine sweep");
+                        }
+                    }
+                }
             }
             return null;
         }
@@ -510,13 +560,13 @@ public final class PlannerBot extends SearchBot {
 
         /** Simulates in the probe world; F = rest point - target. */
         Eval evaluate(Shot shot, double tx, double ty) {
-            Approach approach = capture ? new Approach(holeX, holeY, px, py, shot) : null;
+            Approach approach = new Approach(holeX, holeY, px, py, shot);
             ShotResult r = probe.simulate(px, py, shot, approach);
             boolean holed = !capture && r.outcome() == Outcome.HOLED;
             boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
-            double dirX = approach != null ? approach.dirX : 0, dirY = approach != null ? approach.dirY : 0;
+            double dirX = capture ? approach.dirX : 0, dirY = capture ? approach.dirY : 0;
             return new Eval(shot, r, penalty, holed, r.endX(), r.endY(),
-                    penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY);
+                    penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY, approach.collided);
         }
     }
 
@@ -525,6 +575,7 @@ public final class PlannerBot extends SearchBot {
         final double hx, hy;
         double lastX, lastY, lastVx, lastVy;
         double best, cx, cy, cvx, cvy, dirX, dirY;
+        boolean collided;
 
         Approach(double hx, double hy, double x0, double y0, Shot shot) {
             this.hx = hx;
@@ -567,11 +618,16 @@ public final class PlannerBot extends SearchBot {
             lastVx = vx;
             lastVy = vy;
         }
+
+        @Override
+        public void onEvent(minigolf.physics.StrokeEvent event) {
+            if (event.type() == minigolf.physics.StrokeEvent.Type.COLLISION) collided = true;
+        }
     }
 
     /** One probe: the shot, its rest point, the miss F and the direction the ball passed the hole in. */
     private record Eval(Shot shot, ShotResult result, boolean penalty, boolean holed, double restX, double restY,
-                        double fx, double fy, double dirX, double dirY) {
+                        double fx, double fy, double dirX, double dirY, boolean collided) {
     }
 
     private record Candidate(Shot shot, double distance) {
