@@ -39,7 +39,7 @@ public final class PlannerBot extends SearchBot {
     private static final double FINE_STEP = Math.toRadians(0.1);
     private static final int FINE_PROBES = 400;
     /** Lay-ups tried from the hole-in-one search's resting probes, at least this far apart. */
-    private static final int TWO_STROKE_TRIES = 6;
+    private static final int TWO_STROKE_TRIES = 3;
     private static final double TWO_STROKE_SPACING = 0.4;
 
     private final CourseMaps maps = new CourseMaps();
