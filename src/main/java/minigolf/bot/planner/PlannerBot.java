@@ -35,6 +35,12 @@ import minigolf.physics.World;
 public final class PlannerBot extends SearchBot {
     private static final double SWEEP_STEP = Math.toRadians(4);
     private static final double SWEEP_HALF_WIDTH = Math.toRadians(120);
+    /** The fine sweep's step near shots that hit obstacles, and how many shots it may spend per stroke. */
+    private static final double FINE_STEP = Math.toRadians(0.1);
+    private static final int FINE_PROBES = 400;
+    /** Lay-ups tried from the hole-in-one search's resting probes, at least this far apart. */
+    private static final int TWO_STROKE_TRIES = 3;
+    private static final double TWO_STROKE_SPACING = 0.4;
 
     private final CourseMaps maps = new CourseMaps();
     private World planWorld;
@@ -71,6 +77,9 @@ public final class PlannerBot extends SearchBot {
         if (Double.isFinite(pathLength) && pathLength <= 1.3 * reach) {
             sim.phase("direct");
             Shot shot = stroke.holeInOne();
+            if (shot != null) return shot;
+            sim.phase("two strokes");
+            shot = stroke.twoStrokes();
             if (shot != null) return shot;
         }
         sim.phase("lay-up");
@@ -118,6 +127,8 @@ public final class PlannerBot extends SearchBot {
         final java.util.function.Supplier<StrokePlan> plan;
 
         final CourseMaps maps;
+        /** Every probe from this ball position that came to rest: lay-ups the plan does not know. */
+        final List<Eval> restingProbes = new ArrayList<>();
 
         Stroke(CountingSimulator sim, CountingSimulator probe, CourseMaps maps, double px, double py,
                java.util.function.Supplier<StrokePlan> plan) {
@@ -155,11 +166,14 @@ public final class PlannerBot extends SearchBot {
             if (first.holed) return first.shot;
             sim.phase("sweep");
             List<Candidate> candidates = new ArrayList<>();
+            List<double[]> promising = new ArrayList<>();
+            boolean obstacles = false;
             boolean reachTested = false;
             for (double angle : sweepAngles()) {
                 Shot shot = guess(angle, pathLength);
                 Eval e = evaluate(shot, holeX, holeY);
                 if (e.holed) return shot;
+                obstacles |= e.collided;
                 if (e.penalty) continue;
                 double d = field.at(e.restX, e.restY);
                 if (!Double.isFinite(d)) continue;
@@ -170,6 +184,7 @@ public final class PlannerBot extends SearchBot {
                 }
                 candidates.add(new Candidate(shot, d));
                 if (d < Math.max(0.6, 0.25 * pathLength)) {
+                    promising.add(new double[] {angle, d});
                     sim.phase("refine");
                     Attempt a = solveHole(shot, e);
                     if (a.holed) return a.shot;
@@ -181,6 +196,48 @@ public final class PlannerBot extends SearchBot {
             for (int i = 0; i < Math.min(3, candidates.size()); i++) {
                 Attempt a = solveHole(candidates.get(i).shot, null);
                 if (a.holed) return a.shot;
+            }
+            return obstacles ? fineSweep(promising) : null;
+        }
+
+        /**
+         * Obstacles (a tree field) leave corridors narrower than the coarse sweep's step between
+         * shots that hit them: the rest point is continuous inside a corridor and jumps at its
+         * edges (a shot that caroms off a trunk into the hole has one tree to hit, on one side),
+         * so neither the sweep nor Broyden from its shots sees one. When some sweep shot hit an
+         * obstacle: around each promising sweep shot (rest point near the hole), nearest first,
+         * directions FINE_STEP apart over one coarse step either side; a shot stopping within
+         * 0.6 m of the hole starts Broyden. At most FINE_PROBES shots.
+         */
+        Shot fineSweep(List<double[]> promising) {
+            sim.phase("fine sweep");
+            promising.sort((a, b) -> Double.compare(a[1], b[1]));
+            List<Double> tried = new ArrayList<>();
+            int probes = 0;
+            for (double[] centre : promising) {
+                for (int k = 1; k * FINE_STEP < SWEEP_STEP + 1e-9; k++) {
+                    for (int sign : new int[] {1, -1}) {
+                        double angle = centre[0] + sign * k * FINE_STEP;
+                        boolean duplicate = false;
+                        for (double t : tried) {
+                            if (Math.abs(Math.IEEEremainder(angle - t, 2 * Math.PI)) < 0.5 * FINE_STEP) duplicate = true;
+                        }
+                        if (duplicate) continue;
+                        tried.add(angle);
+                        if (++probes > FINE_PROBES) return null;
+                        Shot shot = guess(angle, pathLength);
+                        Eval e = evaluate(shot, holeX, holeY);
+                        if (e.holed) return shot;
+                        if (e.penalty) continue;
+                        double d = field.at(e.restX, e.restY);
+                        if (Double.isFinite(d) && d < 0.6) {
+                            sim.phase("refine");
+                            Attempt a = solveHole(shot, e);
+                            if (a.holed) return a.shot;
+                            sim.phase("fine sweep");
+                        }
+                    }
+                }
             }
             return null;
         }
@@ -272,6 +329,36 @@ public final class PlannerBot extends SearchBot {
             if (lost) return new double[] {Double.NaN, Double.NaN};
             double lateral = approach.dirX * (approach.cy - holeY) - approach.dirY * (approach.cx - holeX);
             return new double[] {Math.hypot(approach.cvx, approach.cvy) - target, lateral};
+        }
+
+        /**
+         * No hole-in-one: the probes of the hole-in-one search already rest in many places,
+         * some of them (over a hill, round a pool) where the straight-putt plan sees no one-putt.
+         * The nearest the hole on the distance field, well clear of water and a little of
+         * obstacles, each at least TWO_STROKE_SPACING from the others, are tried in turn: the
+         * probe's shot is played if the next stroke from its rest point holes out.
+         */
+        Shot twoStrokes() {
+            List<Eval> options = new ArrayList<>();
+            for (Eval e : restingProbes) {
+                if (grid.hazardClearance(e.restX, e.restY) < StrokePlan.REST_CLEARANCE
+                        || grid.clearance(e.restX, e.restY) < StrokePlan.REST_OBSTACLE_CLEARANCE
+                        || !Double.isFinite(field.at(e.restX, e.restY))) continue;
+                options.add(e);
+            }
+            options.sort((a, b) -> Double.compare(field.at(a.restX, a.restY), field.at(b.restX, b.restY)));
+            List<Eval> chosen = new ArrayList<>();
+            for (Eval e : options) {
+                if (chosen.size() == TWO_STROKE_TRIES) break;
+                boolean near = false;
+                for (Eval c : chosen) near |= Math.hypot(c.restX - e.restX, c.restY - e.restY) < TWO_STROKE_SPACING;
+                if (near) continue;
+                chosen.add(e);
+                Stroke next = new Stroke(sim, probe, maps, e.restX, e.restY, plan);
+                double hx = holeX - next.px, hy = holeY - next.py;
+                if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) return e.shot;
+            }
+            return null;
         }
 
         /**
@@ -510,13 +597,15 @@ public final class PlannerBot extends SearchBot {
 
         /** Simulates in the probe world; F = rest point - target. */
         Eval evaluate(Shot shot, double tx, double ty) {
-            Approach approach = capture ? new Approach(holeX, holeY, px, py, shot) : null;
+            Approach approach = new Approach(holeX, holeY, px, py, shot);
             ShotResult r = probe.simulate(px, py, shot, approach);
             boolean holed = !capture && r.outcome() == Outcome.HOLED;
             boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
-            double dirX = approach != null ? approach.dirX : 0, dirY = approach != null ? approach.dirY : 0;
-            return new Eval(shot, r, penalty, holed, r.endX(), r.endY(),
-                    penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY);
+            double dirX = capture ? approach.dirX : 0, dirY = capture ? approach.dirY : 0;
+            Eval e = new Eval(shot, r, penalty, holed, r.endX(), r.endY(),
+                    penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY, approach.collided);
+            if (r.outcome() == Outcome.STOPPED) restingProbes.add(e);
+            return e;
         }
     }
 
@@ -525,6 +614,7 @@ public final class PlannerBot extends SearchBot {
         final double hx, hy;
         double lastX, lastY, lastVx, lastVy;
         double best, cx, cy, cvx, cvy, dirX, dirY;
+        boolean collided;
 
         Approach(double hx, double hy, double x0, double y0, Shot shot) {
             this.hx = hx;
@@ -567,11 +657,16 @@ public final class PlannerBot extends SearchBot {
             lastVx = vx;
             lastVy = vy;
         }
+
+        @Override
+        public void onEvent(minigolf.physics.StrokeEvent event) {
+            if (event.type() == minigolf.physics.StrokeEvent.Type.COLLISION) collided = true;
+        }
     }
 
     /** One probe: the shot, its rest point, the miss F and the direction the ball passed the hole in. */
     private record Eval(Shot shot, ShotResult result, boolean penalty, boolean holed, double restX, double restY,
-                        double fx, double fy, double dirX, double dirY) {
+                        double fx, double fy, double dirX, double dirY, boolean collided) {
     }
 
     private record Candidate(Shot shot, double distance) {
