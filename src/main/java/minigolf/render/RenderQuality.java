@@ -17,11 +17,12 @@ import static org.lwjgl.opengl.GL11.glGetString;
  * @param waterTargetScale the water's reflection/refraction images relative to the viewport
  * @param shadowsInWater   whether the mirrored and refracted scenes sample the shadow map too
  * @param shadowTaps       depth-compare taps per shadowed pixel: 4 (a 3x3-texel footprint) or 1 (2x2)
+ * @param vertexLitTerrain whether the terrain is lit per vertex (Gouraud; only its shadows per pixel)
  */
 public record RenderQuality(String name, int samples, int shadowMapSize, float waterTargetScale, boolean shadowsInWater,
-                            int shadowTaps) {
-    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4);
-    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 2048, 0.35f, false, 1);
+                            int shadowTaps, boolean vertexLitTerrain) {
+    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4, false);
+    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 2048, 0.35f, false, 1, true);
 
     /** Whether a GL_RENDERER string names a software rasteriser. */
     public static boolean isSoftware(String glRenderer) {

@@ -7,12 +7,22 @@ import minigolf.terrain.Terrain;
 public final class TerrainPass implements RenderPass {
     private Course course;
     private Terrain terrain;
-    private final ShaderProgram shader = ShaderProgram.load("terrain");
+    private final ShaderProgram shader;
     private TerrainMesh.ColorMode mode;
     private Mesh mesh;
     private double minHeight, maxHeight;
+    private int vertexCount;
 
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
+        this(course, terrain, mode, false);
+    }
+
+    /**
+     * As above; {@code vertexLit} picks the software rasterisers' shader (lighting and haze per vertex,
+     * shadows per pixel: terrain-vertexlit.*), which costs about half per pixel on llvmpipe.
+     */
+    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit) {
+        this.shader = ShaderProgram.load(vertexLit ? "terrain-vertexlit" : "terrain");
         this.course = course;
         this.terrain = terrain;
         setColorMode(mode);
@@ -29,6 +39,7 @@ public final class TerrainPass implements RenderPass {
         Mesh uploaded = new Mesh(built.data());
         if (mesh != null) mesh.close();
         mesh = uploaded;
+        vertexCount = built.data().vertices().length / built.data().stride();
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
         mode = newMode;
@@ -60,6 +71,11 @@ public final class TerrainPass implements RenderPass {
         TerrainMesh.ColorMode m = mode;
         mode = null;
         setColorMode(m);
+    }
+
+    /** Vertices in the drawn mesh (surface and skirts). */
+    public int vertexCount() {
+        return vertexCount;
     }
 
     /** The lowest and highest surface heights sampled for the mesh. */
