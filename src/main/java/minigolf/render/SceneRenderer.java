@@ -73,7 +73,7 @@ public final class SceneRenderer implements AutoCloseable {
         ObjectsPass o = null;
         try {
             s = new SkyPass();
-            t = new TerrainPass(course, surface, mode, quality.vertexLitTerrain());
+            t = new TerrainPass(course, surface, mode, quality.vertexLitTerrain(), quality.terrainSpacing());
             ob = new ObstaclesPass(course.obstacles(), surface::height);
             o = new ObjectsPass(course, surface);
             water = new WaterPass(course, surface);

@@ -12,16 +12,19 @@ public final class TerrainPass implements RenderPass {
     private Mesh mesh;
     private double minHeight, maxHeight;
     private int vertexCount;
+    private final double minSpacing;
 
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
-        this(course, terrain, mode, false);
+        this(course, terrain, mode, false, TerrainMesh.MIN_SPACING);
     }
 
     /**
      * As above; {@code vertexLit} picks the software rasterisers' shader (lighting and haze per vertex,
-     * shadows per pixel: terrain-vertexlit.*), which costs about half per pixel on llvmpipe.
+     * shadows per pixel: terrain-vertexlit.*), which costs less per pixel on llvmpipe; {@code minSpacing}
+     * the mesh's finest sample spacing in metres (llvmpipe pays per triangle too).
      */
-    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit) {
+    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing) {
+        this.minSpacing = minSpacing;
         this.shader = ShaderProgram.load(vertexLit ? "terrain-vertexlit" : "terrain");
         this.course = course;
         this.terrain = terrain;
@@ -35,7 +38,7 @@ public final class TerrainPass implements RenderPass {
     /** Rebuilds the mesh with the other colouring (a few milliseconds for 256x256 quads). */
     public void setColorMode(TerrainMesh.ColorMode newMode) {
         if (newMode == mode && mesh != null) return;
-        TerrainMesh built = TerrainMesh.build(course, terrain, newMode);
+        TerrainMesh built = TerrainMesh.build(course, terrain, newMode, minSpacing);
         Mesh uploaded = new Mesh(built.data());
         if (mesh != null) mesh.close();
         mesh = uploaded;
@@ -53,11 +56,16 @@ public final class TerrainPass implements RenderPass {
     public int updateRegion(Course newCourse, Terrain newTerrain, double minX, double minY, double maxX, double maxY) {
         course = newCourse;
         terrain = newTerrain;
-        TerrainMesh.Patch patch = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight, minX, minY, maxX, maxY);
+        TerrainMesh.Patch patch = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight, minX, minY, maxX, maxY, minSpacing);
         return applyPatch(patch);
     }
 
-    /** Uploads re-sampled surface rows (see {@link TerrainMesh#surfacePatch}); returns the floats uploaded. */
+    /** The mesh's finest sample spacing (metres): patches for {@link #applyPatch} must be made with it. */
+    public double minSpacing() {
+        return minSpacing;
+    }
+
+    /** Uploads re-sampled surface rows (see {@link TerrainMesh#surfacePatch}, made with {@link #minSpacing()}); returns the floats uploaded. */
     public int applyPatch(TerrainMesh.Patch patch) {
         if (patch == null) return 0;
         mesh.updateVertices(patch.firstFloat(), patch.vertices());
