@@ -90,6 +90,7 @@ final class BenchRenderCommand implements Callable<Integer> {
                 ObjectNode passes = out.putObject("passMs");
                 renderer.passTimer().millisPerFrame(frames).forEach(passes::put);
                 out.put("terrainVertices", renderer.terrainPass().vertexCount());
+                out.put("waterTargetTerrainVertices", renderer.terrainPass().targetVertexCount());
             }
             out.put("frames", frames);
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);

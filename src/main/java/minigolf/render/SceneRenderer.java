@@ -73,7 +73,8 @@ public final class SceneRenderer implements AutoCloseable {
         ObjectsPass o = null;
         try {
             s = new SkyPass();
-            t = new TerrainPass(course, surface, mode, quality.vertexLitTerrain(), quality.terrainSpacing());
+            t = new TerrainPass(course, surface, mode, quality.vertexLitTerrain(), quality.terrainSpacing(),
+                    quality.waterTargetTerrainSpacing());
             ob = new ObstaclesPass(course.obstacles(), surface::height);
             o = new ObjectsPass(course, surface);
             water = new WaterPass(course, surface);
@@ -370,7 +371,7 @@ public final class SceneRenderer implements AutoCloseable {
         mirrorFrame.mirrorOf(frame, w, h);
         mirrorFrame.shadowsOn = shadows && shadowsInWater;
         mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
-        terrain.render(mirrorFrame);
+        terrain.renderForWaterTarget(mirrorFrame); // the coarser mesh, where there is one: far banks, mirrored
         obstacles.render(mirrorFrame);
         objects.render(mirrorFrame);
         sky.render(mirrorFrame);
@@ -382,7 +383,7 @@ public final class SceneRenderer implements AutoCloseable {
         refractionFrame.copyOf(frame, w, h);
         refractionFrame.shadowsOn = shadows && shadowsInWater;
         refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
-        terrain.render(refractionFrame);
+        terrain.render(refractionFrame); // the full mesh: the lake bed's edge shows through the shallows
         obstacles.render(refractionFrame);
         objects.render(refractionFrame);
         timer.mark("refractionTarget");

@@ -13,18 +13,27 @@ public final class TerrainPass implements RenderPass {
     private double minHeight, maxHeight;
     private int vertexCount;
     private final double minSpacing;
+    /** The water reflection's coarser mesh (software quality: a small mirrored image needs few triangles), or null: {@link #mesh}. */
+    private Mesh targetMesh;
+    private final double targetSpacing;
+    private boolean targetMeshStale;
+    private int targetVertexCount;
 
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
-        this(course, terrain, mode, false, TerrainMesh.MIN_SPACING);
+        this(course, terrain, mode, false, TerrainMesh.MIN_SPACING, TerrainMesh.MIN_SPACING);
     }
 
     /**
      * As above; {@code vertexLit} picks the software rasterisers' shader (lighting and haze per vertex,
      * shadows per pixel: terrain-vertexlit.*), which costs less per pixel on llvmpipe; {@code minSpacing}
-     * the mesh's finest sample spacing in metres (llvmpipe pays per triangle too).
+     * the mesh's finest sample spacing in metres (llvmpipe pays per triangle too); {@code targetSpacing}
+     * that of the mesh drawn into the water's reflection image (a second, coarser mesh
+     * when larger than {@code minSpacing}).
      */
-    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing) {
+    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing,
+                       double targetSpacing) {
         this.minSpacing = minSpacing;
+        this.targetSpacing = Math.max(minSpacing, targetSpacing);
         this.shader = ShaderProgram.load(vertexLit ? "terrain-vertexlit" : "terrain");
         this.course = course;
         this.terrain = terrain;
@@ -46,6 +55,17 @@ public final class TerrainPass implements RenderPass {
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
         mode = newMode;
+        rebuildTargetMesh();
+    }
+
+    private void rebuildTargetMesh() {
+        targetMeshStale = false;
+        if (targetSpacing <= minSpacing) return;
+        MeshData data = TerrainMesh.build(course, terrain, mode, targetSpacing).data();
+        Mesh uploaded = new Mesh(data);
+        if (targetMesh != null) targetMesh.close();
+        targetMesh = uploaded;
+        targetVertexCount = data.vertices().length / data.stride();
     }
 
     /**
@@ -57,7 +77,14 @@ public final class TerrainPass implements RenderPass {
         course = newCourse;
         terrain = newTerrain;
         TerrainMesh.Patch patch = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight, minX, minY, maxX, maxY, minSpacing);
-        return applyPatch(patch);
+        int floats = applyPatch(patch);
+        if (targetMesh != null && patch != null) {
+            TerrainMesh.Patch coarse = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight,
+                    minX, minY, maxX, maxY, targetSpacing);
+            if (coarse != null) targetMesh.updateVertices(coarse.firstFloat(), coarse.vertices());
+            targetMeshStale = false;
+        }
+        return floats;
     }
 
     /** The mesh's finest sample spacing (metres): patches for {@link #applyPatch} must be made with it. */
@@ -69,6 +96,8 @@ public final class TerrainPass implements RenderPass {
     public int applyPatch(TerrainMesh.Patch patch) {
         if (patch == null) return 0;
         mesh.updateVertices(patch.firstFloat(), patch.vertices());
+        // The water targets' coarse mesh is rebuilt before it is next drawn (updateRegion patches it at once).
+        if (targetMesh != null) targetMeshStale = true;
         return patch.vertices().length;
     }
 
@@ -103,18 +132,34 @@ public final class TerrainPass implements RenderPass {
 
     @Override
     public void render(FrameContext frame) {
+        draw(frame, mesh);
+    }
+
+    /** Draws into the water's reflection image, from the coarser mesh where there is one. */
+    void renderForWaterTarget(FrameContext frame) {
+        if (targetMeshStale) rebuildTargetMesh();
+        draw(frame, targetMesh != null ? targetMesh : mesh);
+    }
+
+    /** Vertices in the water targets' mesh (the same as {@link #vertexCount()} without a coarser one). */
+    public int targetVertexCount() {
+        return targetMesh == null ? vertexCount : targetVertexCount;
+    }
+
+    private void draw(FrameContext frame, Mesh drawn) {
         shader.use();
         shader.set("uViewProjection", frame.viewProjection);
         shader.set("uClipPlane", frame.clipPlane);
         Lighting.apply(shader, frame);
         shader.set("uShininess", 24f);
         shader.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
-        mesh.draw();
+        drawn.draw();
     }
 
     @Override
     public void close() {
         if (mesh != null) mesh.close();
+        if (targetMesh != null) targetMesh.close();
         shader.close();
     }
 }
