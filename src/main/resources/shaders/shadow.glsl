@@ -34,9 +34,15 @@ float ballVisibility(vec3 p) {
     return v;
 }
 
+float mapVisibilityAt(vec3 c);
+
 float mapVisibility(vec3 worldPos, vec3 n) {
     vec4 p = uLightViewProjection * vec4(worldPos + n * uShadowNormalOffset, 1.0);
-    vec3 c = p.xyz / p.w * 0.5 + 0.5;
+    return mapVisibilityAt(p.xyz / p.w * 0.5 + 0.5);
+}
+
+// The sun's visibility at shadow-map coordinates c (texture xy, depth z; the receiver already offset).
+float mapVisibilityAt(vec3 c) {
     if (c.x <= 0.0 || c.x >= 1.0 || c.y <= 0.0 || c.y >= 1.0 || c.z >= 1.0) return 1.0;
     float z = c.z - uShadowBias;
     float t = uShadowTexel;

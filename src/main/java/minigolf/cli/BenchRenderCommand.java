@@ -48,6 +48,9 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Option(names = "--no-shadows", description = "No sun shadows.")
     boolean noShadows;
 
+    @Option(names = "--breakdown", description = "Also time each pass (glFinish after each; run separately from the untimed frames).")
+    boolean breakdown;
+
     @Override
     public Integer call() {
         if (frames < 1) throw new UserError("--frames: must be at least 1, got " + frames);
@@ -79,6 +82,16 @@ final class BenchRenderCommand implements Callable<Integer> {
             off.finish();
             double ms = (System.nanoTime() - start) / 1e6 / frames;
             long cpuEnd = processCpuMillis();
+            if (breakdown) {
+                // Timed separately: the glFinish after each pass stalls the pipeline and would inflate msPerFrame.
+                renderer.passTimer().setOn(true);
+                for (int i = 0; i < frames; i++) frame(off, renderer, camera, s, side, warmUp + frames + i);
+                renderer.passTimer().setOn(false);
+                ObjectNode passes = out.putObject("passMs");
+                renderer.passTimer().millisPerFrame(frames).forEach(passes::put);
+                out.put("terrainVertices", renderer.terrainPass().vertexCount());
+                out.put("waterTargetTerrainVertices", renderer.terrainPass().targetVertexCount());
+            }
             out.put("frames", frames);
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);
             out.put("fps", Math.round(10000 / ms) / 10.0);

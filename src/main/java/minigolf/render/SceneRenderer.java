@@ -13,7 +13,7 @@ import static org.lwjgl.opengl.GL13.GL_MULTISAMPLE;
 import static org.lwjgl.opengl.GL30.*;
 
 /**
- * Draws a course: sky, terrain, objects, then water (translucent, last). Owns the passes; needs a
+ * Draws a course: terrain, objects, the sky where they left the far plane, then water (translucent, last). Owns the passes; needs a
  * current GL context from construction to {@link #close()}.
  */
 public final class SceneRenderer implements AutoCloseable {
@@ -54,6 +54,7 @@ public final class SceneRenderer implements AutoCloseable {
     private boolean minimapDirty = true;
     private final ShaderProgram blitShader;
     private final int emptyVao;
+    private final PassTimer timer = new PassTimer();
 
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode) {
         this(course, surface, mode, RenderQuality.HIGH);
@@ -72,7 +73,8 @@ public final class SceneRenderer implements AutoCloseable {
         ObjectsPass o = null;
         try {
             s = new SkyPass();
-            t = new TerrainPass(course, surface, mode);
+            t = new TerrainPass(course, surface, mode, quality.vertexLitTerrain(), quality.terrainSpacing(),
+                    quality.waterTargetTerrainSpacing());
             ob = new ObstaclesPass(course.obstacles(), surface::height);
             o = new ObjectsPass(course, surface);
             water = new WaterPass(course, surface);
@@ -84,7 +86,7 @@ public final class SceneRenderer implements AutoCloseable {
         terrain = t;
         obstacles = ob;
         objects = o;
-        passes = List.of(sky, terrain, obstacles, objects, water);
+        passes = List.of(terrain, obstacles, objects, sky, water);
         ShaderProgram depth = null;
         try {
             depth = ShaderProgram.load("shadow");
@@ -109,6 +111,11 @@ public final class SceneRenderer implements AutoCloseable {
         emptyVao = glGenVertexArrays();
         frame.shadowMap = shadowMap;
         minimapFrame.shadowMap = shadowMap;
+    }
+
+    /** The per-pass timer (off by default; the benchmark's --breakdown turns it on). */
+    public PassTimer passTimer() {
+        return timer;
     }
 
     public TerrainPass terrainPass() {
@@ -197,6 +204,7 @@ public final class SceneRenderer implements AutoCloseable {
     public void renderMinimap(int x, int y, int sizePx, int framebufferWidth, int framebufferHeight) {
         if (sizePx < 8) return;
         int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        timer.start();
         if (minimapDirty || minimapCache.width() != sizePx) {
             drawMinimapCache(sizePx);
             minimapDirty = false;
@@ -220,6 +228,7 @@ public final class SceneRenderer implements AutoCloseable {
         glDisable(GL_SCISSOR_TEST);
         glEnable(GL_DEPTH_TEST);
         glViewport(0, 0, framebufferWidth, framebufferHeight);
+        timer.mark("minimap");
     }
 
     private static int minimapBorder(int sizePx) {
@@ -292,6 +301,7 @@ public final class SceneRenderer implements AutoCloseable {
         lastTime = time;
         frame.update(camera, width, height, time);
         int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        timer.start();
         frame.shadowsOn = shadows;
         objects.ballShadows(frame);
         minimapFrame.shadowsOn = false; // a map reads better without shadows
@@ -300,6 +310,7 @@ public final class SceneRenderer implements AutoCloseable {
             shadowMapDirty = false;
             glBindFramebuffer(GL_FRAMEBUFFER, target);
         }
+        timer.mark("shadowMap");
         boolean targets = water.hasWater() && waterReflections;
         if (targets) {
             renderWaterTargets(width, height);
@@ -313,7 +324,18 @@ public final class SceneRenderer implements AutoCloseable {
         glDepthFunc(GL_LEQUAL);
         glDisable(GL_CULL_FACE);
         glEnable(GL_MULTISAMPLE);
-        for (RenderPass pass : passes) pass.render(frame);
+        timer.mark("clear");
+        terrain.render(frame);
+        timer.mark("terrain");
+        obstacles.render(frame);
+        timer.mark("obstacles");
+        objects.render(frame);
+        timer.mark("objects");
+        // The sky after the opaque passes, depth-tested at the far plane: its clouds are shaded only where it shows.
+        sky.render(frame);
+        timer.mark("sky");
+        water.render(frame);
+        timer.mark("water");
     }
 
     /** The sun's view of the casters that stand still (terrain, obstacles, pole, flag) into the shadow map. */
@@ -349,10 +371,11 @@ public final class SceneRenderer implements AutoCloseable {
         mirrorFrame.mirrorOf(frame, w, h);
         mirrorFrame.shadowsOn = shadows && shadowsInWater;
         mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
-        sky.render(mirrorFrame);
-        terrain.render(mirrorFrame);
+        terrain.renderForWaterTarget(mirrorFrame); // the coarser mesh, where there is one: far banks, mirrored
         obstacles.render(mirrorFrame);
         objects.render(mirrorFrame);
+        sky.render(mirrorFrame);
+        timer.mark("reflectionTarget");
 
         refraction.bind();
         glClearColor(0.30f, 0.27f, 0.18f, 1f); // lake-bed mud where nothing was drawn
@@ -360,9 +383,10 @@ public final class SceneRenderer implements AutoCloseable {
         refractionFrame.copyOf(frame, w, h);
         refractionFrame.shadowsOn = shadows && shadowsInWater;
         refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
-        terrain.render(refractionFrame);
+        terrain.render(refractionFrame); // the full mesh: the lake bed's edge shows through the shallows
         obstacles.render(refractionFrame);
         objects.render(refractionFrame);
+        timer.mark("refractionTarget");
 
         glDisable(GL_CLIP_DISTANCE0);
         glEnable(GL_MULTISAMPLE);

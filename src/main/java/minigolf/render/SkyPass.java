@@ -3,15 +3,18 @@ package minigolf.render;
 import static org.lwjgl.opengl.GL11.*;
 import static org.lwjgl.opengl.GL30.*;
 
-/** The procedural sky dome (gradient, sun, drifting clouds; see sky.frag): one full-screen triangle, no depth writes. Drawn first. */
+/** The procedural sky dome (gradient, sun, drifting clouds; see sky.frag): one full-screen triangle at the far plane, no depth writes. Drawn after the opaque passes. */
 public final class SkyPass implements RenderPass {
     private final ShaderProgram shader = ShaderProgram.load("sky");
     private final int emptyVao = glGenVertexArrays();
 
     @Override
     public void render(FrameContext frame) {
+        // Drawn after the opaque passes: at depth 1 (the far plane) with GL_LEQUAL it fills only the
+        // pixels nothing covered, so the cloud noise is not computed under the course (early depth test).
         glDepthMask(false);
-        glDisable(GL_DEPTH_TEST);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
         shader.use();
         shader.set("uInverseViewProjection", frame.inverseViewProjection);
         shader.set("uSunDirection", frame.sun.direction());
@@ -19,7 +22,6 @@ public final class SkyPass implements RenderPass {
         glBindVertexArray(emptyVao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
-        glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
     }
 

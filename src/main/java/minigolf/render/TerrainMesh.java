@@ -52,7 +52,12 @@ public final class TerrainMesh {
 
     /** The sample spacing for these bounds: {@link #MIN_SPACING}, coarser where needed to stay within {@link #MAX_QUADS}. */
     public static double sampleSpacing(Bounds b) {
-        return Math.max(MIN_SPACING, Math.max(b.width(), b.depth()) / MAX_QUADS);
+        return sampleSpacing(b, MIN_SPACING);
+    }
+
+    /** As above with a coarser finest spacing (software rasterisers pay per triangle; see RenderQuality). */
+    public static double sampleSpacing(Bounds b, double minSpacing) {
+        return Math.max(Math.max(MIN_SPACING, minSpacing), Math.max(b.width(), b.depth()) / MAX_QUADS);
     }
 
     static int quads(double extent, double spacing) {
@@ -60,8 +65,13 @@ public final class TerrainMesh {
     }
 
     public static TerrainMesh build(Course course, Terrain terrain, ColorMode mode) {
+        return build(course, terrain, mode, MIN_SPACING);
+    }
+
+    /** As above with samples at least {@code minSpacing} metres apart (the same surface, fewer triangles). */
+    public static TerrainMesh build(Course course, Terrain terrain, ColorMode mode, double minSpacing) {
         Bounds b = course.bounds();
-        double spacing = sampleSpacing(b);
+        double spacing = sampleSpacing(b, minSpacing);
         int nx = quads(b.width(), spacing), ny = quads(b.depth(), spacing);
         int cols = nx + 1, rows = ny + 1;
         double dx = b.width() / nx, dy = b.depth() / ny;
@@ -154,8 +164,14 @@ public final class TerrainMesh {
      */
     public static Patch surfacePatch(Course course, Terrain terrain, ColorMode mode, double minH, double maxH,
                                      double minX, double minY, double maxX, double maxY) {
+        return surfacePatch(course, terrain, mode, minH, maxH, minX, minY, maxX, maxY, MIN_SPACING);
+    }
+
+    /** As above for a mesh built with {@code minSpacing} (see {@link #build(Course, Terrain, ColorMode, double)}). */
+    public static Patch surfacePatch(Course course, Terrain terrain, ColorMode mode, double minH, double maxH,
+                                     double minX, double minY, double maxX, double maxY, double minSpacing) {
         Bounds b = course.bounds();
-        double spacing = sampleSpacing(b);
+        double spacing = sampleSpacing(b, minSpacing);
         int nx = quads(b.width(), spacing), ny = quads(b.depth(), spacing);
         int cols = nx + 1, rows = ny + 1;
         double dx = b.width() / nx, dy = b.depth() / ny;

@@ -7,12 +7,34 @@ import minigolf.terrain.Terrain;
 public final class TerrainPass implements RenderPass {
     private Course course;
     private Terrain terrain;
-    private final ShaderProgram shader = ShaderProgram.load("terrain");
+    private final ShaderProgram shader;
     private TerrainMesh.ColorMode mode;
     private Mesh mesh;
     private double minHeight, maxHeight;
+    private int vertexCount;
+    private final double minSpacing;
+    /** The water reflection's coarser mesh (software quality: a small mirrored image needs few triangles), or null: {@link #mesh}. */
+    private Mesh targetMesh;
+    private final double targetSpacing;
+    private boolean targetMeshStale;
+    private int targetVertexCount;
 
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
+        this(course, terrain, mode, false, TerrainMesh.MIN_SPACING, TerrainMesh.MIN_SPACING);
+    }
+
+    /**
+     * As above; {@code vertexLit} picks the software rasterisers' shader (lighting and haze per vertex,
+     * shadows per pixel: terrain-vertexlit.*), which costs less per pixel on llvmpipe; {@code minSpacing}
+     * the mesh's finest sample spacing in metres (llvmpipe pays per triangle too); {@code targetSpacing}
+     * that of the mesh drawn into the water's reflection image (a second, coarser mesh
+     * when larger than {@code minSpacing}).
+     */
+    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing,
+                       double targetSpacing) {
+        this.minSpacing = minSpacing;
+        this.targetSpacing = Math.max(minSpacing, targetSpacing);
+        this.shader = ShaderProgram.load(vertexLit ? "terrain-vertexlit" : "terrain");
         this.course = course;
         this.terrain = terrain;
         setColorMode(mode);
@@ -25,13 +47,25 @@ public final class TerrainPass implements RenderPass {
     /** Rebuilds the mesh with the other colouring (a few milliseconds for 256x256 quads). */
     public void setColorMode(TerrainMesh.ColorMode newMode) {
         if (newMode == mode && mesh != null) return;
-        TerrainMesh built = TerrainMesh.build(course, terrain, newMode);
+        TerrainMesh built = TerrainMesh.build(course, terrain, newMode, minSpacing);
         Mesh uploaded = new Mesh(built.data());
         if (mesh != null) mesh.close();
         mesh = uploaded;
+        vertexCount = built.data().vertices().length / built.data().stride();
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
         mode = newMode;
+        rebuildTargetMesh();
+    }
+
+    private void rebuildTargetMesh() {
+        targetMeshStale = false;
+        if (targetSpacing <= minSpacing) return;
+        MeshData data = TerrainMesh.build(course, terrain, mode, targetSpacing).data();
+        Mesh uploaded = new Mesh(data);
+        if (targetMesh != null) targetMesh.close();
+        targetMesh = uploaded;
+        targetVertexCount = data.vertices().length / data.stride();
     }
 
     /**
@@ -42,14 +76,28 @@ public final class TerrainPass implements RenderPass {
     public int updateRegion(Course newCourse, Terrain newTerrain, double minX, double minY, double maxX, double maxY) {
         course = newCourse;
         terrain = newTerrain;
-        TerrainMesh.Patch patch = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight, minX, minY, maxX, maxY);
-        return applyPatch(patch);
+        TerrainMesh.Patch patch = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight, minX, minY, maxX, maxY, minSpacing);
+        int floats = applyPatch(patch);
+        if (targetMesh != null && patch != null) {
+            TerrainMesh.Patch coarse = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight,
+                    minX, minY, maxX, maxY, targetSpacing);
+            if (coarse != null) targetMesh.updateVertices(coarse.firstFloat(), coarse.vertices());
+            targetMeshStale = false;
+        }
+        return floats;
     }
 
-    /** Uploads re-sampled surface rows (see {@link TerrainMesh#surfacePatch}); returns the floats uploaded. */
+    /** The mesh's finest sample spacing (metres): patches for {@link #applyPatch} must be made with it. */
+    public double minSpacing() {
+        return minSpacing;
+    }
+
+    /** Uploads re-sampled surface rows (see {@link TerrainMesh#surfacePatch}, made with {@link #minSpacing()}); returns the floats uploaded. */
     public int applyPatch(TerrainMesh.Patch patch) {
         if (patch == null) return 0;
         mesh.updateVertices(patch.firstFloat(), patch.vertices());
+        // The water targets' coarse mesh is rebuilt before it is next drawn (updateRegion patches it at once).
+        if (targetMesh != null) targetMeshStale = true;
         return patch.vertices().length;
     }
 
@@ -60,6 +108,11 @@ public final class TerrainPass implements RenderPass {
         TerrainMesh.ColorMode m = mode;
         mode = null;
         setColorMode(m);
+    }
+
+    /** Vertices in the drawn mesh (surface and skirts). */
+    public int vertexCount() {
+        return vertexCount;
     }
 
     /** The lowest and highest surface heights sampled for the mesh. */
@@ -79,18 +132,34 @@ public final class TerrainPass implements RenderPass {
 
     @Override
     public void render(FrameContext frame) {
+        draw(frame, mesh);
+    }
+
+    /** Draws into the water's reflection image, from the coarser mesh where there is one. */
+    void renderForWaterTarget(FrameContext frame) {
+        if (targetMeshStale) rebuildTargetMesh();
+        draw(frame, targetMesh != null ? targetMesh : mesh);
+    }
+
+    /** Vertices in the water targets' mesh (the same as {@link #vertexCount()} without a coarser one). */
+    public int targetVertexCount() {
+        return targetMesh == null ? vertexCount : targetVertexCount;
+    }
+
+    private void draw(FrameContext frame, Mesh drawn) {
         shader.use();
         shader.set("uViewProjection", frame.viewProjection);
         shader.set("uClipPlane", frame.clipPlane);
         Lighting.apply(shader, frame);
         shader.set("uShininess", 24f);
         shader.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
-        mesh.draw();
+        drawn.draw();
     }
 
     @Override
     public void close() {
         if (mesh != null) mesh.close();
+        if (targetMesh != null) targetMesh.close();
         shader.close();
     }
 }

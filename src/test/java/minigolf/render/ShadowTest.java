@@ -15,10 +15,14 @@ class ShadowTest {
     static final float BX = -2.5f, BY = -1.0f;
 
     static Pixels draw(String name, boolean shadows, OrbitCamera cam) {
+        return draw(name, shadows, cam, RenderQuality.HIGH);
+    }
+
+    static Pixels draw(String name, boolean shadows, OrbitCamera cam, RenderQuality quality) {
         Course course = TestCourses.flat();
         Path png = TestCourses.screenshotDir().resolve(name);
         try (Offscreen off = new Offscreen(W, H, 0);
-             SceneRenderer r = new SceneRenderer(course, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN)) {
+             SceneRenderer r = new SceneRenderer(course, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN, quality)) {
             r.setShadows(shadows);
             r.setBalls(List.of(BallView.white(BX, BY, 0.1)));
             off.bind();
@@ -34,10 +38,20 @@ class ShadowTest {
 
     @Test
     void theBallShadowsTheGroundAwayFromTheSunAndNotTowardsIt() {
+        ballShadowAwayFromTheSun(RenderQuality.HIGH);
+    }
+
+    /** The software quality's per-vertex-lit terrain keeps the same shadows, without acne. */
+    @Test
+    void theSoftwareQualityShadowsTheSameWay() {
+        ballShadowAwayFromTheSun(RenderQuality.SOFTWARE);
+    }
+
+    private static void ballShadowAwayFromTheSun(RenderQuality quality) {
         // From above (pitch 89 degrees), close to the ball.
         OrbitCamera cam = new OrbitCamera(new Vector3f(BX, BY, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(89), 1.2f);
-        Pixels on = draw("shadow-on.png", true, cam);
-        Pixels off = draw("shadow-off.png", false, cam);
+        Pixels on = draw("shadow-on-" + quality.name() + ".png", true, cam, quality);
+        Pixels off = draw("shadow-off-" + quality.name() + ".png", false, cam, quality);
         Vector3f sun = FrameContext.Sun.afternoon().direction();
         float r = (float) ObjectsPass.visualBallRadius();
         // The ball's centre is r above the ground; its shadow's centre lies r * horizontal/vertical beyond the contact point.

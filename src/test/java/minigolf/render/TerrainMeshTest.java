@@ -24,6 +24,29 @@ class TerrainMeshTest {
         assertEquals(TestCourses.LAKE.height(x, y), m.data().get(k, POS, 2), 1e-5);
     }
 
+    /** Software quality's coarser mesh: the same surface at 10 cm, and patches at that spacing land on its rows. */
+    @Test
+    void aCoarserSpacingSamplesTheSameSurfaceAndItsPatchesMatch() {
+        TerrainMesh m = TerrainMesh.build(TestCourses.lake(), TestCourses.LAKE, TerrainMesh.ColorMode.GREEN, 0.1);
+        assertEquals(101, m.columns());
+        assertEquals(101, m.rows());
+        int k = 40 * m.columns() + 63;
+        double x = m.data().get(k, POS, 0), y = m.data().get(k, POS, 1);
+        assertEquals(-5 + 63 * 0.1, x, 1e-5);
+        assertEquals(-5 + 40 * 0.1, y, 1e-5);
+        assertEquals(TestCourses.LAKE.height(x, y), m.data().get(k, POS, 2), 1e-5);
+        // A patch around y = -1 made at the same spacing starts at a whole row and repeats the built vertices.
+        TerrainMesh.Patch p = TerrainMesh.surfacePatch(TestCourses.lake(), TestCourses.LAKE, TerrainMesh.ColorMode.GREEN,
+                m.minHeight(), m.maxHeight(), -2, -1.05, 2, -0.95, 0.1);
+        int stride = m.data().stride();
+        assertEquals(0, p.firstFloat() % (m.columns() * stride));
+        int firstVertex = p.firstFloat() / stride;
+        for (int i = 0; i < p.vertices().length; i++) {
+            assertEquals(m.data().vertices()[firstVertex * stride + i], p.vertices()[i], 1e-6f, "float " + i);
+        }
+        assertEquals(3 * m.columns() * stride, p.vertices().length, "rows 39 to 41");
+    }
+
     @Test
     void bigCoursesAreCappedAt256QuadsPerSide() {
         Bounds big = new Bounds(0, 0, 50, 30);

@@ -19,11 +19,15 @@ class WaterTest {
     }
 
     static Pixels draw(String name, boolean reflections, OrbitCamera cam, float time) {
+        return draw(name, reflections, cam, time, RenderQuality.HIGH);
+    }
+
+    static Pixels draw(String name, boolean reflections, OrbitCamera cam, float time, RenderQuality quality) {
         Course course = TestCourses.lake();
         Path png = TestCourses.screenshotDir().resolve(name);
         float y = 1.05f;
         try (Offscreen off = new Offscreen(W, H, 0);
-             SceneRenderer r = new SceneRenderer(course, TestCourses.LAKE, TerrainMesh.ColorMode.GREEN)) {
+             SceneRenderer r = new SceneRenderer(course, TestCourses.LAKE, TerrainMesh.ColorMode.GREEN, quality)) {
             r.setWaterReflections(reflections);
             r.setBalls(List.of(new BallView(0f, y, (float) TestCourses.LAKE.height(0, y), 1f, 0.05f, 0.05f)));
             off.bind();
@@ -35,9 +39,19 @@ class WaterTest {
 
     @Test
     void theRedBallIsMirroredInThePondOnlyWithReflections() {
+        redBallMirrored(RenderQuality.HIGH);
+    }
+
+    /** The software quality (coarser terrain, smaller targets, sky drawn last) still mirrors the ball. */
+    @Test
+    void theSoftwareQualityMirrorsTheBallToo() {
+        redBallMirrored(RenderQuality.SOFTWARE);
+    }
+
+    private static void redBallMirrored(RenderQuality quality) {
         OrbitCamera cam = lowOverThePond();
-        Pixels on = draw("water-reflection-on.png", true, cam, 0f);
-        Pixels off = draw("water-reflection-off.png", false, cam, 0f);
+        Pixels on = draw("water-reflection-on-" + quality.name() + ".png", true, cam, 0f, quality);
+        Pixels off = draw("water-reflection-off-" + quality.name() + ".png", false, cam, 0f, quality);
         // The mirror image of the ball's centre, (0, 1.05, -(h + r)), is where the reflection shows.
         float r = (float) ObjectsPass.visualBallRadius();
         float z = (float) TestCourses.LAKE.height(0, 1.05) + r;
