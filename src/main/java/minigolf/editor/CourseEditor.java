@@ -279,20 +279,20 @@ public final class CourseEditor {
     public boolean addObstacle(Obstacle o) {
         if (course.obstacles.size() >= maxObstacles) return false;
         endStroke();
-        perform(new ObstacleEdit(course.obstacles.size(), null, o, "place " + ObstacleTools.describe(o)));
+        perform(ListItemEdit.obstacle(course.obstacles.size(), null, o, "place " + ObstacleTools.describe(o)));
         return true;
     }
 
     public void moveObstacle(int index, double dx, double dy) {
         Obstacle o = obstacle(index);
         endStroke();
-        perform(new ObstacleEdit(index, o, ObstacleTools.moved(o, dx, dy), "move " + ObstacleTools.describe(o)));
+        perform(ListItemEdit.obstacle(index, o, ObstacleTools.moved(o, dx, dy), "move " + ObstacleTools.describe(o)));
     }
 
     public void rotateObstacle(int index, double degrees) {
         Obstacle o = obstacle(index);
         endStroke();
-        perform(new ObstacleEdit(index, o, ObstacleTools.rotated(o, degrees), "rotate " + ObstacleTools.describe(o)));
+        perform(ListItemEdit.obstacle(index, o, ObstacleTools.rotated(o, degrees), "rotate " + ObstacleTools.describe(o)));
     }
 
     /** Replaces the obstacle (e.g. its size typed in the object panel); nothing happens when it is the same. */
@@ -304,7 +304,7 @@ public final class CourseEditor {
         Obstacle o = obstacle(index);
         if (o.equals(replacement)) return;
         endStroke();
-        perform(new ObstacleEdit(index, o, replacement, label));
+        perform(ListItemEdit.obstacle(index, o, replacement, label));
     }
 
     /** A wall's thickness (>= 0, 0 a thin fence) and height above the ground (> 0). */
@@ -355,7 +355,7 @@ public final class CourseEditor {
     public void removeObstacle(int index) {
         Obstacle o = obstacle(index);
         endStroke();
-        perform(new ObstacleEdit(index, o, null, "delete " + ObstacleTools.describe(o)));
+        perform(ListItemEdit.obstacle(index, o, null, "delete " + ObstacleTools.describe(o)));
     }
 
     // ---- friction zones ----
@@ -368,7 +368,7 @@ public final class CourseEditor {
     public void removeZone(int index) {
         Zone z = zone(index);
         endStroke();
-        perform(new ZoneEdit(index, z, null, "delete zone"));
+        perform(ListItemEdit.zone(index, z, null, "delete zone"));
     }
 
     /** A zone's friction (both >= 0), its shape unchanged. */
@@ -380,7 +380,7 @@ public final class CourseEditor {
         Zone next = new Zone(z.shape(), kinetic, statics);
         if (next.equals(z)) return;
         endStroke();
-        perform(new ZoneEdit(index, z, next, "zone friction"));
+        perform(ListItemEdit.zone(index, z, next, "zone friction"));
     }
 
     private Zone zone(int index) {
