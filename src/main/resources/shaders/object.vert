@@ -12,6 +12,9 @@ out vec3 vWorld;
 out vec3 vNormal;
 out vec3 vColor;
 
+// The balls' shadows redraw these surfaces within a scissor at GL_LEQUAL (SceneRenderer): the depth must match exactly.
+invariant gl_Position;
+
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vWorld = world.xyz;

@@ -1,8 +1,61 @@
-out vec2 vNdc;
+// A procedural sky dome, computed at the corners of a screen-covering grid at the far plane (SkyPass):
+// the gradient (deep blue zenith, pale horizon), the sun's glow and halo, and drifting fair-weather
+// clouds (fractal value noise baked into a tiling texture, CloudNoise, on a cloud layer: the view
+// direction projected onto a plane above), faded out towards the horizon. Below the horizon a hazy
+// far distance, darker than the sky, so the course reads as floating above a valley. All of that
+// varies slowly over the screen, so it is computed per grid corner and interpolated: a software
+// rasteriser then pays little per pixel (sky.frag keeps the clouds' edges and the sun's disc sharp).
+layout(location = 0) in vec2 aNdc;
+
+uniform mat4 uInverseViewProjection;
+uniform vec3 uSunDirection;
+uniform float uTime;
+uniform sampler2D uClouds;
+uniform float uCloudPeriod;
+uniform float uCloudTexels;  // texels per side of uClouds
+uniform vec2 uGridStep;      // one grid cell in NDC
+uniform float uGridPixels;   // one grid cell in pixels (about)
+
+out vec3 vSky;        // gradient under the clouds
+out vec3 vCloudColor; // the sun's warm tint on the clouds here
+out vec2 vCloudUv;    // where the cloud texture is read, per pixel
+out float vCloudLod;  // at which mip level
+out float vCloudAlpha;// how much cloud shows (fades towards the horizon; none below it)
+out vec3 vGlow;       // the sun's glow and halo, over the clouds
+out vec3 vDir;        // the view direction, for the sun's disc per pixel
+
+vec3 directionAt(vec2 ndc) {
+    vec4 nearPoint = uInverseViewProjection * vec4(ndc, -1.0, 1.0);
+    vec4 farPoint = uInverseViewProjection * vec4(ndc, 1.0, 1.0);
+    return normalize(farPoint.xyz / farPoint.w - nearPoint.xyz / nearPoint.w);
+}
+
+// Clouds on a layer 1 unit up: dir.xy / dir.z, drifting with time; in texture units.
+vec2 cloudUv(vec3 dir) {
+    vec2 uv = dir.xy / max(dir.z, 0.04) * 0.9 + vec2(uTime * 0.004, uTime * 0.0025);
+    return uv * 1.4 / uCloudPeriod;
+}
 
 void main() {
-    // One triangle covering the screen: (-1,-1), (3,-1), (-1,3).
-    vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
-    vNdc = p;
-    gl_Position = vec4(p, 1.0, 1.0);
+    vec3 dir = directionAt(aNdc);
+    vec3 sun = normalize(uSunDirection);
+    float up = dir.z;
+    float s = max(dot(dir, sun), 0.0);
+
+    vec3 horizon = vec3(0.80, 0.88, 0.96);
+    vec3 zenith = vec3(0.22, 0.45, 0.82);
+    vec3 below = vec3(0.55, 0.70, 0.88);
+    vSky = up >= 0.0 ? mix(horizon, zenith, pow(max(up, 0.0), 0.55)) : mix(horizon, below, clamp(-up * 1.6, 0.0, 1.0));
+
+    // The noise is read at a mip level as coarse as the grid: finer detail could not be interpolated anyway.
+    vec2 uv = cloudUv(dir);
+    vec2 du = cloudUv(directionAt(aNdc + vec2(uGridStep.x, 0.0))) - uv;
+    vec2 dv = cloudUv(directionAt(aNdc + vec2(0.0, uGridStep.y))) - uv;
+    vCloudLod = log2(max(max(length(du), length(dv)) * uCloudTexels / uGridPixels, 1.0));
+    vCloudUv = uv;
+    vCloudColor = vec3(1.0, 0.9, 0.7) * pow(s, 8.0) * 0.25;
+    vCloudAlpha = up >= 0.0 ? smoothstep(0.02, 0.25, up) * 0.9 : 0.0;
+    vGlow = vec3(1.0, 0.95, 0.80) * (pow(s, 300.0) * 0.6 + pow(s, 12.0) * 0.15);
+    vDir = dir;
+    gl_Position = vec4(aNdc, 1.0, 1.0);
 }

@@ -1,18 +1,1 @@
-// See terrain-vertexlit.vert: lighting arrives interpolated; only the shadows are per pixel.
-#include "lighting.glsl"
-#include "shadow.glsl"
-
-in vec3 vWorld;
-in vec3 vUnlit;
-in vec3 vSunlit;
-in vec3 vShadowCoord;
-in float vHaze;
-
-out vec4 fragColor;
-
-void main() {
-    float sunlight = 1.0;
-    if (uShadowsOn != 0) sunlight = mapVisibilityAt(vShadowCoord) * ballVisibility(vWorld);
-    vec3 color = vUnlit + vSunlit * sunlight;
-    fragColor = vec4(mix(color, vec3(0.78, 0.87, 0.96), vHaze), 1.0);
-}
+#include "vertexlit-fragment.glsl"

@@ -22,6 +22,9 @@ out vec3 vSunlit;    // sun diffuse + specular, scaled by the sun's visibility p
 out vec3 vShadowCoord;
 out float vHaze;
 
+// The balls' shadows redraw these surfaces within a scissor at GL_LEQUAL (SceneRenderer): the depth must match exactly.
+invariant gl_Position;
+
 void main() {
     vec3 n = normalize(aNormal);
     vec3 v = normalize(uEye - aPosition);

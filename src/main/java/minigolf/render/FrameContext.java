@@ -23,6 +23,12 @@ public final class FrameContext {
     /** The sun's shadow map that receivers sample (null: no shadow uniforms are set), and whether to use it. */
     public ShadowMap shadowMap;
     public boolean shadowsOn;
+    /**
+     * Whether lit shaders compute the balls' shadows themselves (true), or leave them to a second,
+     * scissored draw of the surfaces round the balls (false; {@link SceneRenderer} on software
+     * rasterisers, where the per-pixel ball loop cost every pixel of the screen).
+     */
+    public boolean ballShadowsInline = true;
     /** The balls' analytic shadows (shadow.glsl): centre x, y, z and radius per ball, the first {@code ballShadowCount}. */
     public final float[] ballShadows = new float[4 * MAX_BALL_SHADOWS];
     public int ballShadowCount;
@@ -64,6 +70,7 @@ public final class FrameContext {
         time = src.time;
         shadowMap = src.shadowMap;
         shadowsOn = src.shadowsOn;
+        ballShadowsInline = true;
         System.arraycopy(src.ballShadows, 0, ballShadows, 0, ballShadows.length);
         ballShadowCount = src.ballShadowCount;
         return this;
@@ -81,6 +88,7 @@ public final class FrameContext {
         time = src.time;
         shadowMap = src.shadowMap;
         shadowsOn = src.shadowsOn;
+        ballShadowsInline = true;
         System.arraycopy(src.ballShadows, 0, ballShadows, 0, ballShadows.length);
         ballShadowCount = src.ballShadowCount;
         return this;

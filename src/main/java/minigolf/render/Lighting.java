@@ -1,18 +1,22 @@
 package minigolf.render;
 
-/** Sets the uniforms of {@code lighting.glsl} from the frame's sun and eye. */
+/** Sets the uniforms of {@code lighting.glsl} and {@code shadow.glsl} from the frame's sun, eye and shadows. */
 final class Lighting {
     private Lighting() {
     }
 
     static void apply(ShaderProgram shader, FrameContext frame) {
+        apply(shader, frame, LitShader.Variant.UNSHADOWED);
+    }
+
+    static void apply(ShaderProgram shader, FrameContext frame, LitShader.Variant variant) {
         shader.set("uEye", frame.eye);
         shader.set("uSunDirection", frame.sun.direction());
         shader.set("uSunColor", frame.sun.color());
         shader.set("uSkyAmbient", frame.sun.skyAmbient());
         shader.set("uGroundAmbient", frame.sun.groundAmbient());
-        if (frame.shadowMap != null) {
-            frame.shadowMap.apply(shader, frame.shadowsOn);
+        if (variant != LitShader.Variant.UNSHADOWED) frame.shadowMap.apply(shader);
+        if (variant == LitShader.Variant.MAP_AND_BALLS) {
             shader.set("uBallCount", frame.ballShadowCount);
             shader.setVec4Array("uBalls", frame.ballShadows, frame.ballShadowCount);
         }

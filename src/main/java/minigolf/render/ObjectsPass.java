@@ -23,7 +23,8 @@ public final class ObjectsPass implements RenderPass {
 
     private final Terrain terrain;
     private final double holeX, holeY;
-    private final ShaderProgram shader = ShaderProgram.load("object");
+    private final LitShader shader;
+    private ShaderProgram program;
     private final Mesh cupRim;
     private final Mesh cup;
     private final Mesh pole;
@@ -37,6 +38,12 @@ public final class ObjectsPass implements RenderPass {
     private final Matrix3f normalMatrix = new Matrix3f();
 
     public ObjectsPass(Course course, Terrain terrain) {
+        this(course, terrain, false);
+    }
+
+    /** As above; {@code vertexLit} picks the software rasterisers' shader (object-vertexlit: lighting per vertex). */
+    public ObjectsPass(Course course, Terrain terrain, boolean vertexLit) {
+        this.shader = new LitShader(vertexLit ? "object-vertexlit" : "object");
         this.terrain = terrain;
         holeX = course.hole().position().x();
         holeY = course.hole().position().y();
@@ -167,10 +174,9 @@ public final class ObjectsPass implements RenderPass {
     }
 
     private void begin(FrameContext frame) {
-        shader.use();
-        shader.set("uViewProjection", frame.viewProjection);
-        shader.set("uClipPlane", frame.clipPlane);
-        Lighting.apply(shader, frame);
+        program = shader.use(frame);
+        program.set("uViewProjection", frame.viewProjection);
+        program.set("uClipPlane", frame.clipPlane);
     }
 
     private void drawBalls(float radius) {
@@ -185,11 +191,11 @@ public final class ObjectsPass implements RenderPass {
     }
 
     private void draw(Mesh mesh, Matrix4f m, float specular, float shininess, float r, float g, float b) {
-        shader.set("uModel", m);
-        shader.set("uNormalMatrix", m.normal(normalMatrix));
-        shader.set("uSpecularStrength", specular);
-        shader.set("uShininess", shininess);
-        shader.set("uTint", r, g, b);
+        program.set("uModel", m);
+        program.set("uNormalMatrix", m.normal(normalMatrix));
+        program.set("uSpecularStrength", specular);
+        program.set("uShininess", shininess);
+        program.set("uTint", r, g, b);
         mesh.draw();
     }
 

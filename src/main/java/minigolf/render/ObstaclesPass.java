@@ -17,7 +17,8 @@ import java.util.Map;
  */
 public final class ObstaclesPass implements RenderPass {
     private final HeightProbe ground;
-    private final ShaderProgram shader = ShaderProgram.load("object");
+    private final LitShader shader;
+    private ShaderProgram program;
     private final Matrix4f identity = new Matrix4f();
     private final Matrix3f normalMatrix = new Matrix3f();
     private final Map<String, MaterialLibrary> materials = new HashMap<>();
@@ -29,6 +30,12 @@ public final class ObstaclesPass implements RenderPass {
     private int solidTriangles, decorationTriangles;
 
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
+        this(obstacles, ground, false);
+    }
+
+    /** As above; {@code vertexLit} picks the software rasterisers' shader (object-vertexlit: lighting per vertex). */
+    public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground, boolean vertexLit) {
+        this.shader = new LitShader(vertexLit ? "object-vertexlit" : "object");
         this.ground = ground;
         try {
             setObstacles(obstacles);
@@ -91,13 +98,13 @@ public final class ObstaclesPass implements RenderPass {
         if (solid == null && decoration == null) return;
         begin(frame);
         if (solid != null) {
-            shader.set("uSpecularStrength", 0.12f);
-            shader.set("uShininess", 16f);
+            program.set("uSpecularStrength", 0.12f);
+            program.set("uShininess", 16f);
             solid.draw();
         }
         if (decoration != null) {
-            shader.set("uSpecularStrength", 0.05f);
-            shader.set("uShininess", 8f);
+            program.set("uSpecularStrength", 0.05f);
+            program.set("uShininess", 8f);
             decoration.draw();
         }
     }
@@ -106,8 +113,8 @@ public final class ObstaclesPass implements RenderPass {
     void renderMinimap(FrameContext frame) {
         if (solid == null) return;
         begin(frame);
-        shader.set("uSpecularStrength", 0f);
-        shader.set("uShininess", 8f);
+        program.set("uSpecularStrength", 0f);
+        program.set("uShininess", 8f);
         solid.draw();
     }
 
@@ -119,13 +126,12 @@ public final class ObstaclesPass implements RenderPass {
     }
 
     private void begin(FrameContext frame) {
-        shader.use();
-        shader.set("uViewProjection", frame.viewProjection);
-        shader.set("uClipPlane", frame.clipPlane);
-        Lighting.apply(shader, frame);
-        shader.set("uModel", identity);
-        shader.set("uNormalMatrix", identity.normal(normalMatrix));
-        shader.set("uTint", 1f, 1f, 1f);
+        program = shader.use(frame);
+        program.set("uViewProjection", frame.viewProjection);
+        program.set("uClipPlane", frame.clipPlane);
+        program.set("uModel", identity);
+        program.set("uNormalMatrix", identity.normal(normalMatrix));
+        program.set("uTint", 1f, 1f, 1f);
     }
 
     private void freeMeshes() {

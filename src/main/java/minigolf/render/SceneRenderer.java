@@ -47,6 +47,8 @@ public final class SceneRenderer implements AutoCloseable {
     private float waterTargetScale;
     /** Whether the water's mirrored and refracted scenes are shadowed too (barely visible there). */
     private final boolean shadowsInWater;
+    /** Whether the balls' shadows are shaded in a second, scissored draw (software rasterisers). */
+    private final boolean ballShadowRedraw;
     /** The shadow map holds only what stands still, so it is drawn again only after a change. */
     private boolean shadowMapDirty = true;
     /** The minimap's still part, drawn again only after a change. */
@@ -67,16 +69,17 @@ public final class SceneRenderer implements AutoCloseable {
         this.waterTargetScale = quality.waterTargetScale();
         this.shadowsInWater = quality.shadowsInWater();
         this.shadowTaps = quality.shadowTaps();
+        this.ballShadowRedraw = quality.ballShadowRedraw();
         SkyPass s = null;
         TerrainPass t = null;
         ObstaclesPass ob = null;
         ObjectsPass o = null;
         try {
             s = new SkyPass();
-            t = new TerrainPass(course, surface, mode, quality.vertexLitTerrain(), quality.terrainSpacing(),
+            t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing(),
                     quality.waterTargetTerrainSpacing());
-            ob = new ObstaclesPass(course.obstacles(), surface::height);
-            o = new ObjectsPass(course, surface);
+            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit());
+            o = new ObjectsPass(course, surface, quality.vertexLit());
             water = new WaterPass(course, surface);
         } catch (RuntimeException e) {
             for (RenderPass p : new RenderPass[]{o, ob, t, s}) if (p != null) p.close();
@@ -303,6 +306,7 @@ public final class SceneRenderer implements AutoCloseable {
         int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
         timer.start();
         frame.shadowsOn = shadows;
+        frame.ballShadowsInline = !ballShadowRedraw;
         objects.ballShadows(frame);
         minimapFrame.shadowsOn = false; // a map reads better without shadows
         if (shadows && shadowMapDirty) {
@@ -318,8 +322,8 @@ public final class SceneRenderer implements AutoCloseable {
         }
         water.useTargets(targets);
         glViewport(0, 0, width, height);
-        glClearColor(0.62f, 0.78f, 0.93f, 1f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        // No colour clear: the sky fills every pixel the scene leaves at the far plane.
+        glClear(GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDisable(GL_CULL_FACE);
@@ -331,11 +335,32 @@ public final class SceneRenderer implements AutoCloseable {
         timer.mark("obstacles");
         objects.render(frame);
         timer.mark("objects");
+        if (ballShadowRedraw && shadows && frame.ballShadowCount > 0) drawBallShadows(width, height);
+        timer.mark("ballShadows");
         // The sky after the opaque passes, depth-tested at the far plane: its clouds are shaded only where it shows.
         sky.render(frame);
         timer.mark("sky");
         water.render(frame);
         timer.mark("water");
+    }
+
+    /**
+     * The balls' shadows on software rasterisers: the opaque passes again, with the per-ball shadow
+     * term, inside a scissor round where the shadows can fall (the same depths at GL_LEQUAL, as the
+     * vertex shaders' positions are invariant). The first draw left them out.
+     */
+    private void drawBallShadows(int width, int height) {
+        int[] r = BallShadowBounds.of(frame.ballShadows, frame.ballShadowCount, frame.sun.direction(), terrain.terrain()::height,
+                course.bounds(), Math.min(0, terrain.minHeight()) - 0.1, frame.viewProjection, width, height);
+        if (r == null) return;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r[0], r[1], r[2], r[3]);
+        frame.ballShadowsInline = true;
+        terrain.render(frame);
+        obstacles.render(frame);
+        objects.render(frame);
+        frame.ballShadowsInline = false;
+        glDisable(GL_SCISSOR_TEST);
     }
 
     /** The sun's view of the casters that stand still (terrain, obstacles, pole, flag) into the shadow map. */

@@ -42,6 +42,27 @@ public final class ShaderProgram implements AutoCloseable {
         return fromSource(name, readResource(name + ".vert"), readResource(name + ".frag"));
     }
 
+    /**
+     * As {@link #load(String)}, with {@code #define} lines after the version line in both stages, e.g.
+     * {@code "SHADOW_MAP"} or {@code "SHADOW_TAPS 4"}. Variants are compiled instead of branching on
+     * uniforms because software rasterisers (llvmpipe) run both sides of every branch for each pixel.
+     */
+    public static ShaderProgram load(String name, String... defines) {
+        if (defines.length == 0) return load(name);
+        StringBuilder d = new StringBuilder();
+        for (String define : defines) d.append("#define ").append(define).append('\n');
+        String label = name + String.join("", java.util.Arrays.stream(defines).map(x -> "+" + x.split(" ")[0]).toList());
+        return fromSource(label, withDefines(readResource(name + ".vert"), d.toString()),
+                withDefines(readResource(name + ".frag"), d.toString()));
+    }
+
+    /** The source with its version line first and the defines right after it. */
+    static String withDefines(String source, String defines) {
+        String versioned = withVersion(source);
+        int eol = versioned.indexOf('\n');
+        return versioned.substring(0, eol + 1) + defines + versioned.substring(eol + 1);
+    }
+
     /** Compiles and links the given sources; errors name {@code NAME.vert} / {@code NAME.frag}. */
     public static ShaderProgram fromSource(String name, String vertexSource, String fragmentSource) {
         int vs = compile(name + ".vert", GL_VERTEX_SHADER, vertexSource);

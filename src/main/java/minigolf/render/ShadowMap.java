@@ -90,6 +90,10 @@ public final class ShadowMap implements AutoCloseable {
     }
 
     /** Depth-compare taps per receiver pixel: 4 (3x3-texel footprint, default) or 1 (2x2). */
+    public int taps() {
+        return taps;
+    }
+
     public void setTaps(int taps) {
         this.taps = taps == 1 ? 1 : 4;
     }
@@ -119,15 +123,13 @@ public final class ShadowMap implements AutoCloseable {
     }
 
     /** Sets the receiver uniforms of shadow.glsl and binds the map to {@link #UNIT}. */
-    void apply(ShaderProgram shader, boolean on) {
+    void apply(ShaderProgram shader) {
         glActiveTexture(GL_TEXTURE0 + UNIT);
         glBindTexture(GL_TEXTURE_2D, depth);
         glActiveTexture(GL_TEXTURE0);
         shader.set("uShadowMap", UNIT);
-        shader.set("uShadowsOn", on ? 1 : 0);
         shader.set("uLightViewProjection", lightViewProjection);
         shader.set("uShadowTexel", 1f / size);
-        shader.set("uShadowTaps", taps);
         shader.set("uShadowNormalOffset", 1.5f * texelMetres);
         // About two millimetres in depth units ([0, 1] over the light's depth range).
         shader.set("uShadowBias", 0.002f / depthRange);

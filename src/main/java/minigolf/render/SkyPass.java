@@ -1,33 +1,149 @@
 package minigolf.render;
 
+import org.joml.Matrix4f;
+import org.joml.Vector4f;
+import org.lwjgl.system.MemoryUtil;
+
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+
 import static org.lwjgl.opengl.GL11.*;
+import static org.lwjgl.opengl.GL15.*;
+import static org.lwjgl.opengl.GL20.*;
 import static org.lwjgl.opengl.GL30.*;
 
-/** The procedural sky dome (gradient, sun, drifting clouds; see sky.frag): one full-screen triangle at the far plane, no depth writes. Drawn after the opaque passes. */
+/**
+ * The procedural sky dome (gradient, sun, drifting clouds; see sky.vert): a grid over the screen at
+ * the far plane, no depth writes, drawn after the opaque passes. The sky is computed at the grid's
+ * corners and interpolated, and only the cells that can show a cloud (some corner above the horizon)
+ * read the cloud texture per pixel: from the usual view down onto a course that is a thin band, so a
+ * software rasteriser shades most of the sky for little more than its gradient.
+ */
 public final class SkyPass implements RenderPass {
-    private final ShaderProgram shader = ShaderProgram.load("sky");
-    private final int emptyVao = glGenVertexArrays();
+    /** The cloud tile's texels per side (4 texels per cell of the finest octave). */
+    static final int CLOUD_TEXTURE_SIZE = 512;
+    /** Grid cells across and up the screen: about 80 pixels each at 1280x720. */
+    static final int GRID_X = 16, GRID_Y = 10;
+    private final ShaderProgram clear = ShaderProgram.load("sky");
+    private final ShaderProgram cloudy = ShaderProgram.load("sky", "CLOUDS");
+    private final Texture clouds = Texture.fromPixels(CLOUD_TEXTURE_SIZE, CLOUD_TEXTURE_SIZE,
+            CloudNoise.rgba(CLOUD_TEXTURE_SIZE), true);
+    private final int vao = glGenVertexArrays();
+    private final int vbo = glGenBuffers();
+    private final int ebo = glGenBuffers();
+    private final int[] order = new int[GRID_X * GRID_Y * 6];
+    private final IntBuffer indices = MemoryUtil.memAllocInt(order.length);
+    private final float[] cornerUp = new float[(GRID_X + 1) * (GRID_Y + 1)];
+    private final Vector4f near = new Vector4f(), far = new Vector4f();
+
+    public SkyPass() {
+        glBindVertexArray(vao);
+        FloatBuffer corners = MemoryUtil.memAllocFloat((GRID_X + 1) * (GRID_Y + 1) * 2);
+        try {
+            for (int j = 0; j <= GRID_Y; j++) {
+                for (int i = 0; i <= GRID_X; i++) corners.put(ndcX(i)).put(ndcY(j));
+            }
+            corners.flip();
+            glBindBuffer(GL_ARRAY_BUFFER, vbo);
+            glBufferData(GL_ARRAY_BUFFER, corners, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(corners);
+        }
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, (long) order.length * Integer.BYTES, GL_DYNAMIC_DRAW);
+        glVertexAttribPointer(0, 2, GL_FLOAT, false, 0, 0L);
+        glEnableVertexAttribArray(0);
+        glBindVertexArray(0);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+
+    private static float ndcX(int i) {
+        return 2f * i / GRID_X - 1f;
+    }
+
+    private static float ndcY(int j) {
+        return 2f * j / GRID_Y - 1f;
+    }
+
+    /**
+     * Sorts the grid's triangles into {@link #order}: cells with some corner above the horizon first
+     * (they may show clouds), the others after; returns how many indices the first part has. The
+     * horizon is a straight line on the screen, so a cell whose four corners are below it lies wholly
+     * below it.
+     */
+    static int sortCells(Matrix4f inverseViewProjection, float[] cornerUp, int[] order, Vector4f near, Vector4f far) {
+        for (int j = 0; j <= GRID_Y; j++) {
+            for (int i = 0; i <= GRID_X; i++) {
+                inverseViewProjection.transform(near.set(ndcX(i), ndcY(j), -1f, 1f));
+                inverseViewProjection.transform(far.set(ndcX(i), ndcY(j), 1f, 1f));
+                float dx = far.x / far.w - near.x / near.w, dy = far.y / far.w - near.y / near.w, dz = far.z / far.w - near.z / near.w;
+                cornerUp[j * (GRID_X + 1) + i] = dz / (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
+            }
+        }
+        int front = 0, back = order.length;
+        for (int j = 0; j < GRID_Y; j++) {
+            for (int i = 0; i < GRID_X; i++) {
+                int a = j * (GRID_X + 1) + i, b = a + 1, c = a + GRID_X + 1, d = c + 1;
+                boolean sky = cornerUp[a] > 0 || cornerUp[b] > 0 || cornerUp[c] > 0 || cornerUp[d] > 0;
+                int k = sky ? front : back - 6;
+                order[k] = a;
+                order[k + 1] = b;
+                order[k + 2] = d;
+                order[k + 3] = a;
+                order[k + 4] = d;
+                order[k + 5] = c;
+                if (sky) front += 6;
+                else back -= 6;
+            }
+        }
+        return front;
+    }
 
     @Override
     public void render(FrameContext frame) {
+        int cloudyIndices = sortCells(frame.inverseViewProjection, cornerUp, order, near, far);
+        glBindVertexArray(vao);
+        indices.clear();
+        indices.put(order).flip();
+        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, indices);
         // Drawn after the opaque passes: at depth 1 (the far plane) with GL_LEQUAL it fills only the
-        // pixels nothing covered, so the cloud noise is not computed under the course (early depth test).
+        // pixels nothing covered (early depth test).
         glDepthMask(false);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
-        shader.use();
-        shader.set("uInverseViewProjection", frame.inverseViewProjection);
-        shader.set("uSunDirection", frame.sun.direction());
-        shader.set("uTime", frame.time);
-        glBindVertexArray(emptyVao);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        clouds.bind(0);
+        if (cloudyIndices > 0) {
+            use(cloudy, frame);
+            glDrawElements(GL_TRIANGLES, cloudyIndices, GL_UNSIGNED_INT, 0L);
+        }
+        if (cloudyIndices < order.length) {
+            use(clear, frame);
+            glDrawElements(GL_TRIANGLES, order.length - cloudyIndices, GL_UNSIGNED_INT, (long) cloudyIndices * Integer.BYTES);
+        }
         glBindVertexArray(0);
         glDepthMask(true);
     }
 
+    private void use(ShaderProgram shader, FrameContext frame) {
+        shader.use();
+        shader.set("uInverseViewProjection", frame.inverseViewProjection);
+        shader.set("uSunDirection", frame.sun.direction());
+        shader.set("uTime", frame.time);
+        shader.set("uClouds", 0);
+        shader.set("uCloudPeriod", (float) CloudNoise.PERIOD);
+        shader.set("uCloudTexels", (float) CLOUD_TEXTURE_SIZE);
+        glUniform2f(shader.location("uGridStep"), 2f / GRID_X, 2f / GRID_Y);
+        shader.set("uGridPixels", (float) frame.viewportWidth / GRID_X);
+    }
+
     @Override
     public void close() {
-        shader.close();
-        glDeleteVertexArrays(emptyVao);
+        clear.close();
+        cloudy.close();
+        clouds.close();
+        MemoryUtil.memFree(indices);
+        glDeleteVertexArrays(vao);
+        glDeleteBuffers(vbo);
+        glDeleteBuffers(ebo);
     }
 }

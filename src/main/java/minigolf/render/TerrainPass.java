@@ -7,7 +7,7 @@ import minigolf.terrain.Terrain;
 public final class TerrainPass implements RenderPass {
     private Course course;
     private Terrain terrain;
-    private final ShaderProgram shader;
+    private final LitShader shader;
     private TerrainMesh.ColorMode mode;
     private Mesh mesh;
     private double minHeight, maxHeight;
@@ -34,7 +34,7 @@ public final class TerrainPass implements RenderPass {
                        double targetSpacing) {
         this.minSpacing = minSpacing;
         this.targetSpacing = Math.max(minSpacing, targetSpacing);
-        this.shader = ShaderProgram.load(vertexLit ? "terrain-vertexlit" : "terrain");
+        this.shader = new LitShader(vertexLit ? "terrain-vertexlit" : "terrain");
         this.course = course;
         this.terrain = terrain;
         setColorMode(mode);
@@ -110,6 +110,11 @@ public final class TerrainPass implements RenderPass {
         setColorMode(m);
     }
 
+    /** The terrain the mesh was last built or patched from. */
+    public Terrain terrain() {
+        return terrain;
+    }
+
     /** Vertices in the drawn mesh (surface and skirts). */
     public int vertexCount() {
         return vertexCount;
@@ -147,12 +152,11 @@ public final class TerrainPass implements RenderPass {
     }
 
     private void draw(FrameContext frame, Mesh drawn) {
-        shader.use();
-        shader.set("uViewProjection", frame.viewProjection);
-        shader.set("uClipPlane", frame.clipPlane);
-        Lighting.apply(shader, frame);
-        shader.set("uShininess", 24f);
-        shader.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
+        ShaderProgram program = shader.use(frame);
+        program.set("uViewProjection", frame.viewProjection);
+        program.set("uClipPlane", frame.clipPlane);
+        program.set("uShininess", 24f);
+        program.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
         drawn.draw();
     }
 

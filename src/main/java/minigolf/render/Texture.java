@@ -46,24 +46,45 @@ public final class Texture implements AutoCloseable {
                 throw new RenderException("Texture '/textures/" + name + "' could not be decoded: " + stbi_failure_reason());
             }
             try {
-                int id = glGenTextures();
-                glBindTexture(GL_TEXTURE_2D, id);
-                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w.get(0), h.get(0), 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-                glGenerateMipmap(GL_TEXTURE_2D);
-                int wrap = repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-                glBindTexture(GL_TEXTURE_2D, 0);
-                return new Texture(id, w.get(0), h.get(0));
+                return upload(w.get(0), h.get(0), pixels, repeat);
             } finally {
                 stbi_image_free(pixels);
             }
         } finally {
             memFree(encoded);
         }
+    }
+
+    /**
+     * A texture from RGBA8 pixels made in code (rows bottom to top, {@code width * height * 4} bytes),
+     * mipmapped; {@code repeat} tiles it, else its edges are clamped.
+     */
+    public static Texture fromPixels(int width, int height, byte[] rgba, boolean repeat) {
+        if (rgba.length != width * height * 4) {
+            throw new IllegalArgumentException("expected " + width * height * 4 + " bytes, got " + rgba.length);
+        }
+        ByteBuffer pixels = memAlloc(rgba.length);
+        try {
+            pixels.put(rgba).flip();
+            return upload(width, height, pixels, repeat);
+        } finally {
+            memFree(pixels);
+        }
+    }
+
+    private static Texture upload(int width, int height, ByteBuffer pixels, boolean repeat) {
+        int id = glGenTextures();
+        glBindTexture(GL_TEXTURE_2D, id);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+        glGenerateMipmap(GL_TEXTURE_2D);
+        int wrap = repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        return new Texture(id, width, height);
     }
 
     public int width() {

@@ -59,6 +59,33 @@ class ShaderProgramTest {
     }
 
     @Test
+    void everyShadowVariantCompiles() {
+        String[][] variants = {{}, {"SHADOW_MAP", "SHADOW_TAPS 1"}, {"SHADOW_MAP", "SHADOW_TAPS 4"},
+                {"SHADOW_MAP", "SHADOW_TAPS 1", "BALL_SHADOWS"}, {"SHADOW_MAP", "SHADOW_TAPS 4", "BALL_SHADOWS"}};
+        for (String name : new String[]{"terrain", "terrain-vertexlit", "object", "object-vertexlit"}) {
+            for (String[] defines : variants) {
+                try (ShaderProgram p = ShaderProgram.load(name, defines)) {
+                    assertNotEquals(-1, p.location("uViewProjection"), p.name());
+                    // The shadow map's uniforms exist exactly in the shadowed variants; the balls' only with BALL_SHADOWS.
+                    assertEquals(defines.length > 0, p.location("uShadowMap") != -1, p.name());
+                    assertEquals(defines.length == 3, p.location("uBalls") != -1, p.name());
+                }
+            }
+        }
+        try (ShaderProgram clear = ShaderProgram.load("sky"); ShaderProgram cloudy = ShaderProgram.load("sky", "CLOUDS")) {
+            assertEquals(-1, clear.location("uClouds"));
+            assertNotEquals(-1, cloudy.location("uClouds"));
+            assertEquals("sky+CLOUDS", cloudy.name());
+        }
+    }
+
+    @Test
+    void definesGoRightAfterTheVersionLine() {
+        assertEquals("#version 330 core\n#define A\nvoid main(){}", ShaderProgram.withDefines("void main(){}", "#define A\n"));
+        assertEquals("#version 330 core\n#define B 4\nx", ShaderProgram.withDefines("#version 330 core\nx", "#define B 4\n"));
+    }
+
+    @Test
     void missingSourceIsAClearError() {
         RenderException e = assertThrows(RenderException.class, () -> ShaderProgram.load("no-such-shader"));
         assertTrue(e.getMessage().contains("/shaders/no-such-shader.vert"), e.getMessage());

@@ -1,0 +1,1 @@
+#include "vertexlit-fragment.glsl"

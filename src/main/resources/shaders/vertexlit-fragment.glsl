@@ -1,0 +1,18 @@
+// The fragment stage of terrain-vertexlit and object-vertexlit: lighting arrives interpolated from the
+// vertices; only the shadows (shadow.glsl) are computed per pixel.
+#include "lighting.glsl"
+#include "shadow.glsl"
+
+in vec3 vWorld;
+in vec3 vUnlit;
+in vec3 vSunlit;
+in vec3 vShadowCoord;
+in float vHaze;
+
+out vec4 fragColor;
+
+void main() {
+    float sunlight = mapVisibilityAt(vShadowCoord) * ballVisibility(vWorld);
+    vec3 color = vUnlit + vSunlit * sunlight;
+    fragColor = vec4(mix(color, vec3(0.78, 0.87, 0.96), vHaze), 1.0);
+}
