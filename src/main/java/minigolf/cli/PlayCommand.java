@@ -37,11 +37,16 @@ final class PlayCommand implements Callable<Integer> {
     @Option(names = "--time-scale", paramLabel = "K", description = "Animation speed (1 = real time; default 1).")
     double timeScale = 1;
 
+    @Option(names = "--timing", description = {"With --frames: prints the real game loop's frame time as JSON"
+            + " (window, scene, minimap, HUD; the first quarter of the frames is warm-up) instead of the scorecard."})
+    boolean timing;
+
     @Override
     public Integer call() {
         World world = course == null ? GameLauncher.loadBundled(GameLauncher.DEFAULT_COURSE) : CourseArgument.load(course);
         if (frames < 0) throw new UserError("--frames: must be >= 0, got " + frames);
         if (screenshot != null && frames == 0) throw new UserError("--screenshot needs --frames N (N >= 1)");
+        if (timing && frames < 8) throw new UserError("--timing needs --frames N (N >= 8)");
         if (!(timeScale > 0 && timeScale <= 1000)) throw new UserError("--time-scale: must be in (0, 1000], got " + timeScale);
         List<Player> seats = null;
         if (players != null) {
@@ -58,8 +63,12 @@ final class PlayCommand implements Callable<Integer> {
         if (!script.isEmpty() && seats == null) throw new UserError("--shots needs --players");
         GameApp.Options options = new GameApp.Options(course, screenshot, frames, seats, script, timeScale,
                 SettingsStore.forUser(), true, false);
-        Game game = new GameApp(world, options).run();
-        if (frames > 0 && game != null) System.out.print(game.scorecard().toText());
+        GameApp app = new GameApp(world, options);
+        FrameClock clock = timing ? new FrameClock(frames / 4) : null;
+        if (clock != null) app.onLoopPass((pass, window) -> clock.pass(pass, window));
+        Game game = app.run();
+        if (clock != null) System.out.println(clock.json(world.course().name()));
+        else if (frames > 0 && game != null) System.out.print(game.scorecard().toText());
         return 0;
     }
 

@@ -18,6 +18,8 @@ public final class ObjectsPass implements RenderPass {
     public static final double BALL_VISUAL_SCALE = 3.0;
     public static final double FLAG_HEIGHT = 1.0;
     public static final double POLE_RADIUS = 0.012;
+    /** How deep the flag model's foot (its origin) stands in the cup: models/flag.obj's pole is 1.05 m long. */
+    static final double FLAG_FOOT_DEPTH = 0.05;
     /** The aiming arrow's length at no power and its extra length at full power, in metres. */
     public static final double ARROW_MIN_LENGTH = 0.3, ARROW_POWER_LENGTH = 1.7;
 
@@ -27,8 +29,8 @@ public final class ObjectsPass implements RenderPass {
     private ShaderProgram program;
     private final Mesh cupRim;
     private final Mesh cup;
-    private final Mesh pole;
-    private final Mesh cloth;
+    /** The flagstick (models/flag.obj: pole, gold ball, waving cloth), placed at the hole. */
+    private final Mesh flag;
     private final Mesh ball;
     private final List<BallView> defaultBalls;
     private List<BallView> balls;
@@ -51,18 +53,20 @@ public final class ObjectsPass implements RenderPass {
         double ground = terrain.height(hx, hy);
         cupRim = new Mesh(Shapes.drapedDisc(hx, hy, r * 1.15, 48, 3, terrain::height, 0.003, 0.92f, 0.92f, 0.88f));
         cup = new Mesh(Shapes.drapedDisc(hx, hy, r, 48, 3, terrain::height, 0.005, 0.03f, 0.04f, 0.03f));
-        double top = ground + FLAG_HEIGHT;
-        pole = new Mesh(Shapes.cylinder(hx, hy, ground - 0.05, top, POLE_RADIUS, 12, 0.95f, 0.95f, 0.93f));
         // The cloth flies sideways to the line from the start to the hole, so the opening view sees it broadside.
-        double dx = hx - course.start().x(), dy = hy - course.start().y(), len = Math.hypot(dx, dy);
-        double sx = len > 1e-9 ? dy / len : 1, sy = len > 1e-9 ? -dx / len : 0;
-        double w = 0.42, hgt = 0.26;
-        cloth = new Mesh(Shapes.triangle(new double[]{hx, hy, top}, new double[]{hx, hy, top - hgt},
-                new double[]{hx + sx * w, hy + sy * w, top - hgt * 0.5}, 0.86f, 0.08f, 0.06f));
+        flag = new Mesh(ModelResource.get("flag").placed(hx, hy, ground - FLAG_FOOT_DEPTH,
+                clothHeading(course.start().x(), course.start().y(), hx, hy), 1));
         ball = new Mesh(Shapes.icosphere(3, 1f, 1f, 1f));
         double bx = course.start().x(), by = course.start().y();
         defaultBalls = List.of(BallView.white(bx, by, terrain.height(bx, by)));
         balls = defaultBalls;
+    }
+
+    /** The cloth's heading in degrees (the model's +x turned about z): sideways to the line from the start to the hole. */
+    static double clothHeading(double startX, double startY, double holeX, double holeY) {
+        double dx = holeX - startX, dy = holeY - startY;
+        if (Math.hypot(dx, dy) < 1e-9) return 0;
+        return Math.toDegrees(Math.atan2(-dx, dy));
     }
 
     /** Puts a single white ball at rest on the surface at (x, y). */
@@ -130,8 +134,7 @@ public final class ObjectsPass implements RenderPass {
         begin(frame);
         draw(cupRim, model.identity(), 0.15f, 16f);
         draw(cup, model.identity(), 0.0f, 8f);
-        draw(pole, model.identity(), 0.4f, 48f);
-        draw(cloth, model.identity(), 0.1f, 8f);
+        draw(flag, model.identity(), 0.3f, 32f);
         if (arrow != null) draw(arrow, model.identity(), 0.2f, 16f);
         drawBalls((float) visualBallRadius());
     }
@@ -154,8 +157,7 @@ public final class ObjectsPass implements RenderPass {
     /** Draws what casts sun shadows and stands still (pole, flag) with the depth-only shader. */
     void drawShadowCasters(ShaderProgram depthShader) {
         depthShader.set("uModel", model.identity());
-        pole.draw();
-        cloth.draw();
+        flag.draw();
     }
 
     /** Puts the balls (centre, radius) into the frame as analytic shadow casters; returns how many fit. */
@@ -203,8 +205,7 @@ public final class ObjectsPass implements RenderPass {
     public void close() {
         cupRim.close();
         cup.close();
-        pole.close();
-        cloth.close();
+        flag.close();
         ball.close();
         if (arrow != null) arrow.close();
         shader.close();

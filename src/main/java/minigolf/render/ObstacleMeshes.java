@@ -3,13 +3,8 @@ package minigolf.render;
 import minigolf.collision.ObstacleGeometry;
 import minigolf.course.HeightProbe;
 import minigolf.course.Obstacle;
-import minigolf.mesh.ObjException;
-import minigolf.mesh.ObjParser;
 import minigolf.mesh.TriangleMesh;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.io.UncheckedIOException;
 import java.util.List;
 import java.util.function.Function;
 
@@ -43,7 +38,7 @@ public final class ObstacleMeshes {
     public static Built build(List<Obstacle> obstacles, HeightProbe ground,
                               Function<Obstacle.Model, MaterialLibrary> modelMaterials) {
         Writer solid = new Writer(), crowns = new Writer();
-        Crown crown = Crown.get();
+        ModelResource crown = ModelResource.get("tree-crown");
         for (Obstacle o : obstacles) {
             if (o instanceof Obstacle.Tree tree) {
                 double[] c = ObstacleGeometry.treeCylinder(tree, ground);
@@ -52,7 +47,7 @@ public final class ObstacleMeshes {
                 double size = Math.max(CROWN_PER_HEIGHT * tree.height(), CROWN_PER_RADIUS * c[2]);
                 // Each tree turns its crown by an angle from its position, so a wood does not repeat itself.
                 double turn = Math.floorMod((long) Math.floor(c[0] * 1000 + c[1] * 7919), 360);
-                crowns.model(crown.mesh, crown.materials, c[0], c[1], c[4] + 0.85 * size, turn, size);
+                crowns.model(crown.mesh(), crown.materials(), c[0], c[1], c[4] + 0.85 * size, turn, size);
             } else if (o instanceof Obstacle.Model m) {
                 solid.model(m.mesh(), modelMaterials.apply(m), m.position().x(), m.position().y(), m.position().z(),
                         m.rotationDeg(), m.scale());
@@ -64,23 +59,12 @@ public final class ObstacleMeshes {
         return new Built(solid.build(), crowns.build());
     }
 
-    /** The decorative tree crown, loaded once from the classpath. */
-    private record Crown(TriangleMesh mesh, MaterialLibrary materials) {
-        private static Crown instance;
-
-        static synchronized Crown get() {
-            if (instance == null) {
-                try (InputStream in = ObstacleMeshes.class.getResourceAsStream("/models/tree-crown.obj")) {
-                    if (in == null) throw new RenderException("missing resource /models/tree-crown.obj", null);
-                    instance = new Crown(ObjParser.parse(in), MaterialLibrary.resource("/models/tree-crown.mtl"));
-                } catch (IOException e) {
-                    throw new UncheckedIOException(e);
-                } catch (ObjException e) {
-                    throw new RenderException("/models/tree-crown.obj: " + e.getMessage(), e);
-                }
-            }
-            return instance;
-        }
+    /** A model placed as {@link Writer#model} places it, as its own mesh (the flag). */
+    static MeshData placedModel(TriangleMesh mesh, MaterialLibrary materials, double x, double y, double z,
+                                double rotationDeg, double scale) {
+        Writer w = new Writer();
+        w.model(mesh, materials, x, y, z, rotationDeg, scale);
+        return w.build();
     }
 
     /** Appends triangles to one growing PNC vertex array (no indices shared: 0, 1, 2, ...). */

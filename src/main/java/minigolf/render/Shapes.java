@@ -133,20 +133,6 @@ public final class Shapes {
         return new MeshData(MeshData.PNC, v, idx);
     }
 
-    /** One flat triangle (drawn double-sided: back faces are lit with the flipped normal in the shader). */
-    public static MeshData triangle(double[] a, double[] b, double[] c, float r, float g, float bl) {
-        double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-        double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-        double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-        double l = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        float[] v = new float[27];
-        int p = 0;
-        for (double[] pt : new double[][]{a, b, c}) {
-            p = putPnc(v, p, pt[0], pt[1], pt[2], nx / l, ny / l, nz / l, r, g, bl);
-        }
-        return new MeshData(MeshData.PNC, v, new int[]{0, 1, 2});
-    }
-
     /**
      * A flat arrow lying on a surface: from {@code start} metres to {@code length} metres along the
      * direction (dirX, dirY) from (x, y), a shaft {@code width} wide and a head twice as wide. Every
