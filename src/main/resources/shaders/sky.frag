@@ -1,6 +1,7 @@
 // See sky.vert: the sky's colours arrive interpolated from the grid; per pixel only the clouds
-// (CLOUDS: one texture read, the cover's threshold keeps their edges sharp) and the sun's disc.
-// SkyPass draws the cells that cannot show a cloud (below the horizon) without CLOUDS.
+// (CLOUDS: one texture read, the cover's threshold keeps their edges sharp) and the sun's disc
+// (SUN_DISC). SkyPass draws the cells that cannot show a cloud (below the horizon) without CLOUDS
+// and those far from the sun without SUN_DISC.
 in vec3 vSky;
 in vec3 vCloudColor;
 in vec2 vCloudUv;
@@ -23,7 +24,9 @@ void main() {
     color = mix(color, cloudColor, cloud);
 #endif
     color += vGlow;
+#ifdef SUN_DISC
     float s = dot(normalize(vDir), normalize(uSunDirection));
     color += vec3(2.0, 1.9, 1.6) * smoothstep(0.9994, 0.9997, s);
+#endif
     fragColor = vec4(color, 1.0);
 }

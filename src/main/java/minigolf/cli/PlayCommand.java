@@ -10,13 +10,18 @@ import minigolf.game.Player;
 import minigolf.game.SettingsStore;
 import minigolf.physics.World;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 @Command(name = "play", description = {"Opens the game on a course (default: the lake).",
         "With --frames N it runs the real game N frames (with --players, straight into a game) and exits;"
                 + " --screenshot saves what the window shows at the last frame."})
 final class PlayCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
     @Parameters(index = "0", arity = "0..1", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
@@ -67,8 +72,10 @@ final class PlayCommand implements Callable<Integer> {
         FrameClock clock = timing ? new FrameClock(frames / 4) : null;
         if (clock != null) app.onLoopPass((pass, window) -> clock.pass(pass, window));
         Game game = app.run();
-        if (clock != null) System.out.println(clock.json(world.course().name()));
-        else if (frames > 0 && game != null) System.out.print(game.scorecard().toText());
+        java.io.PrintWriter out = spec.commandLine().getOut();
+        if (clock != null) out.println(clock.json(world.course().name()));
+        else if (frames > 0 && game != null) out.print(game.scorecard().toText());
+        out.flush();
         return 0;
     }
 

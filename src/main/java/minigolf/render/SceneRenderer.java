@@ -390,9 +390,14 @@ public final class SceneRenderer implements AutoCloseable {
         glDisable(GL_CULL_FACE);
         glEnable(GL_CLIP_DISTANCE0);
 
+        // Only where the water shows (plus the ripples' reach) is ever read back: draw there only.
+        int[] wet = water.screenRect(frame.viewProjection, w, h, 2.5f * WaterPass.DISTORTION);
+        if (wet == null) wet = new int[]{0, 0, 1, 1};
         reflection.bind();
         glClearColor(0.62f, 0.78f, 0.93f, 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(wet[0], wet[1], wet[2], wet[3]);
         mirrorFrame.mirrorOf(frame, w, h);
         mirrorFrame.shadowsOn = shadows && shadowsInWater;
         mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
@@ -403,8 +408,10 @@ public final class SceneRenderer implements AutoCloseable {
         timer.mark("reflectionTarget");
 
         refraction.bind();
+        glDisable(GL_SCISSOR_TEST);
         glClearColor(0.30f, 0.27f, 0.18f, 1f); // lake-bed mud where nothing was drawn
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_SCISSOR_TEST);
         refractionFrame.copyOf(frame, w, h);
         refractionFrame.shadowsOn = shadows && shadowsInWater;
         refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
@@ -413,6 +420,7 @@ public final class SceneRenderer implements AutoCloseable {
         objects.render(refractionFrame);
         timer.mark("refractionTarget");
 
+        glDisable(GL_SCISSOR_TEST);
         glDisable(GL_CLIP_DISTANCE0);
         glEnable(GL_MULTISAMPLE);
     }

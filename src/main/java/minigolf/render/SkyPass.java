@@ -16,16 +16,19 @@ import static org.lwjgl.opengl.GL30.*;
  * The procedural sky dome (gradient, sun, drifting clouds; see sky.vert): a grid over the screen at
  * the far plane, no depth writes, drawn after the opaque passes. The sky is computed at the grid's
  * corners and interpolated, and only the cells that can show a cloud (some corner above the horizon)
- * read the cloud texture per pixel: from the usual view down onto a course that is a thin band, so a
- * software rasteriser shades most of the sky for little more than its gradient.
+ * read the cloud texture per pixel, only those near the sun draw its disc: from the usual view down
+ * onto a course neither shows, so a software rasteriser shades most of the sky for its gradient alone.
  */
 public final class SkyPass implements RenderPass {
     /** The cloud tile's texels per side (4 texels per cell of the finest octave). */
     static final int CLOUD_TEXTURE_SIZE = 512;
     /** Grid cells across and up the screen: about 80 pixels each at 1280x720. */
     static final int GRID_X = 16, GRID_Y = 10;
-    private final ShaderProgram clear = ShaderProgram.load("sky");
-    private final ShaderProgram cloudy = ShaderProgram.load("sky", "CLOUDS");
+    /** Cells whose corners all point further than this from the sun cannot hold its disc (cells span about 3.5 degrees). */
+    static final double SUN_CELL_COS = Math.cos(Math.toRadians(12));
+    /** The programs per cell group: bit 0 clouds, bit 1 the sun's disc. */
+    private final ShaderProgram[] programs = {ShaderProgram.load("sky"), ShaderProgram.load("sky", "CLOUDS"),
+            ShaderProgram.load("sky", "SUN_DISC"), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC")};
     private final Texture clouds = Texture.fromPixels(CLOUD_TEXTURE_SIZE, CLOUD_TEXTURE_SIZE,
             CloudNoise.rgba(CLOUD_TEXTURE_SIZE), true);
     private final int vao = glGenVertexArrays();
@@ -34,6 +37,7 @@ public final class SkyPass implements RenderPass {
     private final int[] order = new int[GRID_X * GRID_Y * 6];
     private final IntBuffer indices = MemoryUtil.memAllocInt(order.length);
     private final float[] cornerUp = new float[(GRID_X + 1) * (GRID_Y + 1)];
+    private final float[] cornerSun = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final Vector4f near = new Vector4f(), far = new Vector4f();
 
     public SkyPass() {
@@ -66,42 +70,55 @@ public final class SkyPass implements RenderPass {
     }
 
     /**
-     * Sorts the grid's triangles into {@link #order}: cells with some corner above the horizon first
-     * (they may show clouds), the others after; returns how many indices the first part has. The
+     * Sorts the grid's triangles into {@link #order} by cell group and returns each group's number of
+     * indices, groups in order: bit 0 set when some corner is above the horizon (clouds may show; the
      * horizon is a straight line on the screen, so a cell whose four corners are below it lies wholly
-     * below it.
+     * below it), bit 1 when some corner points within 12 degrees of the sun (its disc may show).
      */
-    static int sortCells(Matrix4f inverseViewProjection, float[] cornerUp, int[] order, Vector4f near, Vector4f far) {
+    static int[] sortCells(Matrix4f inverseViewProjection, org.joml.Vector3f toSun, float[] cornerUp, float[] cornerSun,
+                           int[] order, Vector4f near, Vector4f far) {
         for (int j = 0; j <= GRID_Y; j++) {
             for (int i = 0; i <= GRID_X; i++) {
                 inverseViewProjection.transform(near.set(ndcX(i), ndcY(j), -1f, 1f));
                 inverseViewProjection.transform(far.set(ndcX(i), ndcY(j), 1f, 1f));
                 float dx = far.x / far.w - near.x / near.w, dy = far.y / far.w - near.y / near.w, dz = far.z / far.w - near.z / near.w;
-                cornerUp[j * (GRID_X + 1) + i] = dz / (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
+                float len = (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
+                cornerUp[j * (GRID_X + 1) + i] = dz / len;
+                cornerSun[j * (GRID_X + 1) + i] = (dx * toSun.x + dy * toSun.y + dz * toSun.z) / (len * toSun.length());
             }
         }
-        int front = 0, back = order.length;
+        int[] group = new int[GRID_X * GRID_Y];
+        int[] counts = new int[4];
         for (int j = 0; j < GRID_Y; j++) {
             for (int i = 0; i < GRID_X; i++) {
                 int a = j * (GRID_X + 1) + i, b = a + 1, c = a + GRID_X + 1, d = c + 1;
                 boolean sky = cornerUp[a] > 0 || cornerUp[b] > 0 || cornerUp[c] > 0 || cornerUp[d] > 0;
-                int k = sky ? front : back - 6;
+                boolean sun = Math.max(Math.max(cornerSun[a], cornerSun[b]), Math.max(cornerSun[c], cornerSun[d])) > SUN_CELL_COS;
+                int g = (sky ? 1 : 0) | (sun ? 2 : 0);
+                group[j * GRID_X + i] = g;
+                counts[g] += 6;
+            }
+        }
+        int[] next = {0, counts[0], counts[0] + counts[1], counts[0] + counts[1] + counts[2]};
+        for (int j = 0; j < GRID_Y; j++) {
+            for (int i = 0; i < GRID_X; i++) {
+                int a = j * (GRID_X + 1) + i, b = a + 1, c = a + GRID_X + 1, d = c + 1;
+                int k = next[group[j * GRID_X + i]];
                 order[k] = a;
                 order[k + 1] = b;
                 order[k + 2] = d;
                 order[k + 3] = a;
                 order[k + 4] = d;
                 order[k + 5] = c;
-                if (sky) front += 6;
-                else back -= 6;
+                next[group[j * GRID_X + i]] += 6;
             }
         }
-        return front;
+        return counts;
     }
 
     @Override
     public void render(FrameContext frame) {
-        int cloudyIndices = sortCells(frame.inverseViewProjection, cornerUp, order, near, far);
+        int[] counts = sortCells(frame.inverseViewProjection, frame.sun.direction(), cornerUp, cornerSun, order, near, far);
         glBindVertexArray(vao);
         indices.clear();
         indices.put(order).flip();
@@ -112,13 +129,13 @@ public final class SkyPass implements RenderPass {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         clouds.bind(0);
-        if (cloudyIndices > 0) {
-            use(cloudy, frame);
-            glDrawElements(GL_TRIANGLES, cloudyIndices, GL_UNSIGNED_INT, 0L);
-        }
-        if (cloudyIndices < order.length) {
-            use(clear, frame);
-            glDrawElements(GL_TRIANGLES, order.length - cloudyIndices, GL_UNSIGNED_INT, (long) cloudyIndices * Integer.BYTES);
+        long first = 0;
+        for (int g = 0; g < programs.length; g++) {
+            if (counts[g] > 0) {
+                use(programs[g], frame);
+                glDrawElements(GL_TRIANGLES, counts[g], GL_UNSIGNED_INT, first * Integer.BYTES);
+            }
+            first += counts[g];
         }
         glBindVertexArray(0);
         glDepthMask(true);
@@ -138,8 +155,7 @@ public final class SkyPass implements RenderPass {
 
     @Override
     public void close() {
-        clear.close();
-        cloudy.close();
+        for (ShaderProgram p : programs) p.close();
         clouds.close();
         MemoryUtil.memFree(indices);
         glDeleteVertexArrays(vao);

@@ -25,9 +25,12 @@ public final class WaterPass implements RenderPass {
     private final RenderTarget reflection = new RenderTarget();
     private final RenderTarget refraction = new RenderTarget();
     private boolean targetsReady;
+    /** The wet part of the plane (x, y at z = 0): minX, minY, maxX, maxY; null without water. */
+    private final float[] wetBox;
 
     public WaterPass(Course course, Terrain terrain) {
         MeshData data = buildPlane(course.bounds(), terrain);
+        wetBox = data == null ? null : wetBox(data);
         if (data == null) {
             shader = null;
             mesh = null;
@@ -84,6 +87,50 @@ public final class WaterPass implements RenderPass {
             }
         }
         return new MeshData(new int[]{3, 1}, v, java.util.Arrays.copyOf(idx, q));
+    }
+
+    /** The x-y box of the plane's drawn (wet) quads. */
+    static float[] wetBox(MeshData plane) {
+        float[] box = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        float[] v = plane.vertices();
+        int stride = plane.stride();
+        for (int i : plane.indices()) {
+            box[0] = Math.min(box[0], v[i * stride]);
+            box[1] = Math.min(box[1], v[i * stride + 1]);
+            box[2] = Math.max(box[2], v[i * stride]);
+            box[3] = Math.max(box[3], v[i * stride + 1]);
+        }
+        return box;
+    }
+
+    /**
+     * Where the water can show in a width x height image seen through {@code viewProjection}: {x, y,
+     * width, height} in pixels from the bottom left, widened by {@code margin} of the image's size each
+     * way (the ripples shift what the water samples) and clipped to the image; the whole image when a
+     * corner is behind the eye; null without water or when it is off screen. The reflection and
+     * refraction images are read only there, at each water pixel's own screen position.
+     */
+    int[] screenRect(org.joml.Matrix4f viewProjection, int width, int height, float margin) {
+        if (wetBox == null) return null;
+        float[] xs = {wetBox[0], wetBox[2]}, ys = {wetBox[1], wetBox[3]};
+        float minX = Float.POSITIVE_INFINITY, minY = Float.POSITIVE_INFINITY, maxX = Float.NEGATIVE_INFINITY, maxY = Float.NEGATIVE_INFINITY;
+        org.joml.Vector4f c = new org.joml.Vector4f();
+        for (float x : xs) {
+            for (float y : ys) {
+                viewProjection.transform(c.set(x, y, 0, 1));
+                if (c.w <= 1e-6f) return new int[]{0, 0, width, height};
+                float px = (c.x / c.w * 0.5f + 0.5f) * width, py = (c.y / c.w * 0.5f + 0.5f) * height;
+                minX = Math.min(minX, px);
+                maxX = Math.max(maxX, px);
+                minY = Math.min(minY, py);
+                maxY = Math.max(maxY, py);
+            }
+        }
+        float mx = margin * width, my = margin * height;
+        int x0 = (int) Math.max(0, Math.floor(minX - mx)), y0 = (int) Math.max(0, Math.floor(minY - my));
+        int x1 = (int) Math.min(width, Math.ceil(maxX + mx)), y1 = (int) Math.min(height, Math.ceil(maxY + my));
+        if (x1 <= x0 || y1 <= y0) return null;
+        return new int[]{x0, y0, x1 - x0, y1 - y0};
     }
 
     public boolean hasWater() {

@@ -77,4 +77,20 @@ class RenderCommandTest {
         assertFalse(json.get("renderer").asText().isBlank(), r.out());
         assertEquals("320x200", json.get("size").asText());
     }
+
+    @Test
+    void playTimingTimesTheRealGameLoop() throws Exception {
+        Run r = run("play", course("flat.json"), "--players", "Ann", "--frames", "24", "--timing");
+        assertEquals(0, r.code(), r.err());
+        JsonNode json = new ObjectMapper().readTree(r.out());
+        // 24 frames, the first quarter warm-up: passes 6 to 23 bound 17 timed frames.
+        assertEquals(17, json.get("frames").asInt(), r.out());
+        assertTrue(json.get("msPerFrame").asDouble() > 0, r.out());
+        assertTrue(json.get("cpuMsPerFrame").asDouble() >= 0, r.out());
+        assertEquals("Flat", json.get("course").asText());
+        assertFalse(json.get("renderer").asText().isBlank(), r.out());
+        Run tooFew = run("play", course("flat.json"), "--frames", "3", "--timing");
+        assertEquals(2, tooFew.code());
+        assertTrue(tooFew.err().contains("--timing needs --frames"), tooFew.err());
+    }
 }
