@@ -28,12 +28,18 @@ final class BallShadowBounds {
     }
 
     /**
-     * The rectangle {x, y, width, height} in pixels, origin at the bottom left (glScissor's), clipped to
-     * the viewport; null when no shadow falls on screen. {@code balls} holds centre x, y, z and radius
+     * The shadows' screen rectangle {x, y, width, height} (pixels from the bottom left, glScissor's) and
+     * the world box round the same rays, min x, y, z, max x, y, z (what stands in it may be shaded).
+     */
+    record Region(int[] rect, float[] box) {
+    }
+
+    /**
+     * The region, its rectangle clipped to the viewport; null when no shadow falls on screen. {@code balls} holds centre x, y, z and radius
      * for the first {@code count} balls; {@code toSun} is the unit direction towards the sun;
      * {@code lowest} a height below all of the ground.
      */
-    static int[] of(float[] balls, int count, Vector3f toSun, HeightProbe ground, Bounds bounds, double lowest,
+    static Region of(float[] balls, int count, Vector3f toSun, HeightProbe ground, Bounds bounds, double lowest,
                     Matrix4f viewProjection, int width, int height) {
         double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY;
         double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
@@ -43,6 +49,9 @@ final class BallShadowBounds {
         Vector3f u = new Vector3f(toSun).cross(Math.abs(toSun.z) < 0.9f ? new Vector3f(0, 0, 1) : new Vector3f(1, 0, 0)).normalize();
         Vector3f w = new Vector3f(toSun).cross(u).normalize();
         Vector4f clip = new Vector4f();
+        float[] box = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
+                Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        boolean everywhere = false;
         for (int i = 0; i < count; i++) {
             double cx = balls[4 * i], cy = balls[4 * i + 1], cz = balls[4 * i + 2], r = balls[4 * i + 3];
             double centreT = groundAlong(cx, cy, cz, lx, ly, lz, ground, bounds, lowest);
@@ -59,9 +68,18 @@ final class BallShadowBounds {
                 double t = k < 0 ? centreT : groundAlong(qx, qy, qz, lx, ly, lz, ground, bounds, lowest);
                 if (Double.isNaN(t)) t = 0; // this ray leaves the course: only what stands on the way
                 for (double along : new double[]{0, t}) {
-                    viewProjection.transform(clip.set((float) (qx - along * lx), (float) (qy - along * ly),
-                            (float) (qz - along * lz), 1f));
-                    if (clip.w <= 1e-6f) return new int[]{0, 0, width, height}; // behind the eye: be safe, shade all
+                    float wx = (float) (qx - along * lx), wy = (float) (qy - along * ly), wz = (float) (qz - along * lz);
+                    box[0] = Math.min(box[0], wx);
+                    box[1] = Math.min(box[1], wy);
+                    box[2] = Math.min(box[2], wz);
+                    box[3] = Math.max(box[3], wx);
+                    box[4] = Math.max(box[4], wy);
+                    box[5] = Math.max(box[5], wz);
+                    viewProjection.transform(clip.set(wx, wy, wz, 1f));
+                    if (clip.w <= 1e-6f) {
+                        everywhere = true; // behind the eye: be safe, shade the whole screen
+                        continue;
+                    }
                     double px = (clip.x / clip.w * 0.5 + 0.5) * width, py = (clip.y / clip.w * 0.5 + 0.5) * height;
                     minX = Math.min(minX, px);
                     maxX = Math.max(maxX, px);
@@ -70,11 +88,12 @@ final class BallShadowBounds {
                 }
             }
         }
+        if (everywhere) return new Region(new int[]{0, 0, width, height}, box);
         if (minX > maxX) return null;
         int x0 = (int) Math.max(0, Math.floor(minX) - MARGIN_PX), y0 = (int) Math.max(0, Math.floor(minY) - MARGIN_PX);
         int x1 = (int) Math.min(width, Math.ceil(maxX) + MARGIN_PX), y1 = (int) Math.min(height, Math.ceil(maxY) + MARGIN_PX);
         if (x1 <= x0 || y1 <= y0) return null;
-        return new int[]{x0, y0, x1 - x0, y1 - y0};
+        return new Region(new int[]{x0, y0, x1 - x0, y1 - y0}, box);
     }
 
     /**

@@ -77,6 +77,13 @@ public final class Mesh implements AutoCloseable {
         glBindVertexArray(0);
     }
 
+    /** Draws {@code count} indices from index {@code first}. */
+    public void drawRange(int first, int count) {
+        glBindVertexArray(vao);
+        glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, (long) first * Integer.BYTES);
+        glBindVertexArray(0);
+    }
+
     @Override
     public void close() {
         if (closed) return;

@@ -24,8 +24,21 @@ public final class ObstacleMeshes {
     /** The crown's radius relative to the trunk's height, and its least size relative to the trunk's radius. */
     static final double CROWN_PER_HEIGHT = 0.32, CROWN_PER_RADIUS = 2.5;
 
-    /** The solid obstacles and the decorative crowns; either may have no triangles. */
-    public record Built(MeshData solid, MeshData decoration) {
+    /**
+     * The solid obstacles and the decorative crowns; either may have no triangles. Each obstacle's
+     * triangles are one run of indices in each mesh, its piece, with its box: a pass can draw only the
+     * pieces near something (the balls' shadows).
+     */
+    public record Built(MeshData solid, MeshData decoration, List<Piece> solidPieces, List<Piece> decorationPieces) {
+    }
+
+    /** A run of {@code count} indices from {@code first} and the box round its vertices: min x, y, z, max x, y, z. */
+    public record Piece(int first, int count, float[] box) {
+        /** Whether the piece's box meets {@code other} (min x, y, z, max x, y, z). */
+        public boolean overlaps(float[] other) {
+            return box[0] <= other[3] && box[3] >= other[0] && box[1] <= other[4] && box[4] >= other[1]
+                    && box[2] <= other[5] && box[5] >= other[2];
+        }
     }
 
     private ObstacleMeshes() {
@@ -39,7 +52,9 @@ public final class ObstacleMeshes {
                               Function<Obstacle.Model, MaterialLibrary> modelMaterials) {
         Writer solid = new Writer(), crowns = new Writer();
         ModelResource crown = ModelResource.get("tree-crown");
+        List<Piece> solidPieces = new java.util.ArrayList<>(), crownPieces = new java.util.ArrayList<>();
         for (Obstacle o : obstacles) {
+            int solidStart = solid.vertexCount(), crownStart = crowns.vertexCount();
             if (o instanceof Obstacle.Tree tree) {
                 double[] c = ObstacleGeometry.treeCylinder(tree, ground);
                 solid.append(Shapes.cylinder(c[0], c[1], c[3], c[4], c[2], TRUNK_SEGMENTS,
@@ -55,8 +70,10 @@ public final class ObstacleMeshes {
                 float[] colour = o instanceof Obstacle.Wall ? WALL_COLOR : BOX_COLOR;
                 solid.flatTriangles(ObstacleGeometry.triangles(o, ground), colour);
             }
+            solid.piece(solidStart, solidPieces);
+            crowns.piece(crownStart, crownPieces);
         }
-        return new Built(solid.build(), crowns.build());
+        return new Built(solid.build(), crowns.build(), List.copyOf(solidPieces), List.copyOf(crownPieces));
     }
 
     /** A model placed as {@link Writer#model} places it, as its own mesh (the flag). */
@@ -130,6 +147,25 @@ public final class ObstacleMeshes {
                 vertex(x + cos * px - sin * py, y + sin * px + cos * py, z + pz,
                         cos * nx - sin * ny, sin * nx + cos * ny, nz, c);
             }
+        }
+
+        int vertexCount() {
+            return floats / 9;
+        }
+
+        /** Adds the vertices written since {@code start} (indices are 0, 1, 2, ...) as a piece, if any. */
+        void piece(int start, List<Piece> pieces) {
+            int end = vertexCount();
+            if (end == start) return;
+            float[] box = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
+                    Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+            for (int i = start; i < end; i++) {
+                for (int a = 0; a < 3; a++) {
+                    box[a] = Math.min(box[a], v[9 * i + a]);
+                    box[a + 3] = Math.max(box[a + 3], v[9 * i + a]);
+                }
+            }
+            pieces.add(new Piece(start, end - start, box));
         }
 
         MeshData build() {

@@ -28,6 +28,7 @@ public final class ObstaclesPass implements RenderPass {
     private Mesh decoration;
     private double top = Double.NEGATIVE_INFINITY;
     private int solidTriangles, decorationTriangles;
+    private List<ObstacleMeshes.Piece> solidPieces = List.of(), decorationPieces = List.of();
 
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
         this(obstacles, ground, false);
@@ -55,6 +56,8 @@ public final class ObstaclesPass implements RenderPass {
         solid = solidTriangles > 0 ? new Mesh(built.solid()) : null;
         decoration = decorationTriangles > 0 ? new Mesh(built.decoration()) : null;
         top = Math.max(highest(built.solid()), highest(built.decoration()));
+        solidPieces = built.solidPieces();
+        decorationPieces = built.decorationPieces();
     }
 
     /** Where model obstacles' .mtl files are looked for before the classpath (the course file's folder); rebuilds. */
@@ -107,6 +110,24 @@ public final class ObstaclesPass implements RenderPass {
             program.set("uShininess", 8f);
             decoration.draw();
         }
+    }
+
+    /**
+     * Only the obstacles whose boxes meet {@code box} (min x, y, z, max x, y, z): the second draw round
+     * the balls' shadows (see {@link SceneRenderer}) need not push the whole course through again.
+     */
+    void renderWithin(FrameContext frame, float[] box) {
+        boolean any = false;
+        for (ObstacleMeshes.Piece p : solidPieces) any |= p.overlaps(box);
+        for (ObstacleMeshes.Piece p : decorationPieces) any |= p.overlaps(box);
+        if (!any) return;
+        begin(frame);
+        program.set("uSpecularStrength", 0.12f);
+        program.set("uShininess", 16f);
+        for (ObstacleMeshes.Piece p : solidPieces) if (p.overlaps(box)) solid.drawRange(p.first(), p.count());
+        program.set("uSpecularStrength", 0.05f);
+        program.set("uShininess", 8f);
+        for (ObstacleMeshes.Piece p : decorationPieces) if (p.overlaps(box)) decoration.drawRange(p.first(), p.count());
     }
 
     /** The minimap shows only what the ball can hit (no crowns, which would hide the trunks). */

@@ -350,14 +350,15 @@ public final class SceneRenderer implements AutoCloseable {
      * vertex shaders' positions are invariant). The first draw left them out.
      */
     private void drawBallShadows(int width, int height) {
-        int[] r = BallShadowBounds.of(frame.ballShadows, frame.ballShadowCount, frame.sun.direction(), terrain.terrain()::height,
+        BallShadowBounds.Region region = BallShadowBounds.of(frame.ballShadows, frame.ballShadowCount, frame.sun.direction(), terrain.terrain()::height,
                 course.bounds(), Math.min(0, terrain.minHeight()) - 0.1, frame.viewProjection, width, height);
-        if (r == null) return;
+        if (region == null) return;
+        int[] r = region.rect();
         glEnable(GL_SCISSOR_TEST);
         glScissor(r[0], r[1], r[2], r[3]);
         frame.ballShadowsInline = true;
         terrain.render(frame);
-        obstacles.render(frame);
+        obstacles.renderWithin(frame, region.box());
         objects.render(frame);
         frame.ballShadowsInline = false;
         glDisable(GL_SCISSOR_TEST);

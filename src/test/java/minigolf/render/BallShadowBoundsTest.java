@@ -48,7 +48,7 @@ class BallShadowBoundsTest {
         float r = 0.064f;
         float[] ball = {0.2f, 0.1f, r, r};
         Matrix4f vp = camera();
-        int[] rect = BallShadowBounds.of(ball, 1, SUN, FLAT, COURSE, -1, vp, W, H);
+        int[] rect = BallShadowBounds.of(ball, 1, SUN, FLAT, COURSE, -1, vp, W, H).rect();
         assertNotNull(rect);
         // The shadow's centre: where the sun's ray through the ball's centre meets the ground.
         double t = r / SUN.z;
@@ -57,6 +57,11 @@ class BallShadowBoundsTest {
         // The darkened edge: a point on the ground 1.1 r across the ray from the centre's foot is still inside.
         Vector3f across = new Vector3f(SUN).cross(0, 0, 1).normalize().mul(1.1f * r);
         assertTrue(inside(rect, pixel(vp, 0.2 - t * SUN.x + across.x, 0.1 - t * SUN.y + across.y, 0)));
+        // The world box holds the ball and the shadow's centre, and not much more.
+        float[] box = BallShadowBounds.of(ball, 1, SUN, FLAT, COURSE, -1, vp, W, H).box();
+        assertTrue(box[0] <= 0.2 - r && box[3] >= 0.2 + r && box[2] <= 0 && box[5] >= 2 * r, java.util.Arrays.toString(box));
+        assertTrue(box[0] <= 0.2 - t * SUN.x && box[3] >= 0.2 - t * SUN.x && box[1] <= 0.1 - t * SUN.y && box[4] >= 0.1 - t * SUN.y);
+        assertTrue(box[3] - box[0] < 0.5 && box[4] - box[1] < 0.5, java.util.Arrays.toString(box));
         // A few dozen pixels across, not the screen.
         assertTrue(rect[2] * rect[3] < 0.01 * W * H, "rectangle too big: " + java.util.Arrays.toString(rect));
     }
@@ -66,8 +71,8 @@ class BallShadowBoundsTest {
         float r = 0.064f;
         float[] balls = {-1f, 0f, r, r, 1.5f, 0.5f, r, r};
         Matrix4f vp = camera();
-        int[] both = BallShadowBounds.of(balls, 2, SUN, FLAT, COURSE, -1, vp, W, H);
-        int[] first = BallShadowBounds.of(balls, 1, SUN, FLAT, COURSE, -1, vp, W, H);
+        int[] both = BallShadowBounds.of(balls, 2, SUN, FLAT, COURSE, -1, vp, W, H).rect();
+        int[] first = BallShadowBounds.of(balls, 1, SUN, FLAT, COURSE, -1, vp, W, H).rect();
         assertTrue(both[2] > first[2] + 100, "the second ball did not widen the rectangle");
         assertTrue(inside(both, pixel(vp, 1.5, 0.5, r)));
         assertTrue(inside(both, pixel(vp, -1, 0, r)));
@@ -87,7 +92,7 @@ class BallShadowBoundsTest {
         float r = 0.064f;
         float[] ball = {0f, 0f, 1.5f, r};
         Matrix4f vp = camera();
-        int[] rect = BallShadowBounds.of(ball, 1, SUN, FLAT, COURSE, -1, vp, W, H);
+        int[] rect = BallShadowBounds.of(ball, 1, SUN, FLAT, COURSE, -1, vp, W, H).rect();
         double t = 1.5 / SUN.z;
         assertTrue(inside(rect, pixel(vp, -t * SUN.x, -t * SUN.y, 0)));
         assertTrue(inside(rect, pixel(vp, 0, 0, 1.5)));

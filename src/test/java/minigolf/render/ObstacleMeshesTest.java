@@ -130,4 +130,34 @@ class ObstacleMeshesTest {
         MaterialLibrary none = MaterialLibrary.forModel("nowhere/x.obj", mill.mesh(), Path.of("/nonexistent"));
         assertArrayEquals(MaterialLibrary.DEFAULT_COLOR, none.color("whitewash"));
     }
+
+    @Test
+    void eachObstacleIsOnePieceWithItsBox() {
+        Obstacle wall = new Obstacle.Wall(new Vec2(-1, 0.5), new Vec2(2, 1.5), 0.1, 0.3, 0.7);
+        Obstacle tree = new Obstacle.Tree(new Vec2(3, -2), 0.15, 2.0, 0.6);
+        Obstacle box = new Obstacle.Box(new Vec3(1, 1, 0), new Vec3(1.4, 1.6, 0.5), 30, 0.7);
+        ObstacleMeshes.Built built = build(List.of(wall, tree, box));
+        List<ObstacleMeshes.Piece> solid = built.solidPieces();
+        assertEquals(3, solid.size());
+        // The pieces tile the solid mesh's indices in order.
+        assertEquals(0, solid.get(0).first());
+        assertEquals(solid.get(0).count(), solid.get(1).first());
+        assertEquals(solid.get(1).first() + solid.get(1).count(), solid.get(2).first());
+        assertEquals(built.solid().indices().length, solid.get(2).first() + solid.get(2).count());
+        assertEquals(36, solid.get(0).count()); // the wall: 12 triangles
+        // The wall's box: its ends reach half the thickness past each end and to each side (direction
+        // (3, 1)/sqrt 10), from the ground (0.1 + 0.05 x) up 0.3.
+        float[] w = solid.get(0).box();
+        assertEquals(-1 - 0.05 * (3 + 1) / Math.sqrt(10), w[0], 1e-5);
+        assertEquals(0.1 + 0.05 * 2 + 0.3, w[5], 0.06);
+        // Only the tree has a crown, above its trunk.
+        assertEquals(1, built.decorationPieces().size());
+        float[] crown = built.decorationPieces().get(0).box();
+        assertTrue(crown[0] < 3 && crown[3] > 3 && crown[1] < -2 && crown[4] > -2, java.util.Arrays.toString(crown));
+        // Overlap tests: a box round the tree's foot meets the trunk, not the wall.
+        float[] nearTree = {2.9f, -2.1f, 0f, 3.1f, -1.9f, 0.5f};
+        assertTrue(solid.get(1).overlaps(nearTree));
+        assertFalse(solid.get(0).overlaps(nearTree));
+        assertFalse(solid.get(2).overlaps(nearTree));
+    }
 }
