@@ -46,6 +46,10 @@ public final class PlannerBot extends SearchBot {
     private static final double LAYUP_STEP = Math.toRadians(10);
     private static final double[] LAYUP_LENGTHS = {0.5, 0.8};
     private static final int LAYUP_TRIES = 6;
+    /** The plan sweep's speeds, fractions of the maximum (its directions: LAYUP_STEP apart). */
+    private static final double[] PLAN_SWEEP_SPEEDS = {0.3, 0.5, 0.7, 0.9};
+    /** The plan sweep replaces the plan's lay-up when that leaves this many strokes or more. */
+    private static final int SWEEP_STROKES_LEFT = 3;
     /** Bank lines (shortest first) Broyden starts from. */
     private static final int BANK_TRIES = 4;
     private static final double BANK_FAN_STEP = Math.toRadians(1);
@@ -465,6 +469,10 @@ public final class PlannerBot extends SearchBot {
          */
         Shot layup(double reach, Planned known) {
             Planned planned = known != null ? known : plannedLayup();
+            if (planned == null || planned.strokesLeft() >= SWEEP_STROKES_LEFT) {
+                Shot further = planSweep();
+                if (further != null) return further;
+            }
             if (planned != null) return planned.shot();
             if (path.isEmpty()) return progressSweep();
             int strokesLeft = Math.max(2, (int) Math.ceil(pathLength / (0.99 * reach)));
@@ -522,6 +530,42 @@ public final class PlannerBot extends SearchBot {
                 }
             }
             return firstConverged == null ? null : new Planned(firstConverged, false, fewest);
+        }
+
+        /**
+         * The plan knows straight putts only, so far from the hole its lay-ups follow the corridors
+         * one straight leg at a time, while a shot that banks off walls or curves over hills may
+         * get much further. A sweep of directions all round at several speeds (fractions of the
+         * maximum); of its rest points (and every other resting probe of this stroke) well clear
+         * of water and a little of obstacles, the nearest the hole on the distance field is played.
+         */
+        Shot planSweep() {
+            Shot holed = sweepAllRound();
+            if (holed != null) return holed;
+            Eval best = null;
+            double bestDistance = Double.POSITIVE_INFINITY;
+            for (Eval e : restingProbes) {
+                double d = field.at(e.restX, e.restY);
+                if (grid.hazardClearance(e.restX, e.restY) < StrokePlan.REST_CLEARANCE
+                        || grid.clearance(e.restX, e.restY) < StrokePlan.REST_OBSTACLE_CLEARANCE
+                        || !(d < bestDistance)) continue;
+                best = e;
+                bestDistance = d;
+            }
+            return best == null ? null : best.shot;
+        }
+
+        /** Directions LAYUP_STEP apart all round at the plan sweep's speeds; a shot that holes, or null. */
+        Shot sweepAllRound() {
+            sim.phase("plan sweep");
+            double holeAngle = Math.atan2(holeY - py, holeX - px);
+            for (int k = 0; k * LAYUP_STEP < 2 * Math.PI - 1e-9; k++) {
+                for (double fraction : PLAN_SWEEP_SPEEDS) {
+                    Shot s = sim.limit(Shot.polar(holeAngle + k * LAYUP_STEP, fraction * sim.maxSpeed()));
+                    if (evaluate(s, holeX, holeY).holed) return s;
+                }
+            }
+            return null;
         }
 
         double layupCost(StrokePlan p, int i) {
