@@ -50,6 +50,16 @@ public final class PlannerBot extends SearchBot {
     private static final double[] PLAN_SWEEP_SPEEDS = {0.3, 0.5, 0.7, 0.9};
     /** The plan sweep replaces the plan's lay-up when that leaves this many strokes or more. */
     private static final int SWEEP_STROKES_LEFT = 3;
+    /** A plan-sweep shot resting this close to the hole (distance field) starts Broyden. */
+    private static final double SWEEP_REFINE = 0.6;
+    /**
+     * Far from the hole (the plan's lay-up leaves BEAM_LEFT strokes or more) the plan sweep looks
+     * one stroke further from its best BEAM rest points, at least BEAM_SPACING apart. Measured on
+     * the mazes: maze-a 6 -> 5 strokes; applied closer it cost simulations and gained nothing.
+     */
+    private static final int BEAM = 3;
+    private static final int BEAM_LEFT = 5;
+    private static final double BEAM_SPACING = 1.0;
     /** Bank lines (shortest first) Broyden starts from. */
     private static final int BANK_TRIES = 4;
     private static final double BANK_FAN_STEP = Math.toRadians(1);
@@ -470,7 +480,7 @@ public final class PlannerBot extends SearchBot {
         Shot layup(double reach, Planned known) {
             Planned planned = known != null ? known : plannedLayup();
             if (planned == null || planned.strokesLeft() >= SWEEP_STROKES_LEFT) {
-                Shot further = planSweep();
+                Shot further = planSweep(planned == null ? 0 : planned.strokesLeft());
                 if (further != null) return further;
             }
             if (planned != null) return planned.shot();
@@ -537,22 +547,51 @@ public final class PlannerBot extends SearchBot {
          * one straight leg at a time, while a shot that banks off walls or curves over hills may
          * get much further. A sweep of directions all round at several speeds (fractions of the
          * maximum); of its rest points (and every other resting probe of this stroke) well clear
-         * of water and a little of obstacles, the nearest the hole on the distance field is played.
+         * of water and a little of obstacles, the nearest the hole on the distance field is played;
+         * when the plan's lay-up leaves {@code planLeft} >= BEAM_LEFT strokes, the one of the best
+         * few whose own sweep rests nearest the hole. Shots resting near the hole start Broyden.
          */
-        Shot planSweep() {
+        Shot planSweep(int planLeft) {
             Shot holed = sweepAllRound();
             if (holed != null) return holed;
-            Eval best = null;
-            double bestDistance = Double.POSITIVE_INFINITY;
+            List<Eval> ranked = safeRests();
+            if (ranked.isEmpty()) return null;
+            if (planLeft < BEAM_LEFT) return ranked.get(0).shot;
+            // Look one stroke further: from the best few rest points (at least BEAM_SPACING apart)
+            // a sweep of their own; play the one whose best follow-up rests nearest the hole.
+            sim.phase("plan look-ahead");
+            List<Eval> tried = new ArrayList<>();
+            Eval best = ranked.get(0);
+            double bestNext = Double.POSITIVE_INFINITY;
+            for (Eval e : ranked) {
+                if (tried.size() == BEAM) break;
+                boolean near = false;
+                for (Eval t : tried) near |= Math.hypot(t.restX - e.restX, t.restY - e.restY) < BEAM_SPACING;
+                if (near) continue;
+                tried.add(e);
+                Stroke next = new Stroke(sim, probe, maps, e.restX, e.restY, plan);
+                if (next.sweepAllRound() != null) return e.shot;
+                List<Eval> after = next.safeRests();
+                double d = after.isEmpty() ? Double.POSITIVE_INFINITY : field.at(after.get(0).restX, after.get(0).restY);
+                if (d < bestNext) {
+                    bestNext = d;
+                    best = e;
+                }
+            }
+            return best.shot;
+        }
+
+        /** The resting probes of this stroke well clear of water and a little of obstacles, nearest the hole first. */
+        List<Eval> safeRests() {
+            List<Eval> safe = new ArrayList<>();
             for (Eval e : restingProbes) {
-                double d = field.at(e.restX, e.restY);
                 if (grid.hazardClearance(e.restX, e.restY) < StrokePlan.REST_CLEARANCE
                         || grid.clearance(e.restX, e.restY) < StrokePlan.REST_OBSTACLE_CLEARANCE
-                        || !(d < bestDistance)) continue;
-                best = e;
-                bestDistance = d;
+                        || !Double.isFinite(field.at(e.restX, e.restY))) continue;
+                safe.add(e);
             }
-            return best == null ? null : best.shot;
+            safe.sort((a, b) -> Double.compare(field.at(a.restX, a.restY), field.at(b.restX, b.restY)));
+            return safe;
         }
 
         /** Directions LAYUP_STEP apart all round at the plan sweep's speeds; a shot that holes, or null. */
@@ -562,7 +601,13 @@ public final class PlannerBot extends SearchBot {
             for (int k = 0; k * LAYUP_STEP < 2 * Math.PI - 1e-9; k++) {
                 for (double fraction : PLAN_SWEEP_SPEEDS) {
                     Shot s = sim.limit(Shot.polar(holeAngle + k * LAYUP_STEP, fraction * sim.maxSpeed()));
-                    if (evaluate(s, holeX, holeY).holed) return s;
+                    Eval e = evaluate(s, holeX, holeY);
+                    if (e.holed) return s;
+                    // A shot (banked, curved) resting near the hole: Broyden may hole it.
+                    if (!e.penalty && field.at(e.restX, e.restY) < SWEEP_REFINE) {
+                        Attempt a = solveHole(s, e);
+                        if (a.holed) return a.shot;
+                    }
                 }
             }
             return null;
