@@ -38,6 +38,10 @@ final class ExhaustiveStrokeSearch {
     }
 
     static Result search(World world, Grid grid) {
+        return search(world, grid, false);
+    }
+
+    static Result search(World world, Grid grid, boolean progress) {
         long t0 = System.nanoTime();
         Simulator engine = new Simulator(world, SimulationSettings.DEFAULT);
         double hx = world.hole().position().x(), hy = world.hole().position().y();
@@ -50,6 +54,7 @@ final class ExhaustiveStrokeSearch {
         long sims = 0;
         for (int k = 0; k < grid.maxLevels() && !level.isEmpty(); k++) {
             counts.add(level.size());
+            if (progress) System.err.printf(Locale.ROOT, "  level %d: %d nodes, %d simulations so far, %.0f s%n", k, level.size(), sims, (System.nanoTime() - t0) / 1e9);
             List<Node> next = new ArrayList<>();
             for (Node node : level) {
                 double base = Math.atan2(hy - node.y, hx - node.x);
@@ -105,14 +110,19 @@ final class ExhaustiveStrokeSearch {
 
     /** Prints one line per course: fewest strokes found, nodes per level, simulations, seconds, the shots. */
     public static void main(String[] args) {
-        for (String name : args) {
-            Result r = search(BenchCourses.load(name), Grid.DEFAULT);
+        for (String arg : args) {
+            // NAME or NAME:LEVELS (search at most LEVELS strokes deep)
+            String name = arg.contains(":") ? arg.substring(0, arg.indexOf(':')) : arg;
+            Grid d = Grid.DEFAULT;
+            Grid grid = arg.contains(":") ? new Grid(d.cell(), d.directions(), d.speeds(),
+                    Integer.parseInt(arg.substring(arg.indexOf(':') + 1)), d.nearHole(), d.refinements()) : d;
+            Result r = search(BenchCourses.load(name), grid, true);
             StringBuilder shots = new StringBuilder();
             for (double[] s : r.shots()) {
                 shots.append(String.format(Locale.ROOT, " (%.3f,%.3f)->v(%.4f,%.4f)", s[0], s[1], s[2], s[3]));
             }
             System.out.printf(Locale.ROOT, "%s fewest %s nodes %s sims %d %.1f s%s%n", name,
-                    r.strokes() == 0 ? ">" + Grid.DEFAULT.maxLevels() : Integer.toString(r.strokes()),
+                    r.strokes() == 0 ? ">" + grid.maxLevels() : Integer.toString(r.strokes()),
                     r.nodesPerLevel(), r.simulations(), r.seconds(), shots);
             System.out.flush();
         }

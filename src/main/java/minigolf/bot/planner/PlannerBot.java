@@ -25,12 +25,17 @@ import minigolf.physics.World;
  *     of the success region, not its edge: the rest point on the centre (rest rule), or the ball
  *     crossing the centre at half the capture speed with no lateral miss (capture rule; probed in
  *     a world that differs only in the hole rule, confirmed in the real one).</li>
+ * <li>Bank shots off walls and boxes: the hole mirrored in a face gives the line, Broyden the shot.</li>
  * <li>If that fails (water in the way): a sweep of directions around the shortest path's and the
  *     hole's direction at the physics speed for the path's length, scored on the distance field;
  *     promising rest points start Broyden again.</li>
+ * <li>Two strokes: a look-ahead (does one putt hole from there?) from the search's resting probes,
+ *     the stroke plan's one-putt lay-up, then a lay-up sweep at several speeds.</li>
  * <li>No hole-in-one: a lay-up chosen by the stroke plan (fewest straight putts to the hole over
- *     cells clear of water), with a look-ahead that the last lay-up really holes next; failing
- *     that, a point along the shortest path; last, the shot resting nearest the hole.</li>
+ *     cells clear of water), with a look-ahead that the last lay-up really holes next; when that
+ *     lay-up leaves 3 or more strokes, a sweep all round at several speeds plays the rest point
+ *     nearest the hole instead (banks and curves get further than straight putts); failing all,
+ *     a point along the shortest path; last, the shot resting nearest the hole.</li>
  * </ol>
  */
 public final class PlannerBot extends SearchBot {
@@ -146,17 +151,21 @@ public final class PlannerBot extends SearchBot {
     /**
      * The straight faces a ball can bank off, each {x0, y0, x1, y1, nx, ny, restitution}: the face
      * moved out by the ball's radius (where the ball's centre is at contact), n pointing away from
-     * the obstacle. Walls give their two long sides, boxes their four.
+     * the obstacle. Walls give their two long sides, boxes their four (not a box raised above a
+     * rolling ball, which passes under it).
      */
-    static List<double[]> bankFaces(List<Obstacle> obstacles, double ballRadius) {
+    static List<double[]> bankFaces(World world) {
+        double ballRadius = world.physics().ballRadius();
         List<double[]> faces = new ArrayList<>();
-        for (Obstacle o : obstacles) {
+        for (Obstacle o : world.course().obstacles()) {
             if (o instanceof Obstacle.Wall w) {
                 double dx = w.to().x() - w.from().x(), dy = w.to().y() - w.from().y(), len = Math.hypot(dx, dy);
                 if (len < 1e-9) continue;
                 double cx = (w.from().x() + w.to().x()) / 2, cy = (w.from().y() + w.to().y()) / 2;
                 addRectangleFaces(faces, cx, cy, dx / len, dy / len, len / 2, w.thickness() / 2, ballRadius, w.restitution(), false);
             } else if (o instanceof Obstacle.Box b) {
+                double cx = (b.min().x() + b.max().x()) / 2, cy = (b.min().y() + b.max().y()) / 2;
+                if (b.min().z() > world.terrain().height(cx, cy) + 2 * ballRadius) continue;
                 double a = Math.toRadians(b.rotationDeg());
                 addRectangleFaces(faces, (b.min().x() + b.max().x()) / 2, (b.min().y() + b.max().y()) / 2,
                         Math.cos(a), Math.sin(a), (b.max().x() - b.min().x()) / 2, (b.max().y() - b.min().y()) / 2,
@@ -781,8 +790,7 @@ public final class PlannerBot extends SearchBot {
         Shot bankShot() {
             List<double[]> lines = new ArrayList<>();
             double mu = Math.max(world.friction().kinetic(px, py), 1e-3);
-            double ballRadius = world.physics().ballRadius();
-            for (double[] f : bankFaces(world.course().obstacles(), ballRadius)) {
+            for (double[] f : bankFaces(world)) {
                 double nx = f[4], ny = f[5];
                 double ball = (px - f[0]) * nx + (py - f[1]) * ny, hole = (holeX - f[0]) * nx + (holeY - f[1]) * ny;
                 if (ball <= 0.05 || hole <= 0.05) continue;
