@@ -11,6 +11,7 @@ import minigolf.bot.map.CourseGrid;
 import minigolf.bot.map.DistanceField;
 import minigolf.course.Course;
 import minigolf.course.Hole;
+import minigolf.course.Obstacle;
 import minigolf.course.HoleRule;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
@@ -24,12 +25,17 @@ import minigolf.physics.World;
  *     of the success region, not its edge: the rest point on the centre (rest rule), or the ball
  *     crossing the centre at half the capture speed with no lateral miss (capture rule; probed in
  *     a world that differs only in the hole rule, confirmed in the real one).</li>
+ * <li>Bank shots off walls and boxes: the hole mirrored in a face gives the line, Broyden the shot.</li>
  * <li>If that fails (water in the way): a sweep of directions around the shortest path's and the
  *     hole's direction at the physics speed for the path's length, scored on the distance field;
  *     promising rest points start Broyden again.</li>
+ * <li>Two strokes: a look-ahead (does one putt hole from there?) from the search's resting probes,
+ *     the stroke plan's one-putt lay-up, then a lay-up sweep at several speeds.</li>
  * <li>No hole-in-one: a lay-up chosen by the stroke plan (fewest straight putts to the hole over
- *     cells clear of water), with a look-ahead that the last lay-up really holes next; failing
- *     that, a point along the shortest path; last, the shot resting nearest the hole.</li>
+ *     cells clear of water), with a look-ahead that the last lay-up really holes next; when that
+ *     lay-up leaves 3 or more strokes, a sweep all round at several speeds plays the rest point
+ *     nearest the hole instead (banks and curves get further than straight putts); failing all,
+ *     a point along the shortest path; last, the shot resting nearest the hole.</li>
  * </ol>
  */
 public final class PlannerBot extends SearchBot {
@@ -41,6 +47,28 @@ public final class PlannerBot extends SearchBot {
     /** Lay-ups tried from the hole-in-one search's resting probes, at least this far apart. */
     private static final int TWO_STROKE_TRIES = 3;
     private static final double TWO_STROKE_SPACING = 0.4;
+    /** The lay-up sweep: directions this far apart all round, rolls of these fractions of the reach. */
+    private static final double LAYUP_STEP = Math.toRadians(10);
+    private static final double[] LAYUP_LENGTHS = {0.5, 0.8};
+    private static final int LAYUP_TRIES = 6;
+    /** The plan sweep's speeds, fractions of the maximum (its directions: LAYUP_STEP apart). */
+    private static final double[] PLAN_SWEEP_SPEEDS = {0.3, 0.5, 0.7, 0.9};
+    /** The plan sweep replaces the plan's lay-up when that leaves this many strokes or more. */
+    private static final int SWEEP_STROKES_LEFT = 3;
+    /** A plan-sweep shot resting this close to the hole (distance field) starts Broyden. */
+    private static final double SWEEP_REFINE = 0.6;
+    /**
+     * Far from the hole (the plan's lay-up leaves BEAM_LEFT strokes or more) the plan sweep looks
+     * one stroke further from its best BEAM rest points, at least BEAM_SPACING apart. Measured on
+     * the mazes: maze-a 6 -> 5 strokes; applied closer it cost simulations and gained nothing.
+     */
+    private static final int BEAM = 3;
+    private static final int BEAM_LEFT = 5;
+    private static final double BEAM_SPACING = 1.0;
+    /** Bank lines (shortest first) Broyden starts from. */
+    private static final int BANK_TRIES = 4;
+    private static final double BANK_FAN_STEP = Math.toRadians(1);
+    private static final int BANK_FAN = 8;
 
     private final CourseMaps maps = new CourseMaps();
     private World planWorld;
@@ -74,6 +102,7 @@ public final class PlannerBot extends SearchBot {
 
         double reach = stroke.maxRoll();
         double pathLength = stroke.pathLength;
+        Planned planned = null;
         if (Double.isFinite(pathLength) && pathLength <= 1.3 * reach) {
             sim.phase("direct");
             Shot shot = stroke.holeInOne();
@@ -81,9 +110,17 @@ public final class PlannerBot extends SearchBot {
             sim.phase("two strokes");
             shot = stroke.twoStrokes();
             if (shot != null) return shot;
+            // The plan's one-putt lay-up, when the look-ahead confirms it, before the costlier sweep.
+            planned = stroke.plannedLayup();
+            if (planned != null && planned.verified()) return planned.shot();
+            // The sweep looks for two strokes: worth it when the plan sees no lay-up or a one-putt one.
+            if (planned == null || planned.strokesLeft() <= 1) {
+                shot = stroke.layupSweep();
+                if (shot != null) return shot;
+            }
         }
         sim.phase("lay-up");
-        Shot layup = stroke.layup(reach);
+        Shot layup = stroke.layup(reach, planned);
         if (layup != null) return layup;
         Shot best = sim.bestShot();
         return best != null ? best : directGuess(world, request.ballX(), request.ballY());
@@ -111,6 +148,47 @@ public final class PlannerBot extends SearchBot {
         return sim.variant(probeWorld, true);
     }
 
+    /**
+     * The straight faces a ball can bank off, each {x0, y0, x1, y1, nx, ny, restitution}: the face
+     * moved out by the ball's radius (where the ball's centre is at contact), n pointing away from
+     * the obstacle. Walls give their two long sides, boxes their four (not a box raised above a
+     * rolling ball, which passes under it).
+     */
+    static List<double[]> bankFaces(World world) {
+        double ballRadius = world.physics().ballRadius();
+        List<double[]> faces = new ArrayList<>();
+        for (Obstacle o : world.course().obstacles()) {
+            if (o instanceof Obstacle.Wall w) {
+                double dx = w.to().x() - w.from().x(), dy = w.to().y() - w.from().y(), len = Math.hypot(dx, dy);
+                if (len < 1e-9) continue;
+                double cx = (w.from().x() + w.to().x()) / 2, cy = (w.from().y() + w.to().y()) / 2;
+                addRectangleFaces(faces, cx, cy, dx / len, dy / len, len / 2, w.thickness() / 2, ballRadius, w.restitution(), false);
+            } else if (o instanceof Obstacle.Box b) {
+                double cx = (b.min().x() + b.max().x()) / 2, cy = (b.min().y() + b.max().y()) / 2;
+                if (b.min().z() > world.terrain().height(cx, cy) + 2 * ballRadius) continue;
+                double a = Math.toRadians(b.rotationDeg());
+                addRectangleFaces(faces, (b.min().x() + b.max().x()) / 2, (b.min().y() + b.max().y()) / 2,
+                        Math.cos(a), Math.sin(a), (b.max().x() - b.min().x()) / 2, (b.max().y() - b.min().y()) / 2,
+                        ballRadius, b.restitution(), true);
+            }
+        }
+        return faces;
+    }
+
+    /** A rectangle centred at c with half sizes hu along u and hv across: its long sides (and ends). */
+    private static void addRectangleFaces(List<double[]> faces, double cx, double cy, double ux, double uy,
+                                          double hu, double hv, double r, double restitution, boolean ends) {
+        double vx = -uy, vy = ux;
+        for (int s : new int[] {1, -1}) {
+            double ox = cx + s * (hv + r) * vx, oy = cy + s * (hv + r) * vy;
+            faces.add(new double[] {ox - hu * ux, oy - hu * uy, ox + hu * ux, oy + hu * uy, s * vx, s * vy, restitution});
+            if (ends) {
+                double ex = cx + s * (hu + r) * ux, ey = cy + s * (hu + r) * uy;
+                faces.add(new double[] {ex - hv * vx, ey - hv * vy, ex + hv * vx, ey + hv * vy, s * ux, s * uy, restitution});
+            }
+        }
+    }
+
     /** The search for one stroke from one ball position. */
     private static final class Stroke {
         final CountingSimulator sim;
@@ -129,6 +207,8 @@ public final class PlannerBot extends SearchBot {
         final CourseMaps maps;
         /** Every probe from this ball position that came to rest: lay-ups the plan does not know. */
         final List<Eval> restingProbes = new ArrayList<>();
+        /** Rest points the two-stroke look-ahead has started from. */
+        final List<double[]> triedLayups = new ArrayList<>();
 
         Stroke(CountingSimulator sim, CountingSimulator probe, CourseMaps maps, double px, double py,
                java.util.function.Supplier<StrokePlan> plan) {
@@ -164,6 +244,9 @@ public final class PlannerBot extends SearchBot {
             Shot direct = guess(Math.atan2(holeY - py, holeX - px), Math.hypot(holeX - px, holeY - py));
             Attempt first = solveHole(direct, null);
             if (first.holed) return first.shot;
+            sim.phase("bank");
+            Shot bank = bankShot();
+            if (bank != null) return bank;
             sim.phase("sweep");
             List<Candidate> candidates = new ArrayList<>();
             List<double[]> promising = new ArrayList<>();
@@ -332,28 +415,66 @@ public final class PlannerBot extends SearchBot {
         }
 
         /**
-         * No hole-in-one: the probes of the hole-in-one search already rest in many places,
-         * some of them (over a hill, round a pool) where the straight-putt plan sees no one-putt.
-         * The nearest the hole on the distance field, well clear of water and a little of
-         * obstacles, each at least TWO_STROKE_SPACING from the others, are tried in turn: the
-         * probe's shot is played if the next stroke from its rest point holes out.
+         * No hole-in-one: two strokes if the hole can be reached that way. First the probes of the
+         * hole-in-one search, which already rest in many places (over a hill, round a pool) where
+         * the straight-putt plan sees no one-putt; then, if none of them does, a lay-up sweep over
+         * directions and several speeds (a lay-up may need a curved shot far off the hole's line at
+         * a speed the one-speed sweep never probes). Rest points are ranked by a cheap test, and
+         * the best few, at least TWO_STROKE_SPACING apart, get the look-ahead: the shot is played
+         * if the next stroke from its rest point holes out.
          */
         Shot twoStrokes() {
-            List<Eval> options = new ArrayList<>();
-            for (Eval e : restingProbes) {
+            return tryLayups(triedLayups, TWO_STROKE_TRIES, false);
+        }
+
+        /** The second half of {@link #twoStrokes}: the lay-up sweep, then the look-ahead from its best rest points. */
+        Shot layupSweep() {
+            sim.phase("lay-up sweep");
+            double holeAngle = Math.atan2(holeY - py, holeX - px);
+            double longest = Math.min(0.99 * maxRoll(), 1.1 * pathLength);
+            for (int k = 0; k * LAYUP_STEP <= Math.PI + 1e-9; k++) {
+                for (int sign : new int[] {1, -1}) {
+                    if ((k == 0 || k * LAYUP_STEP >= Math.PI - 1e-9) && sign < 0) continue;
+                    double angle = holeAngle + sign * k * LAYUP_STEP;
+                    for (double fraction : LAYUP_LENGTHS) {
+                        Shot s = guessLength(angle, fraction * longest);
+                        if (evaluate(s, holeX, holeY).holed) return s;
+                    }
+                }
+            }
+            sim.phase("two strokes");
+            return tryLayups(triedLayups, LAYUP_TRIES, true);
+        }
+
+        /**
+         * Look-ahead from up to {@code tries} resting probes not near one already tried: those
+         * from which a straight putt sees the hole clear of water within reach first (the cheap
+         * "can I hole from here" test), each group nearest the hole on the distance field first.
+         */
+        Shot tryLayups(List<double[]> tried, int tries, boolean puttOnly) {
+            StrokePlan p = plan.get();
+            List<double[]> options = new ArrayList<>();
+            for (int i = 0; i < restingProbes.size(); i++) {
+                Eval e = restingProbes.get(i);
+                double d = field.at(e.restX, e.restY);
                 if (grid.hazardClearance(e.restX, e.restY) < StrokePlan.REST_CLEARANCE
                         || grid.clearance(e.restX, e.restY) < StrokePlan.REST_OBSTACLE_CLEARANCE
-                        || !Double.isFinite(field.at(e.restX, e.restY))) continue;
-                options.add(e);
+                        || !Double.isFinite(d)) continue;
+                boolean putt = p.putt(e.restX, e.restY, holeX, holeY);
+                if (puttOnly && !putt) continue;
+                double rank = putt ? d : 1e4 + d;
+                options.add(new double[] {rank, i});
             }
-            options.sort((a, b) -> Double.compare(field.at(a.restX, a.restY), field.at(b.restX, b.restY)));
-            List<Eval> chosen = new ArrayList<>();
-            for (Eval e : options) {
-                if (chosen.size() == TWO_STROKE_TRIES) break;
+            options.sort((a, b) -> Double.compare(a[0], b[0]));
+            int attempts = 0;
+            for (double[] o : options) {
+                if (attempts == tries) break;
+                Eval e = restingProbes.get((int) o[1]);
                 boolean near = false;
-                for (Eval c : chosen) near |= Math.hypot(c.restX - e.restX, c.restY - e.restY) < TWO_STROKE_SPACING;
+                for (double[] t : tried) near |= Math.hypot(t[0] - e.restX, t[1] - e.restY) < TWO_STROKE_SPACING;
                 if (near) continue;
-                chosen.add(e);
+                tried.add(new double[] {e.restX, e.restY});
+                attempts++;
                 Stroke next = new Stroke(sim, probe, maps, e.restX, e.restY, plan);
                 double hx = holeX - next.px, hy = holeY - next.py;
                 if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) return e.shot;
@@ -365,9 +486,13 @@ public final class PlannerBot extends SearchBot {
          * No hole-in-one: rest on the shortest path. The strokes still needed are split evenly, and
          * the aim is the farthest point of the path that a straight putt sees clear of water.
          */
-        Shot layup(double reach) {
-            Shot planned = plannedLayup();
-            if (planned != null) return planned;
+        Shot layup(double reach, Planned known) {
+            Planned planned = known != null ? known : plannedLayup();
+            if (planned == null || planned.strokesLeft() >= SWEEP_STROKES_LEFT) {
+                Shot further = planSweep(planned == null ? 0 : planned.strokesLeft());
+                if (further != null) return further;
+            }
+            if (planned != null) return planned.shot();
             if (path.isEmpty()) return progressSweep();
             int strokesLeft = Math.max(2, (int) Math.ceil(pathLength / (0.99 * reach)));
             double along = Math.min(pathLength / strokesLeft, 0.99 * reach);
@@ -386,7 +511,7 @@ public final class PlannerBot extends SearchBot {
          * The lay-up the stroke plan suggests: of the cells a straight putt from the ball reaches,
          * those with the fewest strokes left, nearest the hole and clearest of water first.
          */
-        Shot plannedLayup() {
+        Planned plannedLayup() {
             sim.phase("plan");
             StrokePlan p = plan.get();
             List<int[]> options = new ArrayList<>();
@@ -412,15 +537,89 @@ public final class PlannerBot extends SearchBot {
                 Shot start = guessTo(Math.atan2(ty - py, tx - px), distance, tx, ty);
                 Attempt a = broydenTo(start, null, tx, ty, 10, 0.5 * StrokePlan.REST_CLEARANCE, false);
                 if (!a.converged) continue;
-                if (fewest > 1) return a.shot;
+                if (fewest > 1) return new Planned(a.shot, false, fewest);
                 // Look ahead: keep the lay-up from which the next stroke really holes out
                 // (the straight-putt plan does not know how the hills bend the ball).
                 if (firstConverged == null) firstConverged = a.shot;
+                triedLayups.add(new double[] {a.last.restX, a.last.restY});
                 Stroke next = new Stroke(sim, probe, maps, a.last.restX, a.last.restY, plan);
                 double hx = holeX - next.px, hy = holeY - next.py;
-                if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) return a.shot;
+                if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) {
+                    return new Planned(a.shot, true, fewest);
+                }
             }
-            return firstConverged;
+            return firstConverged == null ? null : new Planned(firstConverged, false, fewest);
+        }
+
+        /**
+         * The plan knows straight putts only, so far from the hole its lay-ups follow the corridors
+         * one straight leg at a time, while a shot that banks off walls or curves over hills may
+         * get much further. A sweep of directions all round at several speeds (fractions of the
+         * maximum); of its rest points (and every other resting probe of this stroke) well clear
+         * of water and a little of obstacles, the nearest the hole on the distance field is played;
+         * when the plan's lay-up leaves {@code planLeft} >= BEAM_LEFT strokes, the one of the best
+         * few whose own sweep rests nearest the hole. Shots resting near the hole start Broyden.
+         */
+        Shot planSweep(int planLeft) {
+            Shot holed = sweepAllRound();
+            if (holed != null) return holed;
+            List<Eval> ranked = safeRests();
+            if (ranked.isEmpty()) return null;
+            if (planLeft < BEAM_LEFT) return ranked.get(0).shot;
+            // Look one stroke further: from the best few rest points (at least BEAM_SPACING apart)
+            // a sweep of their own; play the one whose best follow-up rests nearest the hole.
+            sim.phase("plan look-ahead");
+            List<Eval> tried = new ArrayList<>();
+            Eval best = ranked.get(0);
+            double bestNext = Double.POSITIVE_INFINITY;
+            for (Eval e : ranked) {
+                if (tried.size() == BEAM) break;
+                boolean near = false;
+                for (Eval t : tried) near |= Math.hypot(t.restX - e.restX, t.restY - e.restY) < BEAM_SPACING;
+                if (near) continue;
+                tried.add(e);
+                Stroke next = new Stroke(sim, probe, maps, e.restX, e.restY, plan);
+                if (next.sweepAllRound() != null) return e.shot;
+                List<Eval> after = next.safeRests();
+                double d = after.isEmpty() ? Double.POSITIVE_INFINITY : field.at(after.get(0).restX, after.get(0).restY);
+                if (d < bestNext) {
+                    bestNext = d;
+                    best = e;
+                }
+            }
+            return best.shot;
+        }
+
+        /** The resting probes of this stroke well clear of water and a little of obstacles, nearest the hole first. */
+        List<Eval> safeRests() {
+            List<Eval> safe = new ArrayList<>();
+            for (Eval e : restingProbes) {
+                if (grid.hazardClearance(e.restX, e.restY) < StrokePlan.REST_CLEARANCE
+                        || grid.clearance(e.restX, e.restY) < StrokePlan.REST_OBSTACLE_CLEARANCE
+                        || !Double.isFinite(field.at(e.restX, e.restY))) continue;
+                safe.add(e);
+            }
+            safe.sort((a, b) -> Double.compare(field.at(a.restX, a.restY), field.at(b.restX, b.restY)));
+            return safe;
+        }
+
+        /** Directions LAYUP_STEP apart all round at the plan sweep's speeds; a shot that holes, or null. */
+        Shot sweepAllRound() {
+            sim.phase("plan sweep");
+            double holeAngle = Math.atan2(holeY - py, holeX - px);
+            for (int k = 0; k * LAYUP_STEP < 2 * Math.PI - 1e-9; k++) {
+                for (double fraction : PLAN_SWEEP_SPEEDS) {
+                    Shot s = sim.limit(Shot.polar(holeAngle + k * LAYUP_STEP, fraction * sim.maxSpeed()));
+                    Eval e = evaluate(s, holeX, holeY);
+                    if (e.holed) return s;
+                    // A shot (banked, curved) resting near the hole: Broyden may hole it.
+                    if (!e.penalty && field.at(e.restX, e.restY) < SWEEP_REFINE) {
+                        Attempt a = solveHole(s, e);
+                        if (a.holed) return a.shot;
+                    }
+                }
+            }
+            return null;
         }
 
         double layupCost(StrokePlan p, int i) {
@@ -510,9 +709,16 @@ public final class PlannerBot extends SearchBot {
          * is kept and returned once the miss is within {@code tol}.
          */
         Attempt broydenTo(Shot start, Eval known, double tx, double ty, int maxIterations, double tol, boolean holeMode) {
+            return broydenTo(start, known, tx, ty, maxIterations, tol, holeMode, null);
+        }
+
+        /** As above, from the Jacobian {@code mirror} reflects (null: none) instead of flat ground's. */
+        Attempt broydenTo(Shot start, Eval known, double tx, double ty, int maxIterations, double tol, boolean holeMode,
+                          double[] mirror) {
             Eval e = known != null ? known : evaluate(sim.limit(start), tx, ty);
             if (e.penalty) return Attempt.failed(e.shot);
             double[] j = flatJacobian(e);
+            if (mirror != null) j = reflected(j, mirror[0], mirror[1]);
             Attempt bestHoled = null;
             boolean refreshed = false;
             for (int iteration = 0; iteration < maxIterations; iteration++) {
@@ -571,6 +777,77 @@ public final class PlannerBot extends SearchBot {
             }
             if (bestHoled != null) return bestHoled;
             return Attempt.failed(e.shot);
+        }
+
+        /**
+         * Bank shots off the straight faces of walls and boxes: the hole mirrored in a face (moved
+         * out by the ball's radius) gives the direction, the bank point must lie on the face with
+         * both legs clear of obstacles, and the speed comes from the energy on both legs with the
+         * normal speed scaled by the restitution at the bounce. Broyden starts from there with the
+         * flat Jacobian mirrored in the face (after the bounce a shot turned left ends up right).
+         * The shortest few bank lines are tried.
+         */
+        Shot bankShot() {
+            List<double[]> lines = new ArrayList<>();
+            double mu = Math.max(world.friction().kinetic(px, py), 1e-3);
+            for (double[] f : bankFaces(world)) {
+                double nx = f[4], ny = f[5];
+                double ball = (px - f[0]) * nx + (py - f[1]) * ny, hole = (holeX - f[0]) * nx + (holeY - f[1]) * ny;
+                if (ball <= 0.05 || hole <= 0.05) continue;
+                // The mirrored hole, and where the line to it meets the face.
+                double mx = holeX - 2 * hole * nx, my = holeY - 2 * hole * ny;
+                double t = ball / (ball + hole);
+                double bx = px + t * (mx - px), by = py + t * (my - py);
+                double fx = f[2] - f[0], fy = f[3] - f[1], faceLength = Math.hypot(fx, fy);
+                double along = ((bx - f[0]) * fx + (by - f[1]) * fy) / faceLength;
+                if (along < 0.05 || along > faceLength - 0.05) continue;
+                double l1 = Math.hypot(bx - px, by - py), l2 = Math.hypot(holeX - bx, holeY - by);
+                // Both legs clear of obstacles up to a little before the bounce (water is Broyden's business).
+                double back = Math.min(0.15, 0.5 * Math.min(l1, l2));
+                double ax = bx + back * nx, ay = by + back * ny;
+                if (!grid.clearLine(px, py, ax, ay, 0, 0) || !grid.clearLine(ax, ay, holeX, holeY, 0, 0)) continue;
+                double sinIn = ball / Math.max(Math.hypot(bx - px, by - py), 1e-9);
+                double kept = (1 - sinIn * sinIn) + f[6] * f[6] * sinIn * sinIn;
+                double hb = world.terrain().height(bx, by);
+                double after = 2 * gravity * (mu * l2 + world.terrain().height(holeX, holeY) - hb);
+                double v2 = Math.max(after, 0.01) / Math.max(kept, 0.05) + 2 * gravity * (mu * l1 + hb - world.terrain().height(px, py));
+                if (v2 <= 0 || Math.sqrt(v2) > 1.05 * sim.maxSpeed()) continue;
+                lines.add(new double[] {l1 + l2, Math.atan2(my - py, mx - px), Math.sqrt(v2), nx, ny});
+            }
+            lines.sort((a, b) -> Double.compare(a[0], b[0]));
+            for (int i = 0; i < Math.min(BANK_TRIES, lines.size()); i++) {
+                double[] l = lines.get(i);
+                double[] mirror = {l[3], l[4]};
+                // The hills bend the legs, so the geometric line may end in water: a small fan of
+                // directions around it, outward from the line; a bank shot resting near the hole starts Broyden.
+                int starts = 0;
+                for (int k = 0; k <= BANK_FAN && starts < 2; k++) {
+                    for (int sign : new int[] {1, -1}) {
+                        if (k == 0 && sign < 0) continue;
+                        Shot shot = sim.limit(Shot.polar(l[1] + sign * k * BANK_FAN_STEP, l[2]));
+                        Eval e = evaluate(shot, holeX, holeY);
+                        if (e.holed) return shot;
+                        if (e.penalty || !e.collided) continue;
+                        double d = field.at(e.restX, e.restY);
+                        if (!(d < Math.max(1.0, 0.25 * l[0]))) continue;
+                        starts++;
+                        Attempt a = capture ? solveHole(shot, e)
+                                : broydenTo(shot, e, holeX, holeY, 12, tolerance, true, mirror);
+                        if (a.holed) return a.shot;
+                        break;
+                    }
+                }
+            }
+            return null;
+        }
+
+        /** J mirrored in the line with unit normal n: (I - 2 n n^T) J. */
+        static double[] reflected(double[] j, double nx, double ny) {
+            double r00 = 1 - 2 * nx * nx, r01 = -2 * nx * ny, r11 = 1 - 2 * ny * ny;
+            return new double[] {
+                r00 * j[0] + r01 * j[2], r00 * j[1] + r01 * j[3],
+                r01 * j[0] + r11 * j[2], r01 * j[1] + r11 * j[3]
+            };
         }
 
         /** d(rest point)/d(v) on flat ground: 2L/s along the shot, L/s across it. */
@@ -667,6 +944,13 @@ public final class PlannerBot extends SearchBot {
     /** One probe: the shot, its rest point, the miss F and the direction the ball passed the hole in. */
     private record Eval(Shot shot, ShotResult result, boolean penalty, boolean holed, double restX, double restY,
                         double fx, double fy, double dirX, double dirY, boolean collided) {
+    }
+
+    /**
+     * The stroke plan's lay-up; verified when the look-ahead holed out from its rest point;
+     * strokesLeft: the plan's strokes from there.
+     */
+    private record Planned(Shot shot, boolean verified, int strokesLeft) {
     }
 
     private record Candidate(Shot shot, double distance) {
