@@ -357,7 +357,7 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_SCISSOR_TEST);
         glScissor(r[0], r[1], r[2], r[3]);
         frame.ballShadowsInline = true;
-        terrain.render(frame);
+        terrain.renderWithin(frame, region.box());
         obstacles.renderWithin(frame, region.box());
         objects.render(frame);
         frame.ballShadowsInline = false;

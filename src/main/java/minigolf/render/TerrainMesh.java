@@ -41,9 +41,11 @@ public final class TerrainMesh {
     private final int rows;
     private final double minHeight;
     private final double maxHeight;
+    private final int[] rowStarts;
 
-    private TerrainMesh(MeshData data, int columns, int rows, double minHeight, double maxHeight) {
+    private TerrainMesh(MeshData data, int columns, int rows, double minHeight, double maxHeight, int[] rowStarts) {
         this.data = data;
+        this.rowStarts = rowStarts;
         this.columns = columns;
         this.rows = rows;
         this.minHeight = minHeight;
@@ -109,7 +111,9 @@ public final class TerrainMesh {
         int q = 0;
         // Deleted grid cells are holes in the course: their quads are left out.
         TerrainSpec.HeightGrid mask = course.terrain() instanceof TerrainSpec.HeightGrid g && g.deletedCount() > 0 ? g : null;
+        int[] rowStarts = new int[ny + 1];
         for (int j = 0; j < ny; j++) {
+            rowStarts[j] = q;
             for (int i = 0; i < nx; i++) {
                 if (mask != null && mask.isDeletedAt(b.minX() + (i + 0.5) * dx, b.minY() + (j + 0.5) * dy)) continue;
                 int a = j * cols + i, c = a + cols;
@@ -123,6 +127,7 @@ public final class TerrainMesh {
                 }
             }
         }
+        rowStarts[ny] = q;
         // Skirts: for each edge, a strip from the surface down to the base, facing outwards.
         int vertex = cols * rows;
         int[][] edges = {
@@ -148,7 +153,7 @@ public final class TerrainMesh {
             }
         }
         if (q < idx.length) idx = java.util.Arrays.copyOf(idx, q);
-        return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH);
+        return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH, rowStarts);
     }
 
     /** Surface vertices of whole mesh rows, to overwrite a built mesh's vertex buffer from {@code firstFloat}. */
@@ -296,6 +301,15 @@ public final class TerrainMesh {
 
     public int rows() {
         return rows;
+    }
+
+    /**
+     * Where each row of quads starts in the index list: the surface's triangles between grid rows j
+     * and j + 1 are indices {@code rowStarts[j]} to {@code rowStarts[j + 1]}; from {@code rowStarts[rows - 1]}
+     * on come the skirts. A copy.
+     */
+    public int[] rowStarts() {
+        return rowStarts.clone();
     }
 
     public double minHeight() {

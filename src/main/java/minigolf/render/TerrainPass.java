@@ -12,6 +12,8 @@ public final class TerrainPass implements RenderPass {
     private Mesh mesh;
     private double minHeight, maxHeight;
     private int vertexCount;
+    private int[] rowStarts;
+    private int indexCount;
     private final double minSpacing;
     /** The water reflection's coarser mesh (software quality: a small mirrored image needs few triangles), or null: {@link #mesh}. */
     private Mesh targetMesh;
@@ -52,6 +54,8 @@ public final class TerrainPass implements RenderPass {
         if (mesh != null) mesh.close();
         mesh = uploaded;
         vertexCount = built.data().vertices().length / built.data().stride();
+        rowStarts = built.rowStarts();
+        indexCount = built.data().indices().length;
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
         mode = newMode;
@@ -140,6 +144,23 @@ public final class TerrainPass implements RenderPass {
         draw(frame, mesh);
     }
 
+    /**
+     * Only the rows of quads that meet y in [box[1], box[4]] (the box: min x, y, z, max x, y, z), and
+     * the skirts if the box reaches past the course's edge: the second draw round the balls' shadows.
+     */
+    void renderWithin(FrameContext frame, float[] box) {
+        var b = course.bounds();
+        int quadRows = rowStarts.length - 1;
+        double dy = b.depth() / quadRows;
+        int j0 = (int) Math.max(0, Math.floor((box[1] - b.minY()) / dy));
+        int j1 = (int) Math.min(quadRows, Math.ceil((box[4] - b.minY()) / dy));
+        boolean edge = box[0] <= b.minX() || box[3] >= b.maxX() || box[1] <= b.minY() || box[4] >= b.maxY();
+        if (j1 <= j0 && !edge) return;
+        use(frame);
+        if (j1 > j0) mesh.drawRange(rowStarts[j0], rowStarts[j1] - rowStarts[j0]);
+        if (edge) mesh.drawRange(rowStarts[quadRows], indexCount - rowStarts[quadRows]);
+    }
+
     /** Draws into the water's reflection image, from the coarser mesh where there is one. */
     void renderForWaterTarget(FrameContext frame) {
         if (targetMeshStale) rebuildTargetMesh();
@@ -152,12 +173,17 @@ public final class TerrainPass implements RenderPass {
     }
 
     private void draw(FrameContext frame, Mesh drawn) {
+        use(frame);
+        drawn.draw();
+    }
+
+    private ShaderProgram use(FrameContext frame) {
         ShaderProgram program = shader.use(frame);
         program.set("uViewProjection", frame.viewProjection);
         program.set("uClipPlane", frame.clipPlane);
         program.set("uShininess", 24f);
         program.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
-        drawn.draw();
+        return program;
     }
 
     @Override

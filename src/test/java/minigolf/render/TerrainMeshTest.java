@@ -137,4 +137,28 @@ class TerrainMeshTest {
                 -0.04, 0.36, c.bounds(), out);
         return out;
     }
+
+    @Test
+    void rowStartsSplitTheSurfaceIntoRowsOfQuadsBeforeTheSkirts() {
+        Course course = TestCourses.lake();
+        TerrainMesh m = TerrainMesh.build(course, TestCourses.LAKE, TerrainMesh.ColorMode.GREEN, 0.1);
+        int[] starts = m.rowStarts();
+        int quadRows = m.rows() - 1, quadColumns = m.columns() - 1;
+        assertEquals(quadRows + 1, starts.length);
+        assertEquals(0, starts[0]);
+        // No deleted cells: every row is two triangles a quad.
+        for (int j = 0; j < quadRows; j++) assertEquals(6 * quadColumns, starts[j + 1] - starts[j], "row " + j);
+        // Each row's triangles lie between its two grid lines.
+        var b = course.bounds();
+        double dy = b.depth() / quadRows;
+        MeshData d = m.data();
+        for (int j : new int[]{0, quadRows / 2, quadRows - 1}) {
+            for (int k = starts[j]; k < starts[j + 1]; k++) {
+                double y = d.get(d.indices()[k], 0, 1);
+                assertTrue(y >= b.minY() + j * dy - 1e-4 && y <= b.minY() + (j + 1) * dy + 1e-4, "row " + j + " has y " + y);
+            }
+        }
+        // The skirts come after the surface.
+        assertTrue(d.indices().length > starts[quadRows]);
+    }
 }
