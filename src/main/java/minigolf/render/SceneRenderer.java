@@ -416,8 +416,11 @@ public final class SceneRenderer implements AutoCloseable {
         refractionFrame.copyOf(frame, w, h);
         refractionFrame.shadowsOn = shadows && shadowsInWater;
         refractionFrame.clipPlane.set(0, 0, -1, 0.01f);
-        terrain.render(refractionFrame); // the full mesh: the lake bed's edge shows through the shallows
-        obstacles.render(refractionFrame);
+        // The full mesh (the lake bed's edge shows through the shallows), but only the rows and the
+        // obstacles that reach under the water: nothing else survives the clip plane.
+        float[] under = water.underwaterBox(0.2f, 0.02f);
+        terrain.renderWithin(refractionFrame, under);
+        obstacles.renderWithin(refractionFrame, under);
         objects.render(refractionFrame);
         timer.mark("refractionTarget");
 

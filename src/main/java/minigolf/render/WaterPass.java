@@ -104,6 +104,16 @@ public final class WaterPass implements RenderPass {
     }
 
     /**
+     * The box round everything under the water plane, min x, y, z, max x, y, z: the wet quads' x-y
+     * box widened by {@code margin} metres, from far below up to {@code top}. Null without water.
+     */
+    float[] underwaterBox(float margin, float top) {
+        if (wetBox == null) return null;
+        return new float[]{wetBox[0] - margin, wetBox[1] - margin, Float.NEGATIVE_INFINITY,
+                wetBox[2] + margin, wetBox[3] + margin, top};
+    }
+
+    /**
      * Where the water can show in a width x height image seen through {@code viewProjection}: {x, y,
      * width, height} in pixels from the bottom left, widened by {@code margin} of the image's size each
      * way (the ripples shift what the water samples) and clipped to the image; the whole image when a
