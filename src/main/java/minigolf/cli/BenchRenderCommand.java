@@ -91,6 +91,9 @@ final class BenchRenderCommand implements Callable<Integer> {
                 renderer.passTimer().millisPerFrame(frames).forEach(passes::put);
                 out.put("terrainVertices", renderer.terrainPass().vertexCount());
                 out.put("waterTargetTerrainVertices", renderer.terrainPass().targetVertexCount());
+                // Of the terrain's indices, those drawn without the shadow tap (-1: every cell keeps it).
+                out.put("sunlitTerrainIndices", renderer.terrainPass().sunlitIndexCount());
+                out.put("terrainIndices", renderer.terrainPass().indexCount());
             }
             out.put("frames", frames);
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);

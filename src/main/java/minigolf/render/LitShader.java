@@ -30,7 +30,11 @@ final class LitShader implements AutoCloseable {
 
     /** Binds the frame's variant and sets the sun, eye and shadow uniforms; the pass sets the rest. */
     ShaderProgram use(FrameContext frame) {
-        Variant v = Variant.of(frame);
+        return use(frame, Variant.of(frame));
+    }
+
+    /** As above with a chosen variant (UNSHADOWED for ground the sun's map cannot darken, see SunlitCells). */
+    ShaderProgram use(FrameContext frame, Variant v) {
         ShaderProgram program = use(v, frame.shadowMap == null ? 4 : frame.shadowMap.taps());
         Lighting.apply(program, frame, v);
         return program;

@@ -49,6 +49,14 @@ public final class SceneRenderer implements AutoCloseable {
     private final boolean shadowsInWater;
     /** Whether the balls' shadows are shaded in a second, scissored draw (software rasterisers). */
     private final boolean ballShadowRedraw;
+    /** Whether the terrain's sunlit cells skip the shadow tap (software rasterisers). */
+    private final boolean sunlitTerrain;
+    /**
+     * Frames to wait, after the terrain last changed, before its sunlit cells are searched again (a
+     * brush stroke changes it every frame; meanwhile every cell keeps the tap); -1 when up to date.
+     */
+    private int sunlitCountdown = 0;
+    static final int SUNLIT_SETTLE_FRAMES = 30;
     /** The shadow map holds only what stands still, so it is drawn again only after a change. */
     private boolean shadowMapDirty = true;
     /** The minimap's still part, drawn again only after a change. */
@@ -70,6 +78,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.shadowsInWater = quality.shadowsInWater();
         this.shadowTaps = quality.shadowTaps();
         this.ballShadowRedraw = quality.ballShadowRedraw();
+        this.sunlitTerrain = quality.sunlitTerrain();
         SkyPass s = null;
         TerrainPass t = null;
         ObstaclesPass ob = null;
@@ -147,6 +156,8 @@ public final class SceneRenderer implements AutoCloseable {
         refitShadowMap();
         shadowMapDirty = true;
         minimapDirty = true;
+        terrain.setShadowedCells(null);
+        sunlitCountdown = SUNLIT_SETTLE_FRAMES;
     }
 
     /**
@@ -157,6 +168,8 @@ public final class SceneRenderer implements AutoCloseable {
     public void terrainChanged() {
         shadowMapDirty = true;
         minimapDirty = true;
+        terrain.setShadowedCells(null);
+        sunlitCountdown = SUNLIT_SETTLE_FRAMES;
     }
 
     /** The course file's folder, where model obstacles' .mtl files are looked for first (then the classpath). */
@@ -313,6 +326,11 @@ public final class SceneRenderer implements AutoCloseable {
             renderShadowMap();
             shadowMapDirty = false;
             glBindFramebuffer(GL_FRAMEBUFFER, target);
+        }
+        // Rebuilt meshes (another colouring, say) lose their cells: search them again.
+        if (sunlitCountdown < 0 && terrain.sunlitIndexCount() < 0) sunlitCountdown = 0;
+        if (sunlitTerrain && shadows && sunlitCountdown >= 0 && sunlitCountdown-- == 0) {
+            terrain.setShadowedCells(shadowMap);
         }
         timer.mark("shadowMap");
         boolean targets = water.hasWater() && waterReflections;

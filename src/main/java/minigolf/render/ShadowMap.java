@@ -89,6 +89,27 @@ public final class ShadowMap implements AutoCloseable {
         return lightViewProjection;
     }
 
+    /** The depth bias receivers subtract (2 mm, in the map's depth units). */
+    public float bias() {
+        return 0.002f / depthRange;
+    }
+
+    /** The map's depths (0 nearest the sun to 1), row by row from the bottom: size x size floats. */
+    public float[] readDepth() {
+        java.nio.FloatBuffer buffer = org.lwjgl.system.MemoryUtil.memAllocFloat(size * size);
+        try {
+            glBindTexture(GL_TEXTURE_2D, depth);
+            glPixelStorei(GL_PACK_ALIGNMENT, 4);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, buffer);
+            glBindTexture(GL_TEXTURE_2D, 0);
+            float[] out = new float[size * size];
+            buffer.get(out);
+            return out;
+        } finally {
+            org.lwjgl.system.MemoryUtil.memFree(buffer);
+        }
+    }
+
     /** Depth-compare taps per receiver pixel: 4 (3x3-texel footprint, default) or 1 (2x2). */
     public int taps() {
         return taps;
@@ -132,7 +153,7 @@ public final class ShadowMap implements AutoCloseable {
         shader.set("uShadowTexel", 1f / size);
         shader.set("uShadowNormalOffset", 1.5f * texelMetres);
         // About two millimetres in depth units ([0, 1] over the light's depth range).
-        shader.set("uShadowBias", 0.002f / depthRange);
+        shader.set("uShadowBias", bias());
     }
 
     @Override

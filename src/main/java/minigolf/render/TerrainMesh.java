@@ -41,11 +41,11 @@ public final class TerrainMesh {
     private final int rows;
     private final double minHeight;
     private final double maxHeight;
-    private final int[] rowStarts;
+    private final int[] cellStarts;
 
-    private TerrainMesh(MeshData data, int columns, int rows, double minHeight, double maxHeight, int[] rowStarts) {
+    private TerrainMesh(MeshData data, int columns, int rows, double minHeight, double maxHeight, int[] cellStarts) {
         this.data = data;
-        this.rowStarts = rowStarts;
+        this.cellStarts = cellStarts;
         this.columns = columns;
         this.rows = rows;
         this.minHeight = minHeight;
@@ -111,10 +111,10 @@ public final class TerrainMesh {
         int q = 0;
         // Deleted grid cells are holes in the course: their quads are left out.
         TerrainSpec.HeightGrid mask = course.terrain() instanceof TerrainSpec.HeightGrid g && g.deletedCount() > 0 ? g : null;
-        int[] rowStarts = new int[ny + 1];
+        int[] cellStarts = new int[nx * ny + 1];
         for (int j = 0; j < ny; j++) {
-            rowStarts[j] = q;
             for (int i = 0; i < nx; i++) {
+                cellStarts[j * nx + i] = q;
                 if (mask != null && mask.isDeletedAt(b.minX() + (i + 0.5) * dx, b.minY() + (j + 0.5) * dy)) continue;
                 int a = j * cols + i, c = a + cols;
                 // Split each quad along the diagonal that better follows the surface.
@@ -127,7 +127,7 @@ public final class TerrainMesh {
                 }
             }
         }
-        rowStarts[ny] = q;
+        cellStarts[nx * ny] = q;
         // Skirts: for each edge, a strip from the surface down to the base, facing outwards.
         int vertex = cols * rows;
         int[][] edges = {
@@ -153,7 +153,7 @@ public final class TerrainMesh {
             }
         }
         if (q < idx.length) idx = java.util.Arrays.copyOf(idx, q);
-        return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH, rowStarts);
+        return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH, cellStarts);
     }
 
     /** Surface vertices of whole mesh rows, to overwrite a built mesh's vertex buffer from {@code firstFloat}. */
@@ -309,7 +309,18 @@ public final class TerrainMesh {
      * on come the skirts. A copy.
      */
     public int[] rowStarts() {
-        return rowStarts.clone();
+        int nx = columns - 1, ny = rows - 1;
+        int[] starts = new int[ny + 1];
+        for (int j = 0; j <= ny; j++) starts[j] = cellStarts[j * nx];
+        return starts;
+    }
+
+    /**
+     * Where each quad's triangles start in the index list, row-major (quad (i, j) is entry
+     * j * (columns - 1) + i; a deleted quad has none), and one entry more where the skirts start. A copy.
+     */
+    public int[] cellStarts() {
+        return cellStarts.clone();
     }
 
     public double minHeight() {

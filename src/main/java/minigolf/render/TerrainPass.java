@@ -13,7 +13,13 @@ public final class TerrainPass implements RenderPass {
     private double minHeight, maxHeight;
     private int vertexCount;
     private int[] rowStarts;
+    private int[] cellStarts;
     private int indexCount;
+    private int columns, rows;
+    /** The main mesh's vertices as uploaded (patches included): what the sunlit cells are found from. */
+    private float[] vertices;
+    /** Runs of cells (see SunlitCells.runs) as index ranges {first, count}: shadowed and sunlit; null: all shadowed. */
+    private int[][] shadowedRanges, sunlitRanges;
     private final double minSpacing;
     /** The water reflection's coarser mesh (software quality: a small mirrored image needs few triangles), or null: {@link #mesh}. */
     private Mesh targetMesh;
@@ -55,7 +61,12 @@ public final class TerrainPass implements RenderPass {
         mesh = uploaded;
         vertexCount = built.data().vertices().length / built.data().stride();
         rowStarts = built.rowStarts();
+        cellStarts = built.cellStarts();
         indexCount = built.data().indices().length;
+        columns = built.columns();
+        rows = built.rows();
+        vertices = built.data().vertices();
+        shadowedRanges = sunlitRanges = null;
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
         mode = newMode;
@@ -100,6 +111,7 @@ public final class TerrainPass implements RenderPass {
     public int applyPatch(TerrainMesh.Patch patch) {
         if (patch == null) return 0;
         mesh.updateVertices(patch.firstFloat(), patch.vertices());
+        System.arraycopy(patch.vertices(), 0, vertices, patch.firstFloat(), patch.vertices().length);
         // The water targets' coarse mesh is rebuilt before it is next drawn (updateRegion patches it at once).
         if (targetMesh != null) targetMeshStale = true;
         return patch.vertices().length;
@@ -117,6 +129,40 @@ public final class TerrainPass implements RenderPass {
     /** The terrain the mesh was last built or patched from. */
     public Terrain terrain() {
         return terrain;
+    }
+
+    /**
+     * Which cells the sun's shadow map can darken ({@link SunlitCells}), from its depths: the others
+     * are drawn without the shadow tap. Null (also after any rebuild) draws every cell with it.
+     */
+    public void setShadowedCells(ShadowMap map) {
+        if (map == null) {
+            shadowedRanges = sunlitRanges = null;
+            return;
+        }
+        boolean[] mask = SunlitCells.shadowed(map.readDepth(), map.size(), map.lightViewProjection(), map.bias(),
+                vertices, 9, columns, rows); // PNC: 9 floats a vertex
+        int[] runs = SunlitCells.runs(mask, 8);
+        java.util.List<int[]> shadowed = new java.util.ArrayList<>(), sunlit = new java.util.ArrayList<>();
+        for (int k = 0; k + 1 < runs.length; k++) {
+            int first = cellStarts[runs[k]], end = cellStarts[runs[k + 1]];
+            if (end > first) (k % 2 == 0 ? shadowed : sunlit).add(new int[]{first, end - first});
+        }
+        shadowedRanges = shadowed.toArray(new int[0][]);
+        sunlitRanges = sunlit.toArray(new int[0][]);
+    }
+
+    /** Indices in the main mesh (surface and skirts). */
+    public int indexCount() {
+        return indexCount;
+    }
+
+    /** Cells drawn without the shadow tap, or -1 when none is known to be sunlit. */
+    public int sunlitIndexCount() {
+        if (sunlitRanges == null) return -1;
+        int n = 0;
+        for (int[] r : sunlitRanges) n += r[1];
+        return n;
     }
 
     /** Vertices in the drawn mesh (surface and skirts). */
@@ -141,7 +187,18 @@ public final class TerrainPass implements RenderPass {
 
     @Override
     public void render(FrameContext frame) {
-        draw(frame, mesh);
+        if (shadowedRanges == null || LitShader.Variant.of(frame) == LitShader.Variant.UNSHADOWED) {
+            draw(frame, mesh);
+            return;
+        }
+        use(frame);
+        for (int[] r : shadowedRanges) mesh.drawRange(r[0], r[1]);
+        use(frame, LitShader.Variant.UNSHADOWED);
+        for (int[] r : sunlitRanges) mesh.drawRange(r[0], r[1]);
+        // The skirts last, as in the single draw (where they meet the surface's edge at equal depth, the later wins).
+        use(frame);
+        int skirts = cellStarts[cellStarts.length - 1];
+        mesh.drawRange(skirts, indexCount - skirts);
     }
 
     /**
@@ -178,7 +235,11 @@ public final class TerrainPass implements RenderPass {
     }
 
     private ShaderProgram use(FrameContext frame) {
-        ShaderProgram program = shader.use(frame);
+        return use(frame, LitShader.Variant.of(frame));
+    }
+
+    private ShaderProgram use(FrameContext frame, LitShader.Variant variant) {
+        ShaderProgram program = shader.use(frame, variant);
         program.set("uViewProjection", frame.viewProjection);
         program.set("uClipPlane", frame.clipPlane);
         program.set("uShininess", 24f);
