@@ -168,11 +168,56 @@ public final class ObstacleMeshes {
             pieces.add(new Piece(start, end - start, box));
         }
 
+        /**
+         * The triangles as written (index k is the k-th vertex written, so pieces keep their index
+         * runs), with equal vertices (position, normal, colour) stored once: a smooth model or a
+         * trunk shares most of its corners, and llvmpipe shades a shared vertex once per draw.
+         */
         MeshData build() {
-            float[] vertices = java.util.Arrays.copyOf(v, floats);
-            int[] indices = new int[floats / 9];
-            for (int i = 0; i < indices.length; i++) indices[i] = i;
-            return new MeshData(MeshData.PNC, vertices, indices);
+            int n = floats / 9;
+            int[] indices = new int[n];
+            float[] unique = new float[floats];
+            java.util.Map<VertexKey, Integer> seen = new java.util.HashMap<>(2 * n);
+            int count = 0;
+            for (int i = 0; i < n; i++) {
+                VertexKey key = new VertexKey(v, 9 * i);
+                Integer at = seen.putIfAbsent(key, count);
+                if (at == null) {
+                    System.arraycopy(v, 9 * i, unique, 9 * count, 9);
+                    at = count++;
+                }
+                indices[i] = at;
+            }
+            return new MeshData(MeshData.PNC, java.util.Arrays.copyOf(unique, 9 * count), indices);
+        }
+    }
+
+    /** The 9 floats of one written vertex, compared bit for bit. */
+    private static final class VertexKey {
+        private final float[] data;
+        private final int offset;
+        private final int hash;
+
+        VertexKey(float[] data, int offset) {
+            this.data = data;
+            this.offset = offset;
+            int h = 1;
+            for (int k = 0; k < 9; k++) h = 31 * h + Float.floatToIntBits(data[offset + k]);
+            hash = h;
+        }
+
+        @Override
+        public int hashCode() {
+            return hash;
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            if (!(o instanceof VertexKey other)) return false;
+            for (int k = 0; k < 9; k++) {
+                if (Float.floatToIntBits(data[offset + k]) != Float.floatToIntBits(other.data[other.offset + k])) return false;
+            }
+            return true;
         }
     }
 }

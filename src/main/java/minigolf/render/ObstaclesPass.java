@@ -113,6 +113,59 @@ public final class ObstaclesPass implements RenderPass {
     }
 
     /**
+     * Only the obstacles whose boxes, seen through the frame's camera, reach into {@code rect} ({x, y,
+     * width, height} in the frame's viewport pixels from the bottom left): the viewport itself for the
+     * scene (obstacles behind the eye or beside the view are skipped), the water's rectangle for its
+     * reflection. Neighbouring visible obstacles are drawn as one run.
+     */
+    void renderInRect(FrameContext frame, int[] rect) {
+        if (solid == null && decoration == null) return;
+        begin(frame);
+        org.joml.Vector4f corner = new org.joml.Vector4f();
+        if (solid != null) {
+            program.set("uSpecularStrength", 0.12f);
+            program.set("uShininess", 16f);
+            drawVisible(solid, solidPieces, frame, rect, corner);
+        }
+        if (decoration != null) {
+            program.set("uSpecularStrength", 0.05f);
+            program.set("uShininess", 8f);
+            drawVisible(decoration, decorationPieces, frame, rect, corner);
+        }
+    }
+
+    private static void drawVisible(Mesh mesh, List<ObstacleMeshes.Piece> pieces, FrameContext frame, int[] rect,
+                                    org.joml.Vector4f corner) {
+        int runFirst = -1, runEnd = -1;
+        for (ObstacleMeshes.Piece p : pieces) {
+            if (!onScreen(p.box(), frame, rect, corner)) continue;
+            if (p.first() == runEnd) {
+                runEnd += p.count();
+                continue;
+            }
+            if (runFirst >= 0) mesh.drawRange(runFirst, runEnd - runFirst);
+            runFirst = p.first();
+            runEnd = p.first() + p.count();
+        }
+        if (runFirst >= 0) mesh.drawRange(runFirst, runEnd - runFirst);
+    }
+
+    /** Whether a box (min x, y, z, max x, y, z) may show inside rect: its corners' screen box meets it; true if one is behind the eye. */
+    static boolean onScreen(float[] box, FrameContext frame, int[] rect, org.joml.Vector4f corner) {
+        float minX = Float.POSITIVE_INFINITY, minY = Float.POSITIVE_INFINITY, maxX = Float.NEGATIVE_INFINITY, maxY = Float.NEGATIVE_INFINITY;
+        for (int i = 0; i < 8; i++) {
+            frame.viewProjection.transform(corner.set(box[(i & 1) == 0 ? 0 : 3], box[(i & 2) == 0 ? 1 : 4], box[(i & 4) == 0 ? 2 : 5], 1f));
+            if (corner.w <= 1e-6f) return true;
+            float x = (corner.x / corner.w * 0.5f + 0.5f) * frame.viewportWidth, y = (corner.y / corner.w * 0.5f + 0.5f) * frame.viewportHeight;
+            minX = Math.min(minX, x);
+            maxX = Math.max(maxX, x);
+            minY = Math.min(minY, y);
+            maxY = Math.max(maxY, y);
+        }
+        return maxX >= rect[0] && minX <= rect[0] + rect[2] && maxY >= rect[1] && minY <= rect[1] + rect[3];
+    }
+
+    /**
      * Only the obstacles whose boxes meet {@code box} (min x, y, z, max x, y, z): the second draw round
      * the balls' shadows (see {@link SceneRenderer}) need not push the whole course through again.
      */

@@ -349,7 +349,7 @@ public final class SceneRenderer implements AutoCloseable {
         timer.mark("clear");
         terrain.render(frame);
         timer.mark("terrain");
-        obstacles.render(frame);
+        obstacles.renderInRect(frame, new int[]{0, 0, width, height});
         timer.mark("obstacles");
         objects.render(frame);
         timer.mark("objects");
@@ -421,7 +421,7 @@ public final class SceneRenderer implements AutoCloseable {
         mirrorFrame.shadowsOn = shadows && shadowsInWater;
         mirrorFrame.clipPlane.set(0, 0, 1, 0.01f);
         terrain.renderForWaterTarget(mirrorFrame); // the coarser mesh, where there is one: far banks, mirrored
-        obstacles.render(mirrorFrame);
+        obstacles.renderInRect(mirrorFrame, wet);
         objects.render(mirrorFrame);
         sky.render(mirrorFrame);
         timer.mark("reflectionTarget");

@@ -160,4 +160,38 @@ class ObstacleMeshesTest {
         assertFalse(solid.get(0).overlaps(nearTree));
         assertFalse(solid.get(2).overlaps(nearTree));
     }
+
+    @Test
+    void equalCornersAreStoredOnce() {
+        // A wall is 6 flat faces: 12 triangles, 36 indices, 4 distinct corners a face (each triangle's
+        // normal is computed from its own edges, so a face's two may differ in the last bit: up to 2 more).
+        Obstacle wall = new Obstacle.Wall(new Vec2(-1, 0.5), new Vec2(2, 1.5), 0.1, 0.3, 0.7);
+        MeshData w = build(List.of(wall)).solid();
+        assertEquals(36, w.indices().length);
+        int corners = w.vertices().length / w.stride();
+        assertTrue(corners >= 24 && corners <= 30, "wall corners stored: " + corners);
+        // A smooth trunk shares far more: each side corner serves up to six triangles.
+        Obstacle tree = new Obstacle.Tree(new Vec2(3, -2), 0.15, 2.0, 0.6);
+        MeshData t = build(List.of(tree)).solid();
+        assertTrue(t.vertices().length / t.stride() * 3 < t.indices().length, "trunk corners not shared");
+        for (int index : t.indices()) assertTrue(index >= 0 && index < t.vertices().length / t.stride());
+    }
+
+    @Test
+    void boxesOffScreenAreCulledAndBoxesBehindTheEyeKept() {
+        FrameContext frame = new FrameContext(FrameContext.Sun.afternoon());
+        // The eye 6 m south of the origin, 4 m up, looking at it.
+        OrbitCamera cam = new OrbitCamera(new org.joml.Vector3f(0, 0, 0), (float) Math.toRadians(-90), (float) Math.toRadians(34), 7f);
+        frame.update(cam, 800, 450, 0f);
+        int[] all = {0, 0, 800, 450};
+        org.joml.Vector4f c = new org.joml.Vector4f();
+        assertTrue(ObstaclesPass.onScreen(new float[]{-0.2f, -0.2f, 0f, 0.2f, 0.2f, 0.5f}, frame, all, c));
+        // Far to the east, beyond the 45-degree view's edge.
+        assertFalse(ObstaclesPass.onScreen(new float[]{30f, -0.2f, 0f, 30.4f, 0.2f, 0.5f}, frame, all, c));
+        // Straddling the eye's plane: kept, whatever its projection says.
+        org.joml.Vector3f eye = cam.eye();
+        assertTrue(ObstaclesPass.onScreen(new float[]{eye.x - 1, eye.y - 1, 0f, eye.x + 1, eye.y + 1, 8f}, frame, all, c));
+        // In view but outside a small rectangle in the image's top-left corner.
+        assertFalse(ObstaclesPass.onScreen(new float[]{-0.2f, -0.2f, 0f, 0.2f, 0.2f, 0.5f}, frame, new int[]{0, 400, 40, 50}, c));
+    }
 }
