@@ -41,6 +41,8 @@ import minigolf.physics.World;
 public final class PlannerBot extends SearchBot {
     private static final double SWEEP_STEP = Math.toRadians(4);
     private static final double SWEEP_HALF_WIDTH = Math.toRadians(120);
+    /** The sweep gives up when its first this many shots (about ±48° round both directions) are all lost. */
+    private static final int SWEEP_ALL_LOST = 24;
     /** The fine sweep's step near shots that hit obstacles, and how many shots it may spend per stroke. */
     private static final double FINE_STEP = Math.toRadians(0.1);
     private static final int FINE_PROBES = 400;
@@ -71,6 +73,8 @@ public final class PlannerBot extends SearchBot {
     private static final int BANK_FAN = 8;
 
     private final CourseMaps maps = new CourseMaps();
+    /** Shots the look-ahead found holing from a lay-up's rest point: reused when the ball is there. */
+    private final List<Solved> solved = new ArrayList<>();
     private World planWorld;
     private StrokePlan plan;
     private World probeSource;
@@ -98,7 +102,11 @@ public final class PlannerBot extends SearchBot {
         World world = request.world();
         CountingSimulator sim = request.simulator();
         maps.prepare(world, request.token());
-        Stroke stroke = new Stroke(sim, probeFor(sim), maps, request.ballX(), request.ballY(), () -> planFor(world, request));
+        for (Solved k : solved) {
+            // The lay-up came to rest exactly where the look-ahead holed out from: its shot, no new simulation.
+            if (k.world() == world && k.x() == request.ballX() && k.y() == request.ballY()) return k.shot();
+        }
+        Stroke stroke = new Stroke(solved, sim, probeFor(sim), maps, request.ballX(), request.ballY(), () -> planFor(world, request));
 
         double reach = stroke.maxRoll();
         double pathLength = stroke.pathLength;
@@ -205,13 +213,17 @@ public final class PlannerBot extends SearchBot {
         final java.util.function.Supplier<StrokePlan> plan;
 
         final CourseMaps maps;
+        final List<Solved> solved;
         /** Every probe from this ball position that came to rest: lay-ups the plan does not know. */
         final List<Eval> restingProbes = new ArrayList<>();
+        /** This stroke's first probe (null before any). */
+        Eval firstEval;
         /** Rest points the two-stroke look-ahead has started from. */
         final List<double[]> triedLayups = new ArrayList<>();
 
-        Stroke(CountingSimulator sim, CountingSimulator probe, CourseMaps maps, double px, double py,
+        Stroke(List<Solved> solved, CountingSimulator sim, CountingSimulator probe, CourseMaps maps, double px, double py,
                java.util.function.Supplier<StrokePlan> plan) {
+            this.solved = solved;
             this.plan = plan;
             this.maps = maps;
             this.sim = sim;
@@ -240,10 +252,23 @@ public final class PlannerBot extends SearchBot {
             return v * v / (2 * gravity * mu) + drop / mu;
         }
 
+        /** The look-ahead: does the straight solver hole out from here? Its shot is kept for the next stroke. */
+        boolean solvedHole() {
+            double hx = holeX - px, hy = holeY - py;
+            Attempt a = solveHole(guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null);
+            if (a.holed) solved.add(new Solved(world, px, py, a.shot));
+            return a.holed;
+        }
+
         Shot holeInOne() {
-            Shot direct = guess(Math.atan2(holeY - py, holeX - px), Math.hypot(holeX - px, holeY - py));
+            double holeAngle = Math.atan2(holeY - py, holeX - px);
+            Shot direct = guess(holeAngle, Math.hypot(holeX - px, holeY - py));
             Attempt first = solveHole(direct, null);
             if (first.holed) return first.shot;
+            // Reuse: when the straight shot was lost (water on the line), the sweep's faster shot
+            // along the same line is lost too; it is not probed again.
+            boolean lineLost = firstEval != null && firstEval.penalty
+                    && Math.abs(Math.atan2(firstEval.shot.vy(), firstEval.shot.vx()) - holeAngle) < 1e-9;
             sim.phase("bank");
             Shot bank = bankShot();
             if (bank != null) return bank;
@@ -252,14 +277,32 @@ public final class PlannerBot extends SearchBot {
             List<double[]> promising = new ArrayList<>();
             boolean obstacles = false;
             boolean reachTested = false;
+            boolean pathShot = true;
+            int lost = 0;
             for (double angle : sweepAngles()) {
+                if (lineLost && Math.abs(Math.IEEEremainder(angle - holeAngle, 2 * Math.PI)) < 0.4 * SWEEP_STEP) continue;
                 Shot shot = guess(angle, pathLength);
                 Eval e = evaluate(shot, holeX, holeY);
                 if (e.holed) return shot;
                 obstacles |= e.collided;
-                if (e.penalty) continue;
+                boolean firstShot = pathShot;
+                pathShot = false;
+                if (e.penalty) {
+                    // Not one shot near the path's and the hole's directions comes to rest: water or
+                    // the edge cuts every way at this speed, and the lay-up search takes over.
+                    if (++lost >= SWEEP_ALL_LOST && candidates.isEmpty()) return null;
+                    continue;
+                }
                 double d = field.at(e.restX, e.restY);
                 if (!Double.isFinite(d)) continue;
+                if (firstShot && lineLost && d < 0.5 * pathLength && d >= Math.max(0.6, 0.25 * pathLength)) {
+                    // The sweep's first shot, along the shortest path's first leg round the water,
+                    // resting on the way: the best guess there is; Broyden from it before sweeping on.
+                    sim.phase("refine");
+                    Attempt a = solveHole(shot, e);
+                    if (a.holed) return a.shot;
+                    sim.phase("sweep");
+                }
                 if (!reachTested && shot.speed() >= sim.maxSpeed() * 0.999) {
                     // A maximum-speed shot along the way that stops far short: the hole is out of reach.
                     reachTested = true;
@@ -274,11 +317,17 @@ public final class PlannerBot extends SearchBot {
                     sim.phase("sweep");
                 }
             }
-            candidates.sort((x, y) -> Double.compare(x.distance, y.distance));
-            sim.phase("refine");
-            for (int i = 0; i < Math.min(3, candidates.size()); i++) {
-                Attempt a = solveHole(candidates.get(i).shot, null);
-                if (a.holed) return a.shot;
+            // The best three sweep shots start Broyden once more only where shots hit obstacles: on
+            // open courses they are the ones that were not promising (2 m and more off) and never
+            // holed on the suite (about 40 simulations each time); among obstacles their resting
+            // probes feed the lay-up choice (without them maze-a takes 6 strokes instead of 5).
+            if (obstacles) {
+                candidates.sort((x, y) -> Double.compare(x.distance, y.distance));
+                sim.phase("refine");
+                for (int i = 0; i < Math.min(3, candidates.size()); i++) {
+                    Attempt a = solveHole(candidates.get(i).shot, null);
+                    if (a.holed) return a.shot;
+                }
             }
             return obstacles ? fineSweep(promising) : null;
         }
@@ -475,9 +524,8 @@ public final class PlannerBot extends SearchBot {
                 if (near) continue;
                 tried.add(new double[] {e.restX, e.restY});
                 attempts++;
-                Stroke next = new Stroke(sim, probe, maps, e.restX, e.restY, plan);
-                double hx = holeX - next.px, hy = holeY - next.py;
-                if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) return e.shot;
+                Stroke next = new Stroke(solved, sim, probe, maps, e.restX, e.restY, plan);
+                if (next.solvedHole()) return e.shot;
             }
             return null;
         }
@@ -542,9 +590,8 @@ public final class PlannerBot extends SearchBot {
                 // (the straight-putt plan does not know how the hills bend the ball).
                 if (firstConverged == null) firstConverged = a.shot;
                 triedLayups.add(new double[] {a.last.restX, a.last.restY});
-                Stroke next = new Stroke(sim, probe, maps, a.last.restX, a.last.restY, plan);
-                double hx = holeX - next.px, hy = holeY - next.py;
-                if (next.solveHole(next.guess(Math.atan2(hy, hx), Math.hypot(hx, hy)), null).holed) {
+                Stroke next = new Stroke(solved, sim, probe, maps, a.last.restX, a.last.restY, plan);
+                if (next.solvedHole()) {
                     return new Planned(a.shot, true, fewest);
                 }
             }
@@ -578,7 +625,7 @@ public final class PlannerBot extends SearchBot {
                 for (Eval t : tried) near |= Math.hypot(t.restX - e.restX, t.restY - e.restY) < BEAM_SPACING;
                 if (near) continue;
                 tried.add(e);
-                Stroke next = new Stroke(sim, probe, maps, e.restX, e.restY, plan);
+                Stroke next = new Stroke(solved, sim, probe, maps, e.restX, e.restY, plan);
                 if (next.sweepAllRound() != null) return e.shot;
                 List<Eval> after = next.safeRests();
                 double d = after.isEmpty() ? Double.POSITIVE_INFINITY : field.at(after.get(0).restX, after.get(0).restY);
@@ -721,20 +768,24 @@ public final class PlannerBot extends SearchBot {
             if (mirror != null) j = reflected(j, mirror[0], mirror[1]);
             Attempt bestHoled = null;
             boolean refreshed = false;
+            // The point aimed at: the hole's centre, until a step towards it is lost in water
+            // (the centre's shots lie beyond the water's edge): then the part of the hole on this side.
+            boolean retargeted = false;
             for (int iteration = 0; iteration < maxIterations; iteration++) {
-                double miss = Math.hypot(e.fx, e.fy);
+                double fx = e.restX - tx, fy = e.restY - ty;
+                double miss = Math.hypot(fx, fy);
                 if (holeMode && e.holed && (bestHoled == null || miss < bestHoled.miss)) {
                     bestHoled = new Attempt(e.shot, true, true, miss, e);
                 }
-                if (miss < tol) {
+                if (miss < tol || (retargeted && e.holed)) {
                     if (!holeMode) return new Attempt(e.shot, false, true, miss, e);
                     if (e.holed) return bestHoled;
                     break;
                 }
                 double det = j[0] * j[3] - j[1] * j[2];
                 if (!(Math.abs(det) > 1e-12)) break;
-                double dvx = -(j[3] * e.fx - j[1] * e.fy) / det;
-                double dvy = -(-j[2] * e.fx + j[0] * e.fy) / det;
+                double dvx = -(j[3] * fx - j[1] * fy) / det;
+                double dvy = -(-j[2] * fx + j[0] * fy) / det;
                 double stepCap = 0.5 * e.shot.speed() + 0.2;
                 double stepLength = Math.hypot(dvx, dvy);
                 if (stepLength > stepCap) {
@@ -742,19 +793,30 @@ public final class PlannerBot extends SearchBot {
                     dvy *= stepCap / stepLength;
                 }
                 Eval next = null;
+                boolean lost = false;
                 for (int halving = 0; halving < 4; halving++) {
                     Shot candidate = sim.limit(Shot.of(e.shot.vx() + dvx, e.shot.vy() + dvy));
                     Eval trial = evaluate(candidate, tx, ty);
-                    if (!trial.penalty && Math.hypot(trial.fx, trial.fy) < miss) {
+                    if (!trial.penalty && Math.hypot(trial.restX - tx, trial.restY - ty) < miss) {
                         next = trial;
                         break;
                     }
                     if (holeMode && trial.holed && bestHoled == null) {
-                        bestHoled = new Attempt(trial.shot, true, true, Math.hypot(trial.fx, trial.fy), trial);
+                        bestHoled = new Attempt(trial.shot, true, true, Math.hypot(trial.restX - tx, trial.restY - ty), trial);
                     }
+                    if (wet(trial) && holeMode && !retargeted && miss > 0.5 * radius) {
+                        // Aim at the near side of the hole instead, half a radius from the centre.
+                        retargeted = true;
+                        lost = true;
+                        tx = holeX + 0.5 * radius * fx / miss;
+                        ty = holeY + 0.5 * radius * fy / miss;
+                        break;
+                    }
+                    if (wet(trial) && bestHoled != null) return bestHoled;
                     dvx *= 0.5;
                     dvy *= 0.5;
                 }
+                if (lost) continue;
                 if (next == null) {
                     if (refreshed) break;
                     // Broyden's model went stale: measure the Jacobian once by forward differences.
@@ -766,8 +828,8 @@ public final class PlannerBot extends SearchBot {
                 double sx = next.shot.vx() - e.shot.vx(), sy = next.shot.vy() - e.shot.vy();
                 double s2 = sx * sx + sy * sy;
                 if (s2 > 0) {
-                    double yx = next.fx - e.fx - (j[0] * sx + j[1] * sy);
-                    double yy = next.fy - e.fy - (j[2] * sx + j[3] * sy);
+                    double yx = next.restX - e.restX - (j[0] * sx + j[1] * sy);
+                    double yy = next.restY - e.restY - (j[2] * sx + j[3] * sy);
                     j[0] += yx * sx / s2;
                     j[1] += yx * sy / s2;
                     j[2] += yy * sx / s2;
@@ -841,6 +903,10 @@ public final class PlannerBot extends SearchBot {
             return null;
         }
 
+        static boolean wet(Eval e) {
+            return e.result.outcome() == Outcome.WATER;
+        }
+
         /** J mirrored in the line with unit normal n: (I - 2 n n^T) J. */
         static double[] reflected(double[] j, double nx, double ny) {
             double r00 = 1 - 2 * nx * nx, r01 = -2 * nx * ny, r11 = 1 - 2 * ny * ny;
@@ -869,7 +935,7 @@ public final class PlannerBot extends SearchBot {
             if (ex.penalty || ey.penalty) return null;
             double hx = e.shot.vx() - ex.shot.vx(), hy = e.shot.vy() - ey.shot.vy();
             if (hx == 0 || hy == 0) return null;
-            return new double[] {(e.fx - ex.fx) / hx, (e.fx - ey.fx) / hy, (e.fy - ex.fy) / hx, (e.fy - ey.fy) / hy};
+            return new double[] {(e.restX - ex.restX) / hx, (e.restX - ey.restX) / hy, (e.restY - ex.restY) / hx, (e.restY - ey.restY) / hy};
         }
 
         /** Simulates in the probe world; F = rest point - target. */
@@ -882,6 +948,7 @@ public final class PlannerBot extends SearchBot {
             Eval e = new Eval(shot, r, penalty, holed, r.endX(), r.endY(),
                     penalty ? 0 : r.endX() - tx, penalty ? 0 : r.endY() - ty, dirX, dirY, approach.collided);
             if (r.outcome() == Outcome.STOPPED) restingProbes.add(e);
+            if (firstEval == null) firstEval = e;
             return e;
         }
     }
@@ -951,6 +1018,10 @@ public final class PlannerBot extends SearchBot {
      * strokesLeft: the plan's strokes from there.
      */
     private record Planned(Shot shot, boolean verified, int strokesLeft) {
+    }
+
+    /** A look-ahead's holing shot from a lay-up's rest point (the engine is deterministic). */
+    private record Solved(World world, double x, double y, Shot shot) {
     }
 
     private record Candidate(Shot shot, double distance) {
