@@ -244,7 +244,8 @@ public final class CollisionScene {
                 }
             }
         }
-        double bx = out[0], by = out[1], bz = out[2];
+        // Each test is limited to the best contact so far and writes out only for a nearer one, so
+        // out always holds the normal of the best.
         boolean found = false;
         for (int e = 0; e < 3; e++) {
             int a0 = o + 3 * e, a1 = o + 3 * ((e + 1) % 3);
@@ -252,23 +253,14 @@ public final class CollisionScene {
                     tr[a1], tr[a1 + 1], tr[a1 + 2], best, out);
             if (t < best) {
                 best = t;
-                bx = out[0];
-                by = out[1];
-                bz = out[2];
                 found = true;
             }
             t = SweepTests.point(px, py, pz, dx, dy, dz, r, tr[a0], tr[a0 + 1], tr[a0 + 2], best, out);
             if (t < best) {
                 best = t;
-                bx = out[0];
-                by = out[1];
-                bz = out[2];
                 found = true;
             }
         }
-        out[0] = bx;
-        out[1] = by;
-        out[2] = bz;
         return found ? best : Double.POSITIVE_INFINITY;
     }
 
@@ -293,8 +285,7 @@ public final class CollisionScene {
         double cx = cylinders[o], cy = cylinders[o + 1], big = cylinders[o + 2], bottom = cylinders[o + 3], top = cylinders[o + 4];
         double r = radius;
         double best = limit;
-        double bx = 0, by = 0, bz = 0;
-        boolean found = false;
+        boolean found = false; // as in triangle(): out holds the best contact's normal
         // Side: the centre's horizontal distance from the axis falls to R + r while beside the trunk.
         double mx = px - cx, my = py - cy;
         double a = dx * dx + dy * dy, b = mx * dx + my * dy, k = mx * mx + my * my - (big + r) * (big + r);
@@ -311,9 +302,9 @@ public final class CollisionScene {
                 double hx = mx + t * dx, hy = my + t * dy, h = Math.hypot(hx, hy);
                 if (h > 0) {
                     best = t;
-                    bx = hx / h;
-                    by = hy / h;
-                    bz = 0;
+                    out[0] = hx / h;
+                    out[1] = hy / h;
+                    out[2] = 0;
                     found = true;
                 }
             }
@@ -325,9 +316,9 @@ public final class CollisionScene {
             double hx = mx + t * dx, hy = my + t * dy;
             if (t < best && hx * hx + hy * hy <= big * big) {
                 best = t;
-                bx = 0;
-                by = 0;
-                bz = 1;
+                out[0] = 0;
+                out[1] = 0;
+                out[2] = 1;
                 found = true;
             }
         }
@@ -340,24 +331,15 @@ public final class CollisionScene {
                 double t = SweepTests.segment(px, py, pz, dx, dy, dz, r, ax, ay, top, ex, ey, top, best, out);
                 if (t < best) {
                     best = t;
-                    bx = out[0];
-                    by = out[1];
-                    bz = out[2];
                     found = true;
                 }
                 t = SweepTests.point(px, py, pz, dx, dy, dz, r, ax, ay, top, best, out);
                 if (t < best) {
                     best = t;
-                    bx = out[0];
-                    by = out[1];
-                    bz = out[2];
                     found = true;
                 }
             }
         }
-        out[0] = bx;
-        out[1] = by;
-        out[2] = bz;
         return found ? best : Double.POSITIVE_INFINITY;
     }
 
