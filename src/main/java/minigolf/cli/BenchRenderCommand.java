@@ -76,12 +76,12 @@ final class BenchRenderCommand implements Callable<Integer> {
             int warmUp = Math.max(5, Math.min(30, frames / 5));
             for (int i = 0; i < warmUp; i++) frame(off, renderer, camera, s, side, i);
             off.finish();
-            long cpuStart = processCpuMillis();
+            long cpuStart = FrameClock.processCpuMillis();
             long start = System.nanoTime();
             for (int i = 0; i < frames; i++) frame(off, renderer, camera, s, side, warmUp + i);
             off.finish();
             double ms = (System.nanoTime() - start) / 1e6 / frames;
-            long cpuEnd = processCpuMillis();
+            long cpuEnd = FrameClock.processCpuMillis();
             if (breakdown) {
                 // Timed separately: the glFinish after each pass stalls the pipeline and would inflate msPerFrame.
                 renderer.passTimer().setOn(true);
@@ -111,17 +111,6 @@ final class BenchRenderCommand implements Callable<Integer> {
         }
         spec.commandLine().getOut().println(Json.write(out));
         return 0;
-    }
-
-    /** User + system CPU time of this process in ms from /proc/self/stat (Linux, 100 ticks a second), or -1. */
-    static long processCpuMillis() {
-        try {
-            String stat = java.nio.file.Files.readString(java.nio.file.Path.of("/proc/self/stat"));
-            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
-            return (Long.parseLong(f[11]) + Long.parseLong(f[12])) * 10;
-        } catch (java.io.IOException | RuntimeException e) {
-            return -1;
-        }
     }
 
     /** One game-like frame: the camera turns slowly, the water moves, the minimap is drawn; the GPU finishes it. */
