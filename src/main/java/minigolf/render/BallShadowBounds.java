@@ -4,7 +4,6 @@ import minigolf.course.Bounds;
 import minigolf.course.HeightProbe;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
-import org.joml.Vector4f;
 
 /**
  * The screen rectangle that holds the balls' shadows on the ground, so that software rasterisers can
@@ -41,17 +40,14 @@ final class BallShadowBounds {
      */
     static Region of(float[] balls, int count, Vector3f toSun, HeightProbe ground, Bounds bounds, double lowest,
                     Matrix4f viewProjection, int width, int height) {
-        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY;
-        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY;
         double lx = toSun.x, ly = toSun.y, lz = toSun.z;
         if (lz <= 1e-6) return null; // a sun at or under the horizon casts no shadow on the ground
         // Two unit vectors across the sun's ray.
         Vector3f u = new Vector3f(toSun).cross(Math.abs(toSun.z) < 0.9f ? new Vector3f(0, 0, 1) : new Vector3f(1, 0, 0)).normalize();
         Vector3f w = new Vector3f(toSun).cross(u).normalize();
-        Vector4f clip = new Vector4f();
+        ScreenBounds screen = new ScreenBounds(viewProjection, width, height);
         float[] box = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
                 Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
-        boolean everywhere = false;
         for (int i = 0; i < count; i++) {
             double cx = balls[4 * i], cy = balls[4 * i + 1], cz = balls[4 * i + 2], r = balls[4 * i + 3];
             double centreT = groundAlong(cx, cy, cz, lx, ly, lz, ground, bounds, lowest);
@@ -75,25 +71,12 @@ final class BallShadowBounds {
                     box[3] = Math.max(box[3], wx);
                     box[4] = Math.max(box[4], wy);
                     box[5] = Math.max(box[5], wz);
-                    viewProjection.transform(clip.set(wx, wy, wz, 1f));
-                    if (clip.w <= 1e-6f) {
-                        everywhere = true; // behind the eye: be safe, shade the whole screen
-                        continue;
-                    }
-                    double px = (clip.x / clip.w * 0.5 + 0.5) * width, py = (clip.y / clip.w * 0.5 + 0.5) * height;
-                    minX = Math.min(minX, px);
-                    maxX = Math.max(maxX, px);
-                    minY = Math.min(minY, py);
-                    maxY = Math.max(maxY, py);
+                    screen.add(wx, wy, wz); // one behind the eye: be safe, shade the whole screen
                 }
             }
         }
-        if (everywhere) return new Region(new int[]{0, 0, width, height}, box);
-        if (minX > maxX) return null;
-        int x0 = (int) Math.max(0, Math.floor(minX) - MARGIN_PX), y0 = (int) Math.max(0, Math.floor(minY) - MARGIN_PX);
-        int x1 = (int) Math.min(width, Math.ceil(maxX) + MARGIN_PX), y1 = (int) Math.min(height, Math.ceil(maxY) + MARGIN_PX);
-        if (x1 <= x0 || y1 <= y0) return null;
-        return new Region(new int[]{x0, y0, x1 - x0, y1 - y0}, box);
+        int[] rect = screen.rect(MARGIN_PX, MARGIN_PX);
+        return rect == null ? null : new Region(rect, box);
     }
 
     /**

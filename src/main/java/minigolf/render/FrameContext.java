@@ -67,13 +67,7 @@ public final class FrameContext {
         projection.mul(view, viewProjection);
         viewProjection.invert(inverseViewProjection);
         eye.set(src.eye.x, src.eye.y, -src.eye.z);
-        time = src.time;
-        shadowMap = src.shadowMap;
-        shadowsOn = src.shadowsOn;
-        ballShadowsInline = true;
-        System.arraycopy(src.ballShadows, 0, ballShadows, 0, ballShadows.length);
-        ballShadowCount = src.ballShadowCount;
-        return this;
+        return sharedStateOf(src);
     }
 
     /** Copies the camera of {@code src} for a width x height target (the refraction). */
@@ -85,6 +79,14 @@ public final class FrameContext {
         viewProjection.set(src.viewProjection);
         inverseViewProjection.set(src.inverseViewProjection);
         eye.set(src.eye);
+        return sharedStateOf(src);
+    }
+
+    /**
+     * What a water target's frame takes over from the scene's besides the camera: time, shadows and
+     * balls. Its own draws compute the balls' shadows inline (no second, scissored draw there).
+     */
+    private FrameContext sharedStateOf(FrameContext src) {
         time = src.time;
         shadowMap = src.shadowMap;
         shadowsOn = src.shadowsOn;

@@ -98,47 +98,56 @@ public final class ObstaclesPass implements RenderPass {
 
     @Override
     public void render(FrameContext frame) {
-        if (solid == null && decoration == null) return;
-        begin(frame);
-        if (solid != null) {
-            program.set("uSpecularStrength", 0.12f);
-            program.set("uShininess", 16f);
-            solid.draw();
-        }
-        if (decoration != null) {
-            program.set("uSpecularStrength", 0.05f);
-            program.set("uShininess", 8f);
-            decoration.draw();
-        }
+        renderWhere(frame, p -> true);
     }
 
     /**
      * Only the obstacles whose boxes, seen through the frame's camera, reach into {@code rect} ({x, y,
      * width, height} in the frame's viewport pixels from the bottom left): the viewport itself for the
      * scene (obstacles behind the eye or beside the view are skipped), the water's rectangle for its
-     * reflection. Neighbouring visible obstacles are drawn as one run.
+     * reflection.
      */
     void renderInRect(FrameContext frame, int[] rect) {
+        renderWhere(frame, p -> onScreen(p.box(), frame, rect));
+    }
+
+    /**
+     * Only the obstacles whose boxes meet {@code box} (min x, y, z, max x, y, z): the second draw round
+     * the balls' shadows (see {@link SceneRenderer}) and the refraction need not push the whole course
+     * through again.
+     */
+    void renderWithin(FrameContext frame, float[] box) {
+        renderWhere(frame, p -> p.overlaps(box));
+    }
+
+    /** Whether a box (min x, y, z, max x, y, z) may show inside rect: its corners' screen box meets it; true if one is behind the eye. */
+    static boolean onScreen(float[] box, FrameContext frame, int[] rect) {
+        ScreenBounds screen = new ScreenBounds(frame.viewProjection, frame.viewportWidth, frame.viewportHeight);
+        screen.addBox(box);
+        return screen.meets(rect);
+    }
+
+    /** The solid obstacles and the crowns whose pieces pass {@code drawn}; neighbouring ones as one run. */
+    private void renderWhere(FrameContext frame, java.util.function.Predicate<ObstacleMeshes.Piece> drawn) {
         if (solid == null && decoration == null) return;
         begin(frame);
-        org.joml.Vector4f corner = new org.joml.Vector4f();
         if (solid != null) {
             program.set("uSpecularStrength", 0.12f);
             program.set("uShininess", 16f);
-            drawVisible(solid, solidPieces, frame, rect, corner);
+            drawRuns(solid, solidPieces, drawn);
         }
         if (decoration != null) {
             program.set("uSpecularStrength", 0.05f);
             program.set("uShininess", 8f);
-            drawVisible(decoration, decorationPieces, frame, rect, corner);
+            drawRuns(decoration, decorationPieces, drawn);
         }
     }
 
-    private static void drawVisible(Mesh mesh, List<ObstacleMeshes.Piece> pieces, FrameContext frame, int[] rect,
-                                    org.joml.Vector4f corner) {
+    /** The pieces are consecutive index runs covering the mesh: all drawn is one draw call. */
+    private static void drawRuns(Mesh mesh, List<ObstacleMeshes.Piece> pieces, java.util.function.Predicate<ObstacleMeshes.Piece> drawn) {
         int runFirst = -1, runEnd = -1;
         for (ObstacleMeshes.Piece p : pieces) {
-            if (!onScreen(p.box(), frame, rect, corner)) continue;
+            if (!drawn.test(p)) continue;
             if (p.first() == runEnd) {
                 runEnd += p.count();
                 continue;
@@ -148,39 +157,6 @@ public final class ObstaclesPass implements RenderPass {
             runEnd = p.first() + p.count();
         }
         if (runFirst >= 0) mesh.drawRange(runFirst, runEnd - runFirst);
-    }
-
-    /** Whether a box (min x, y, z, max x, y, z) may show inside rect: its corners' screen box meets it; true if one is behind the eye. */
-    static boolean onScreen(float[] box, FrameContext frame, int[] rect, org.joml.Vector4f corner) {
-        float minX = Float.POSITIVE_INFINITY, minY = Float.POSITIVE_INFINITY, maxX = Float.NEGATIVE_INFINITY, maxY = Float.NEGATIVE_INFINITY;
-        for (int i = 0; i < 8; i++) {
-            frame.viewProjection.transform(corner.set(box[(i & 1) == 0 ? 0 : 3], box[(i & 2) == 0 ? 1 : 4], box[(i & 4) == 0 ? 2 : 5], 1f));
-            if (corner.w <= 1e-6f) return true;
-            float x = (corner.x / corner.w * 0.5f + 0.5f) * frame.viewportWidth, y = (corner.y / corner.w * 0.5f + 0.5f) * frame.viewportHeight;
-            minX = Math.min(minX, x);
-            maxX = Math.max(maxX, x);
-            minY = Math.min(minY, y);
-            maxY = Math.max(maxY, y);
-        }
-        return maxX >= rect[0] && minX <= rect[0] + rect[2] && maxY >= rect[1] && minY <= rect[1] + rect[3];
-    }
-
-    /**
-     * Only the obstacles whose boxes meet {@code box} (min x, y, z, max x, y, z): the second draw round
-     * the balls' shadows (see {@link SceneRenderer}) need not push the whole course through again.
-     */
-    void renderWithin(FrameContext frame, float[] box) {
-        boolean any = false;
-        for (ObstacleMeshes.Piece p : solidPieces) any |= p.overlaps(box);
-        for (ObstacleMeshes.Piece p : decorationPieces) any |= p.overlaps(box);
-        if (!any) return;
-        begin(frame);
-        program.set("uSpecularStrength", 0.12f);
-        program.set("uShininess", 16f);
-        for (ObstacleMeshes.Piece p : solidPieces) if (p.overlaps(box)) solid.drawRange(p.first(), p.count());
-        program.set("uSpecularStrength", 0.05f);
-        program.set("uShininess", 8f);
-        for (ObstacleMeshes.Piece p : decorationPieces) if (p.overlaps(box)) decoration.drawRange(p.first(), p.count());
     }
 
     /** The minimap shows only what the ball can hit (no crowns, which would hide the trunks). */

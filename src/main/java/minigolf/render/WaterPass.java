@@ -122,25 +122,11 @@ public final class WaterPass implements RenderPass {
      */
     int[] screenRect(org.joml.Matrix4f viewProjection, int width, int height, float margin) {
         if (wetBox == null) return null;
-        float[] xs = {wetBox[0], wetBox[2]}, ys = {wetBox[1], wetBox[3]};
-        float minX = Float.POSITIVE_INFINITY, minY = Float.POSITIVE_INFINITY, maxX = Float.NEGATIVE_INFINITY, maxY = Float.NEGATIVE_INFINITY;
-        org.joml.Vector4f c = new org.joml.Vector4f();
-        for (float x : xs) {
-            for (float y : ys) {
-                viewProjection.transform(c.set(x, y, 0, 1));
-                if (c.w <= 1e-6f) return new int[]{0, 0, width, height};
-                float px = (c.x / c.w * 0.5f + 0.5f) * width, py = (c.y / c.w * 0.5f + 0.5f) * height;
-                minX = Math.min(minX, px);
-                maxX = Math.max(maxX, px);
-                minY = Math.min(minY, py);
-                maxY = Math.max(maxY, py);
-            }
+        ScreenBounds screen = new ScreenBounds(viewProjection, width, height);
+        for (float x : new float[]{wetBox[0], wetBox[2]}) {
+            for (float y : new float[]{wetBox[1], wetBox[3]}) screen.add(x, y, 0);
         }
-        float mx = margin * width, my = margin * height;
-        int x0 = (int) Math.max(0, Math.floor(minX - mx)), y0 = (int) Math.max(0, Math.floor(minY - my));
-        int x1 = (int) Math.min(width, Math.ceil(maxX + mx)), y1 = (int) Math.min(height, Math.ceil(maxY + my));
-        if (x1 <= x0 || y1 <= y0) return null;
-        return new int[]{x0, y0, x1 - x0, y1 - y0};
+        return screen.rect(margin * width, margin * height);
     }
 
     public boolean hasWater() {

@@ -185,14 +185,13 @@ class ObstacleMeshesTest {
         OrbitCamera cam = new OrbitCamera(new org.joml.Vector3f(0, 0, 0), (float) Math.toRadians(-90), (float) Math.toRadians(34), 7f);
         frame.update(cam, 800, 450, 0f);
         int[] all = {0, 0, 800, 450};
-        org.joml.Vector4f c = new org.joml.Vector4f();
-        assertTrue(ObstaclesPass.onScreen(new float[]{-0.2f, -0.2f, 0f, 0.2f, 0.2f, 0.5f}, frame, all, c));
+        assertTrue(ObstaclesPass.onScreen(new float[]{-0.2f, -0.2f, 0f, 0.2f, 0.2f, 0.5f}, frame, all));
         // Far to the east, beyond the 45-degree view's edge.
-        assertFalse(ObstaclesPass.onScreen(new float[]{30f, -0.2f, 0f, 30.4f, 0.2f, 0.5f}, frame, all, c));
+        assertFalse(ObstaclesPass.onScreen(new float[]{30f, -0.2f, 0f, 30.4f, 0.2f, 0.5f}, frame, all));
         // Straddling the eye's plane: kept, whatever its projection says.
         org.joml.Vector3f eye = cam.eye();
-        assertTrue(ObstaclesPass.onScreen(new float[]{eye.x - 1, eye.y - 1, 0f, eye.x + 1, eye.y + 1, 8f}, frame, all, c));
+        assertTrue(ObstaclesPass.onScreen(new float[]{eye.x - 1, eye.y - 1, 0f, eye.x + 1, eye.y + 1, 8f}, frame, all));
         // In view but outside a small rectangle in the image's top-left corner.
-        assertFalse(ObstaclesPass.onScreen(new float[]{-0.2f, -0.2f, 0f, 0.2f, 0.2f, 0.5f}, frame, new int[]{0, 400, 40, 50}, c));
+        assertFalse(ObstaclesPass.onScreen(new float[]{-0.2f, -0.2f, 0f, 0.2f, 0.2f, 0.5f}, frame, new int[]{0, 400, 40, 50}));
     }
 }
