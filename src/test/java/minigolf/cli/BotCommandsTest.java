@@ -7,8 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -20,13 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
 class BotCommandsTest {
     private static final Path BENCH = Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses/bench");
 
-    private record Run(int code, String out, String err) {
-    }
-
-    private static Run run(String... args) {
-        StringWriter out = new StringWriter(), err = new StringWriter();
-        int code = MinigolfCommand.execute(args, new PrintWriter(out), new PrintWriter(err));
-        return new Run(code, out.toString(), err.toString());
+    private static CliRun run(String... args) {
+        return CliRun.of(args);
     }
 
     private static List<String> fields(JsonNode node) {
@@ -37,7 +30,7 @@ class BotCommandsTest {
 
     @Test
     void solvePrintsTheGameAsJson() throws IOException {
-        Run r = run("solve", BENCH.resolve("two-putt.json").toString(), "--bot", "planner", "--seed", "4");
+        CliRun r = run("solve", BENCH.resolve("two-putt.json").toString(), "--bot", "planner", "--seed", "4");
         assertEquals(0, r.code(), r.err());
         JsonNode json = new ObjectMapper().readTree(r.out());
         assertEquals(List.of("bot", "course", "holed", "strokes", "simulations", "wallMs", "shots"), fields(json));
@@ -56,7 +49,7 @@ class BotCommandsTest {
 
     @Test
     void solveWithoutASolutionInTheBudgetReportsNotHoled() throws IOException {
-        Run r = run("solve", BENCH.resolve("lake-bowl.json").toString(), "--bot", "newton", "--budget", "3",
+        CliRun r = run("solve", BENCH.resolve("lake-bowl.json").toString(), "--bot", "newton", "--budget", "3",
                 "--max-strokes", "2");
         assertEquals(0, r.code(), r.err());
         JsonNode json = new ObjectMapper().readTree(r.out());
@@ -66,20 +59,20 @@ class BotCommandsTest {
 
     @Test
     void badArgumentsGiveOneLineAndExitCodeTwo(@TempDir Path dir) throws IOException {
-        Run unknown = run("solve", BENCH.resolve("flat-7m.json").toString(), "--bot", "oracle");
+        CliRun unknown = run("solve", BENCH.resolve("flat-7m.json").toString(), "--bot", "oracle");
         assertEquals(2, unknown.code());
         assertEquals("minigolf: --bot: unknown bot 'oracle'; known: grid, local, newton, swarm, astar, astar-newton, "
                 + "astar-swarm, graph, planner", unknown.err().trim());
         Path broken = dir.resolve("broken.json");
         Files.writeString(broken, "{\"format\": 1}");
-        Run bad = run("solve", broken.toString());
+        CliRun bad = run("solve", broken.toString());
         assertEquals(2, bad.code());
         assertTrue(bad.err().startsWith("minigolf: " + broken), bad.err());
         assertEquals(1, bad.err().trim().lines().count());
-        Run noSuite = run("experiment", "--suite", dir.resolve("missing").toString(), "--out", dir.toString());
+        CliRun noSuite = run("experiment", "--suite", dir.resolve("missing").toString(), "--out", dir.toString());
         assertEquals(2, noSuite.code());
         assertEquals("minigolf: --suite: " + dir.resolve("missing") + ": no such folder", noSuite.err().trim());
-        Run badBots = run("experiment", "--suite", BENCH.toString(), "--bots", "planner,nope", "--out", dir.toString());
+        CliRun badBots = run("experiment", "--suite", BENCH.toString(), "--bots", "planner,nope", "--out", dir.toString());
         assertEquals(2, badBots.code());
         assertTrue(badBots.err().startsWith("minigolf: --bots: unknown bot 'nope'"), badBots.err());
     }
@@ -90,7 +83,7 @@ class BotCommandsTest {
         Files.copy(BENCH.resolve("flat-7m.json"), suite.resolve("flat-7m.json"));
         Files.copy(BENCH.resolve("two-putt.json"), suite.resolve("two-putt.json"));
         Path out = dir.resolve("out");
-        Run r = run("experiment", "--suite", suite.toString(), "--bots", "planner,astar", "--seeds", "2",
+        CliRun r = run("experiment", "--suite", suite.toString(), "--bots", "planner,astar", "--seeds", "2",
                 "--out", out.toString(), "--threads", "2");
         assertEquals(0, r.code(), r.err());
         List<String> csv = Files.readAllLines(out.resolve("results.csv"));

@@ -7,8 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -19,16 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 class CommandLineTest {
     private static final Path COURSES = Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses");
 
-    private record Run(int code, String out, String err) {
-        JsonNode json() throws IOException {
-            return new ObjectMapper().readTree(out);
-        }
-    }
-
-    private static Run run(String... args) {
-        StringWriter out = new StringWriter(), err = new StringWriter();
-        int code = MinigolfCommand.execute(args, new PrintWriter(out), new PrintWriter(err));
-        return new Run(code, out.toString(), err.toString());
+    private static CliRun run(String... args) {
+        return CliRun.of(args);
     }
 
     private static String course(String name) {
@@ -38,7 +28,7 @@ class CommandLineTest {
     @Test
     void simulatePrintsTheFlatGroundClosedForm() throws IOException {
         // courses/flat.json: flat, the shot stops after v^2 / (2 mu_k g).
-        Run r = run("simulate", course("flat.json"), "--velocity", "2,0");
+        CliRun r = run("simulate", course("flat.json"), "--velocity", "2,0");
         assertEquals(0, r.code(), r.err());
         JsonNode json = r.json();
         assertEquals("stopped", json.get("outcome").asText());
@@ -55,7 +45,7 @@ class CommandLineTest {
 
     @Test
     void simulateOnTheLakeAimedAtTheCentreEndsInWater() throws IOException {
-        Run r = run("simulate", course("lake.json"), "--velocity", "3,0");
+        CliRun r = run("simulate", course("lake.json"), "--velocity", "3,0");
         assertEquals(0, r.code(), r.err());
         JsonNode json = r.json();
         assertEquals("water", json.get("outcome").asText());
@@ -67,7 +57,7 @@ class CommandLineTest {
     @Test
     void integratorModelAndTrajectoryOptionsWork(@TempDir Path dir) throws IOException {
         Path csv = dir.resolve("path.csv");
-        Run r = run("simulate", course("sine-hills.json"), "--velocity", "1.5,-0.5", "--integrator", "euler",
+        CliRun r = run("simulate", course("sine-hills.json"), "--velocity", "1.5,-0.5", "--integrator", "euler",
                 "--dt", "0.005", "--model", "complete", "--trajectory", csv.toString());
         assertEquals(0, r.code(), r.err());
         List<String> lines = Files.readAllLines(csv);
@@ -108,7 +98,7 @@ class CommandLineTest {
             "Unmatched argument at index 0: 'no-such-command'",
         };
         for (int i = 0; i < cases.length; i++) {
-            Run r = run(cases[i]);
+            CliRun r = run(cases[i]);
             assertEquals(2, r.code(), String.join(" ", cases[i]));
             assertTrue(r.err().contains(expected[i]), r.err());
             assertFalse(r.err().contains("\tat "), "no stack trace: " + r.err());
@@ -118,7 +108,7 @@ class CommandLineTest {
 
     @Test
     void benchPhysicsReportsShotsPerSecond() throws IOException {
-        Run r = run("bench-physics", course("flat.json"), "--shots", "200");
+        CliRun r = run("bench-physics", course("flat.json"), "--shots", "200");
         assertEquals(0, r.code(), r.err());
         assertEquals(200, r.json().get("shots").asInt());
         assertTrue(r.json().get("shotsPerSecond").asDouble() > 0);
@@ -126,7 +116,7 @@ class CommandLineTest {
 
     @Test
     void benchAccuracyFindsRk4AtOneSixtiethWithinAMillimetre() throws IOException {
-        Run r = run("bench-accuracy", course("sine-hills.json"), "--shots", "3");
+        CliRun r = run("bench-accuracy", course("sine-hills.json"), "--shots", "3");
         assertEquals(0, r.code(), r.err());
         assertEquals(3, r.json().get("withinOneMm").asInt(), r.out());
         assertTrue(r.json().get("maxErrorMm").asDouble() < 1, r.out());

@@ -2,8 +2,6 @@ package minigolf.cli;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -15,13 +13,8 @@ import static org.junit.jupiter.api.Assertions.*;
 class RenderCommandTest {
     private static final Path COURSES = Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses");
 
-    private record Run(int code, String out, String err) {
-    }
-
-    private static Run run(String... args) {
-        StringWriter out = new StringWriter(), err = new StringWriter();
-        int code = MinigolfCommand.execute(args, new PrintWriter(out), new PrintWriter(err));
-        return new Run(code, out.toString(), err.toString());
+    private static CliRun run(String... args) {
+        return CliRun.of(args);
     }
 
     private static String course(String name) {
@@ -32,7 +25,7 @@ class RenderCommandTest {
     void renderWritesAPngOfTheAskedSizeForBothViews(@TempDir Path dir) throws Exception {
         for (String view : new String[]{"orbit", "top"}) {
             Path png = dir.resolve("sub/" + view + ".png");
-            Run r = run("render", course("lake.json"), "--out", png.toString(), "--size", "320x200", "--view", view);
+            CliRun r = run("render", course("lake.json"), "--out", png.toString(), "--size", "320x200", "--view", view);
             assertEquals(0, r.code(), r.err());
             byte[] bytes = Files.readAllBytes(png);
             // PNG signature, then the IHDR chunk's width and height (big-endian).
@@ -56,12 +49,12 @@ class RenderCommandTest {
                 {"bench-render", course("lake.json"), "--size", "100"},
         };
         for (String[] args : cases) {
-            Run r = run(args);
+            CliRun r = run(args);
             assertEquals(2, r.code(), String.join(" ", args) + ": " + r.err());
             assertTrue(r.err().startsWith("minigolf: "), r.err());
             assertEquals(1, r.err().strip().lines().count(), "not one line: " + r.err());
         }
-        Run badView = run("render", course("lake.json"), "--out", out, "--view", "side");
+        CliRun badView = run("render", course("lake.json"), "--out", out, "--view", "side");
         assertEquals(2, badView.code());
         assertTrue(badView.err().contains("--view"), badView.err());
         assertFalse(Files.exists(Path.of(out)), "a picture was written despite the errors");
@@ -69,7 +62,7 @@ class RenderCommandTest {
 
     @Test
     void benchRenderPrintsFramesMillisecondsAndTheRenderer() throws Exception {
-        Run r = run("bench-render", course("lake.json"), "--frames", "5", "--size", "320x200");
+        CliRun r = run("bench-render", course("lake.json"), "--frames", "5", "--size", "320x200");
         assertEquals(0, r.code(), r.err());
         JsonNode json = new ObjectMapper().readTree(r.out());
         assertEquals(5, json.get("frames").asInt());
@@ -80,7 +73,7 @@ class RenderCommandTest {
 
     @Test
     void playTimingTimesTheRealGameLoop() throws Exception {
-        Run r = run("play", course("flat.json"), "--players", "Ann", "--frames", "24", "--timing");
+        CliRun r = run("play", course("flat.json"), "--players", "Ann", "--frames", "24", "--timing");
         assertEquals(0, r.code(), r.err());
         JsonNode json = new ObjectMapper().readTree(r.out());
         // 24 frames, the first quarter warm-up: passes 6 to 23 bound 17 timed frames.
@@ -89,7 +82,7 @@ class RenderCommandTest {
         assertTrue(json.get("cpuMsPerFrame").asDouble() >= 0, r.out());
         assertEquals("Flat", json.get("course").asText());
         assertFalse(json.get("renderer").asText().isBlank(), r.out());
-        Run tooFew = run("play", course("flat.json"), "--frames", "3", "--timing");
+        CliRun tooFew = run("play", course("flat.json"), "--frames", "3", "--timing");
         assertEquals(2, tooFew.code());
         assertTrue(tooFew.err().contains("--timing needs --frames"), tooFew.err());
     }
