@@ -33,14 +33,47 @@ public final class MinigolfCommand implements Callable<Integer> {
                 err.flush();
                 return 2;
             }
+            if (exception instanceof minigolf.render.RenderException && noWindow(exception.getMessage())) {
+                // No display, no OpenGL 3.3: the machine's condition, not a bug.
+                err.println("minigolf: cannot open a window: " + firstLine(exception.getMessage()));
+                err.flush();
+                return 2;
+            }
             err.println("minigolf: internal error: " + exception);
             if (System.getenv("MINIGOLF_DEBUG") != null) exception.printStackTrace(err);
             err.flush();
             return 1;
         });
-        int code = commandLine.execute(args);
+        int code;
+        try {
+            code = commandLine.execute(args);
+        } catch (OutOfMemoryError e) {
+            // Errors pass picocli's handler; they end as one line too, never a stack trace.
+            err.println("minigolf: out of memory (the input asks for more than the Java heap holds;"
+                    + " the file limits are in docs/course-format.md)");
+            code = 2;
+        } catch (StackOverflowError e) {
+            err.println("minigolf: the input is nested too deeply (stack overflow)");
+            code = 2;
+        } catch (Error e) {
+            err.println("minigolf: internal error: " + firstLine(String.valueOf(e)));
+            if (System.getenv("MINIGOLF_DEBUG") != null) e.printStackTrace(err);
+            code = 1;
+        }
         out.flush();
         err.flush();
         return code;
+    }
+
+    /** The window system's refusals (Window's messages): no display, no OpenGL 3.3 context. */
+    private static boolean noWindow(String message) {
+        return message != null && (message.startsWith("GLFW could not be initialised")
+                || message.startsWith("Could not create a window"));
+    }
+
+    private static String firstLine(String s) {
+        if (s == null) return "";
+        int nl = s.indexOf('\n');
+        return nl >= 0 ? s.substring(0, nl) : s;
     }
 }

@@ -1,6 +1,8 @@
 package minigolf.course;
 
+import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.StreamReadConstraints;
 import com.fasterxml.jackson.core.json.JsonReadFeature;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
@@ -10,10 +12,10 @@ import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import minigolf.expr.Expression;
 import minigolf.expr.ExpressionException;
+import minigolf.io.TextFiles;
 
 import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
@@ -55,7 +57,9 @@ public final class CourseLoader {
     static final List<String> MODEL_FIELDS = List.of("type", "file", "position", "rotationDeg", "scale", "restitution");
 
     /** Strict JSON: no NaN/Infinity literals, no comments, no duplicate keys, nothing after the object. */
-    private static final ObjectMapper MAPPER = JsonMapper.builder()
+    private static final ObjectMapper MAPPER = JsonMapper.builder(JsonFactory.builder()
+                    .streamReadConstraints(StreamReadConstraints.builder().maxNestingDepth(Limits.JSON_DEPTH).build())
+                    .build())
             .enable(DeserializationFeature.FAIL_ON_READING_DUP_TREE_KEY)
             .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
             .disable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
@@ -78,11 +82,9 @@ public final class CourseLoader {
         String source = String.valueOf(file);
         String json;
         try {
-            json = Files.readString(file, StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            throw new CourseException(source, null, "cannot read: " + describe(e, file), e);
-        } catch (RuntimeException e) {
-            throw new CourseException(source, null, "cannot read: " + e, e);
+            json = TextFiles.read(file, Limits.COURSE_FILE_BYTES);
+        } catch (TextFiles.TextFileException e) {
+            throw new CourseException(source, null, "cannot read: " + e.getMessage());
         }
         return parse(json, source, probes, ModelFiles.beside(file));
     }
@@ -101,7 +103,24 @@ public final class CourseLoader {
     /** As {@link #parse(String, String, Function)}, with the .obj files of model obstacles read through {@code models}. */
     static Course parse(String json, String sourceName, Function<TerrainSpec, HeightProbe> probes, ModelFiles models)
             throws CourseException {
-        Course course = new Reader(sourceName, models).course(readTree(json, sourceName));
+        try {
+            return parseChecked(json, sourceName, probes, models);
+        } catch (OutOfMemoryError e) {
+            // The limits should make this impossible; if a file still gets here, it is refused, not fatal.
+            throw new CourseException(sourceName, null, "too large to load: the Java heap ran out of memory"
+                    + " (limits: docs/course-format.md)");
+        } catch (StackOverflowError e) {
+            throw new CourseException(sourceName, null, "too deeply nested to load (limits: docs/course-format.md)");
+        }
+    }
+
+    private static Course parseChecked(String json, String sourceName, Function<TerrainSpec, HeightProbe> probes,
+                                       ModelFiles models) throws CourseException {
+        if (json != null && json.length() > Limits.COURSE_FILE_BYTES) {
+            throw new CourseException(sourceName, null, "too large: " + json.length() + " characters (the limit is "
+                    + Limits.COURSE_FILE_BYTES + ")");
+        }
+        Course course = new Reader(sourceName, ModelFiles.cached(models)).course(readTree(json, sourceName));
         CourseValidator.checkInBounds(course, sourceName);
         if (probes != null) {
             HeightProbe probe;
@@ -121,6 +140,8 @@ public final class CourseLoader {
     private static JsonNode readTree(String json, String source) throws CourseException {
         if (json == null) throw new CourseException(source, null, "not valid JSON: no content");
         if (json.startsWith("\uFEFF")) json = json.substring(1);
+        String blank = TextFiles.blankProblem(json);
+        if (blank != null) throw new CourseException(source, null, "not valid JSON: " + blank);
         JsonNode root;
         try {
             root = MAPPER.readTree(json);
@@ -225,7 +246,8 @@ public final class CourseLoader {
                 String src = string(o.get("height"), p);
                 if (src.isBlank()) throw error(p, "must be a non-empty expression");
                 try {
-                    Expression.parse(src);
+                    // Compiling checks the evaluation cost (the generated code must fit the JVM's limits).
+                    Expression.parse(src).compile();
                 } catch (ExpressionException e) {
                     String msg = String.valueOf(e.getMessage());
                     throw error(p, msg.contains("column") ? msg : msg + " at column " + e.column());
@@ -243,6 +265,14 @@ public final class CourseLoader {
             Vec2 origin = vec(required(o, path, "origin"), join(path, "origin"));
             double spacing = positive(number(required(o, path, "spacing"), join(path, "spacing")), join(path, "spacing"));
             String hp = join(path, "heights");
+            JsonNode hn = required(o, path, "heights");
+            if (hn.isArray() && hn.size() > 0 && hn.get(0).isArray()) {
+                long nodes = (long) hn.size() * hn.get(0).size();
+                if (nodes > Limits.GRID_NODES) {
+                    throw error(hp, "too many grid nodes: " + hn.size() + " rows of " + hn.get(0).size() + " = " + nodes
+                            + " (the limit is " + Limits.GRID_NODES + ")");
+                }
+            }
             double[][] heights = matrix(required(o, path, "heights"), hp, -1, -1, false);
             if (heights.length < 2 || heights[0].length < 2) {
                 throw error(hp, "must have at least 2 rows of at least 2 values (bicubic interpolation needs a 2x2 grid), got "
@@ -262,6 +292,9 @@ public final class CourseLoader {
         /** {@code [[i, j], ...]}: the cells (column i, row j) removed from the course, each listed once. */
         boolean[][] deletedCells(JsonNode n, String path, int cellRows, int cellCols) throws CourseException {
             if (!n.isArray()) throw error(path, "expected an array of [i, j] cell indices, got " + kind(n));
+            if ((long) n.size() > (long) cellRows * cellCols) {
+                throw error(path, "lists " + n.size() + " cells but the grid has only " + (long) cellRows * cellCols);
+            }
             boolean[][] mask = new boolean[cellRows][cellCols];
             for (int k = 0; k < n.size(); k++) {
                 String cp = path + "[" + k + "]";
@@ -393,6 +426,16 @@ public final class CourseLoader {
         List<Zone> zones(JsonNode n, String path) throws CourseException {
             if (n == null) return List.of();
             if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+            if (n.size() > Limits.ZONES) throw error(path, "too many zones: " + n.size() + " (the limit is " + Limits.ZONES + ")");
+            int points = 0;
+            for (JsonNode z : n) {
+                JsonNode pts = z.path("shape").path("points");
+                if (pts.isArray()) points += pts.size();
+            }
+            if (points > Limits.ALL_POLYGON_POINTS) {
+                throw error(path, "too many polygon points in all zones: " + points + " (the limit is "
+                        + Limits.ALL_POLYGON_POINTS + ")");
+            }
             List<Zone> zones = new ArrayList<>(n.size());
             for (int i = 0; i < n.size(); i++) {
                 String zp = path + "[" + i + "]";
@@ -435,6 +478,9 @@ public final class CourseLoader {
                     JsonNode pts = required(o, path, "points");
                     if (!pts.isArray()) throw error(pp, "expected an array of [x, y] points, got " + kind(pts));
                     if (pts.size() < 3) throw error(pp, "a polygon needs at least 3 points, got " + pts.size());
+                    if (pts.size() > Limits.POLYGON_POINTS) {
+                        throw error(pp, "too many points: " + pts.size() + " (the limit is " + Limits.POLYGON_POINTS + ")");
+                    }
                     List<Vec2> points = new ArrayList<>(pts.size());
                     for (int i = 0; i < pts.size(); i++) points.add(vec(pts.get(i), pp + "[" + i + "]"));
                     return new Shape.Polygon(points);
@@ -445,8 +491,22 @@ public final class CourseLoader {
         List<Obstacle> obstacles(JsonNode n, String path) throws CourseException {
             if (n == null) return List.of();
             if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+            if (n.size() > Limits.OBSTACLES) {
+                throw error(path, "too many obstacles: " + n.size() + " (the limit is " + Limits.OBSTACLES + ")");
+            }
             List<Obstacle> obstacles = new ArrayList<>(n.size());
-            for (int i = 0; i < n.size(); i++) obstacles.add(obstacle(n.get(i), path + "[" + i + "]"));
+            long triangles = 0;
+            for (int i = 0; i < n.size(); i++) {
+                Obstacle obstacle = obstacle(n.get(i), path + "[" + i + "]");
+                if (obstacle instanceof Obstacle.Model m) {
+                    triangles += m.mesh().triangleCount();
+                    if (triangles > Limits.TRIANGLES) {
+                        throw error(path + "[" + i + "]", "too many model triangles in all: " + triangles
+                                + " with this one (the limit is " + Limits.TRIANGLES + ")");
+                    }
+                }
+                obstacles.add(obstacle);
+            }
             return obstacles;
         }
 
@@ -566,7 +626,10 @@ public final class CourseLoader {
         double number(JsonNode n, String path) throws CourseException {
             if (!n.isNumber()) throw error(path, "expected a number, got " + kind(n));
             double v = n.doubleValue();
-            if (!Double.isFinite(v)) throw error(path, "must be a finite number, got " + n.asText());
+            if (!Double.isFinite(v)) throw error(path, "must be a finite number, got " + show(n));
+            if (Math.abs(v) > Limits.COORDINATE) {
+                throw error(path, "must be within +-" + CourseValidator.number(Limits.COORDINATE) + ", got " + show(n));
+            }
             return v;
         }
 

@@ -15,8 +15,39 @@ public final class CourseValidator {
      */
     public static void checkPlacement(Course course, HeightProbe probe, String sourceName) throws CourseException {
         checkInBounds(course, sourceName);
+        checkHeights(course, probe, sourceName);
         checkDry(course.start(), "start", probe, sourceName);
         checkDry(course.hole().position(), "hole.position", probe, sourceName);
+    }
+
+    /** Samples per axis of the terrain height check. */
+    static final int HEIGHT_SAMPLES = 33;
+
+    /**
+     * The terrain's height over the bounds, sampled on a 33 x 33 grid, must be finite and within
+     * {@link Limits#HEIGHT}: a formula such as exp(exp(exp(exp(x)))) overflows or gives a wall a ball
+     * bounces on forever.
+     */
+    static void checkHeights(Course course, HeightProbe probe, String sourceName) throws CourseException {
+        Bounds b = course.bounds();
+        String path = course.terrain() instanceof TerrainSpec.HeightExpression ? "terrain.height" : "terrain.grid.heights";
+        for (int j = 0; j < HEIGHT_SAMPLES; j++) {
+            for (int i = 0; i < HEIGHT_SAMPLES; i++) {
+                double x = b.minX() + (b.maxX() - b.minX()) * i / (HEIGHT_SAMPLES - 1);
+                double y = b.minY() + (b.maxY() - b.minY()) * j / (HEIGHT_SAMPLES - 1);
+                double h;
+                try {
+                    h = probe.height(x, y);
+                } catch (RuntimeException e) {
+                    throw new CourseException(sourceName, path, "cannot evaluate the terrain height at "
+                            + point(new Vec2(x, y)) + ": " + e.getMessage(), e);
+                }
+                if (!(Math.abs(h) <= Limits.HEIGHT)) {
+                    throw new CourseException(sourceName, path, "the height at " + point(new Vec2(x, y)) + " is "
+                            + approx(h) + ": heights must be finite and within +-" + number(Limits.HEIGHT) + " m");
+                }
+            }
+        }
     }
 
     /** The part of {@link #checkPlacement} that needs no terrain: start and hole centre inside the bounds. */

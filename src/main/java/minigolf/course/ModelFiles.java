@@ -2,18 +2,23 @@ package minigolf.course;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.HashMap;
 import java.util.Map;
+import minigolf.io.ConfinedFiles;
+import minigolf.io.TextFiles;
 import minigolf.mesh.ObjException;
 import minigolf.mesh.ObjParser;
 import minigolf.mesh.TriangleMesh;
 
 /**
- * Where the .obj files of {@code model} obstacles come from: a file name is resolved against the
- * course file's folder first, then the game's resources ({@code /<file>}, then
- * {@code /courses/<file>} on the classpath, where the shipped courses live).
+ * Where the .obj files of {@code model} obstacles come from: a relative file name is resolved in
+ * the course file's folder (or its subfolders), then among the game's bundled models (the
+ * classpath's {@code /courses/<file>}). A course shared by someone else must not read other files
+ * of the machine: absolute names, names that leave the folder with {@code ..}, links that point
+ * out of it and anything but regular files are refused with a message that names the path and
+ * quotes nothing of any file.
  */
 @FunctionalInterface
 interface ModelFiles {
@@ -28,13 +33,13 @@ interface ModelFiles {
         }
     }
 
-    /** Files beside the course file {@code courseFile}, then the classpath. */
+    /** Files in the folder of the course file {@code courseFile}, then the bundled models. */
     static ModelFiles beside(Path courseFile) {
         Path folder = courseFile.toAbsolutePath().getParent();
         return file -> read(folder, file);
     }
 
-    /** As {@link #beside(Path)} when the source name is a path; else the working directory, then the classpath. */
+    /** As {@link #beside(Path)} when the source name is a path; else the working directory, then the bundled models. */
     static ModelFiles besideSource(String sourceName) {
         Path folder;
         try {
@@ -55,38 +60,52 @@ interface ModelFiles {
         };
     }
 
-    private static TriangleMesh read(Path folder, String file) throws ModelException {
-        Path path;
-        try {
-            path = folder.resolve(file);
-        } catch (InvalidPathException e) {
-            throw new ModelException("not a valid file name: " + CourseException.oneLine(file));
-        }
-        if (Files.isRegularFile(path)) {
-            try (InputStream in = Files.newInputStream(path)) {
-                return parse(file, in);
-            } catch (IOException e) {
-                throw new ModelException(file + ": cannot read: " + CourseLoader.describe(e, path));
+    /** Each file read once per course, however many obstacles place it. */
+    static ModelFiles cached(ModelFiles models) {
+        Map<String, TriangleMesh> meshes = new HashMap<>();
+        return file -> {
+            TriangleMesh mesh = meshes.get(file);
+            if (mesh == null) {
+                mesh = models.load(file);
+                meshes.put(file, mesh);
             }
-        }
-        String name = file.replace('\\', '/');
-        for (String resource : new String[] {"/" + name, "/courses/" + name}) {
-            InputStream in = ModelFiles.class.getResourceAsStream(resource.replace("//", "/"));
-            if (in == null) continue;
-            try (in) {
-                return parse(file, in);
-            } catch (IOException e) {
-                throw new ModelException(file + ": cannot read: " + e.getMessage());
-            }
-        }
-        throw new ModelException("no such file: " + file + " (looked in " + folder + " and the game's resources)");
+            return mesh;
+        };
     }
 
-    private static TriangleMesh parse(String file, InputStream in) throws ModelException {
+    private static TriangleMesh read(Path folder, String file) throws ModelException {
+        String shown = CourseException.oneLine(file);
+        Path base = folder.toAbsolutePath().normalize();
+        Path relative, real;
         try {
-            return ObjParser.parse(in);
+            relative = ConfinedFiles.relativeName(file);
+            real = ConfinedFiles.resolve(base, file);
+            if (real != null) return parse(shown, TextFiles.read(real, Limits.MODEL_FILE_BYTES));
+        } catch (TextFiles.TextFileException e) {
+            String m = e.getMessage();
+            throw new ModelException(shown + ": " + (m.startsWith("refused") ? m : "cannot read: " + m));
+        }
+        // The bundled models: only below /courses on the classpath, never elsewhere in the jar.
+        InputStream in = ModelFiles.class.getResourceAsStream(ConfinedFiles.bundledResource(relative));
+        if (in != null) {
+            try (in) {
+                byte[] bytes = in.readNBytes((int) Limits.MODEL_FILE_BYTES + 1);
+                if (bytes.length > Limits.MODEL_FILE_BYTES) {
+                    throw new ModelException(shown + ": too large (the limit is " + Limits.MODEL_FILE_BYTES + " bytes)");
+                }
+                return parse(shown, TextFiles.decode(bytes));
+            } catch (IOException e) {
+                throw new ModelException(shown + ": cannot read: " + e.getMessage());
+            }
+        }
+        throw new ModelException("no such file: " + shown + " (looked in " + base + " and the game's bundled models)");
+    }
+
+    private static TriangleMesh parse(String shown, String text) throws ModelException {
+        try {
+            return ObjParser.parse(text);
         } catch (ObjException e) {
-            throw new ModelException(file + ": " + e.getMessage());
+            throw new ModelException(shown + ": " + e.getMessage());
         }
     }
 }

@@ -18,7 +18,10 @@ import java.util.Map;
  * error with its line number, so a broken file never loads half.
  */
 public final class ObjParser {
-    private static final int MAX_VERTICES = 5_000_000;
+    /** The most v (and each of vt, vn) lines one model may have; docs/course-format.md lists the limits. */
+    public static final int MAX_VERTICES = 200_000;
+    /** The most triangles one model may have, after polygons are split into triangles. */
+    public static final int MAX_TRIANGLES = 200_000;
 
     private ObjParser() {
     }
@@ -65,16 +68,18 @@ public final class ObjParser {
                     case "v" -> {
                         if (t.length < 4 || t.length > 5) throw new ObjException(lineNumber, "v needs x y z, got " + (t.length - 1) + " numbers");
                         for (int k = 1; k <= 3; k++) positions.add(number(t[k], lineNumber));
-                        if (positions.size() / 3 > MAX_VERTICES) throw new ObjException(lineNumber, "more than " + MAX_VERTICES + " vertices");
+                        if (positions.size() / 3 > MAX_VERTICES) throw new ObjException(lineNumber, "more than " + MAX_VERTICES + " vertices (the limit)");
                     }
                     case "vt" -> {
                         if (t.length < 2 || t.length > 4) throw new ObjException(lineNumber, "vt needs u [v [w]], got " + (t.length - 1) + " numbers");
                         uvs.add(number(t[1], lineNumber));
                         uvs.add(t.length > 2 ? number(t[2], lineNumber) : 0);
+                        if (uvs.size() / 2 > MAX_VERTICES) throw new ObjException(lineNumber, "more than " + MAX_VERTICES + " texture coordinates (the limit)");
                     }
                     case "vn" -> {
                         if (t.length != 4) throw new ObjException(lineNumber, "vn needs x y z, got " + (t.length - 1) + " numbers");
                         for (int k = 1; k <= 3; k++) normals.add(number(t[k], lineNumber));
+                        if (normals.size() / 3 > MAX_VERTICES) throw new ObjException(lineNumber, "more than " + MAX_VERTICES + " normals (the limit)");
                     }
                     case "f" -> face(t, lineNumber);
                     case "o", "g" -> {
@@ -101,6 +106,10 @@ public final class ObjParser {
 
         private void face(String[] t, int lineNumber) throws ObjException {
             if (t.length < 4) throw new ObjException(lineNumber, "a face needs at least 3 corners, got " + (t.length - 1));
+            // Checked before the work: a face of n corners adds n - 2 triangles.
+            if ((long) indices.size() / 3 + (t.length - 3) > MAX_TRIANGLES) {
+                throw new ObjException(lineNumber, "more than " + MAX_TRIANGLES + " triangles (the limit)");
+            }
             int[] vertex = new int[t.length - 1];
             for (int k = 1; k < t.length; k++) vertex[k - 1] = corner(t[k], lineNumber);
             for (int k = 1; k + 1 < vertex.length; k++) {

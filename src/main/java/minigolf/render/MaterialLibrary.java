@@ -82,19 +82,18 @@ public final class MaterialLibrary {
     }
 
     private static String read(Path courseFolder, String relative) {
-        if (courseFolder != null) {
-            try {
-                Path p = courseFolder.resolve(relative);
-                if (Files.isRegularFile(p)) return Files.readString(p, StandardCharsets.UTF_8);
-            } catch (IOException | InvalidPathException | java.io.UncheckedIOException e) {
-                // fall through to the classpath
+        // Confined as model files are (minigolf.io.ConfinedFiles): a course cannot make the game read other files.
+        Path name;
+        try {
+            name = minigolf.io.ConfinedFiles.relativeName(relative);
+            if (courseFolder != null) {
+                Path p = minigolf.io.ConfinedFiles.resolve(courseFolder, relative);
+                if (p != null) return minigolf.io.TextFiles.read(p, minigolf.course.Limits.MODEL_FILE_BYTES);
             }
+        } catch (IOException e) {
+            return null; // refused or unreadable: the model is drawn in its default colour
         }
-        for (String resource : new String[]{"/" + relative, "/courses/" + relative}) {
-            String text = readResource(resource.replace("//", "/"));
-            if (text != null) return text;
-        }
-        return null;
+        return readResource(minigolf.io.ConfinedFiles.bundledResource(name));
     }
 
     private static String readResource(String name) {

@@ -1,0 +1,45 @@
+package minigolf.course;
+
+import minigolf.mesh.ObjParser;
+
+/**
+ * The most any file may ask for, checked before the work is done, so that every accepted course,
+ * model, saved game and settings file loads in well under 2 s and 1 GB (the worst cases are timed
+ * by {@code minigolf bench-limits}; docs/course-format.md lists the limits). Each check fails with
+ * one line naming the file, the field and the limit.
+ */
+public final class Limits {
+    /** A course file (a 1024 x 1024 grid written with 4 decimals is about 9 MB). */
+    public static final long COURSE_FILE_BYTES = 16L << 20;
+    /** One .obj model file. */
+    public static final long MODEL_FILE_BYTES = 16L << 20;
+    /** A saved game, which embeds its course. */
+    public static final long SAVE_FILE_BYTES = COURSE_FILE_BYTES + (1L << 20);
+    /** The settings file. */
+    public static final long SETTINGS_FILE_BYTES = 64L << 10;
+    /** Nesting of JSON arrays and objects (a course needs 5 levels). */
+    public static final int JSON_DEPTH = 32;
+    /** Nodes of a height grid (1024 x 1024). */
+    public static final int GRID_NODES = 1 << 20;
+    /** Obstacles of one course. */
+    public static final int OBSTACLES = 1_000;
+    /** Friction zones of one course. */
+    public static final int ZONES = 500;
+    /** Points of one polygon zone. */
+    public static final int POLYGON_POINTS = 1_000;
+    /** Points of all polygon zones together (the friction lookup visits them on every step). */
+    public static final int ALL_POLYGON_POINTS = 10_000;
+    /** Vertices (v lines) of one .obj model. */
+    public static final int MODEL_VERTICES = ObjParser.MAX_VERTICES;
+    /** Triangles of one .obj model (after polygons are split). */
+    public static final int MODEL_TRIANGLES = ObjParser.MAX_TRIANGLES;
+    /** Model triangles of all model obstacles together, a model placed twice counted twice. */
+    public static final int TRIANGLES = 250_000;
+    /** The terrain's height (sampled over the bounds) stays within +-this many metres. */
+    public static final double HEIGHT = 1_000;
+    /** Coordinates and sizes (bounds, positions, radii) stay within +-this many metres. */
+    public static final double COORDINATE = 100_000;
+
+    private Limits() {
+    }
+}
