@@ -78,6 +78,7 @@ public final class GameApp implements UiActions, UiView {
     private BotTurn botTurn;
     private String message;
     private double messageUntil;
+    private String notice;
     private final Deque<double[]> script;
     private final Screens screens = new Screens(this);
     private final Thumbnails thumbnails = new Thumbnails();
@@ -102,8 +103,13 @@ public final class GameApp implements UiActions, UiView {
         this.options = options;
         this.store = options.store();
         String[] problem = new String[1];
+        store.removeStaleTemporaries();
         this.settings = store.loadOrDefaults(problem);
-        if (problem[0] != null) say("settings ignored: " + problem[0]);
+        if (problem[0] != null) {
+            // Shown until dismissed (a timed message would expire before the window exists) and on stderr.
+            notice = "Settings ignored, the defaults are used: " + problem[0];
+            System.err.println("minigolf: settings ignored, the defaults are used: " + problem[0]);
+        }
         this.world = world;
         this.coursePath = options.coursePath();
         this.script = new ArrayDeque<>(options.scriptedShots());
@@ -621,6 +627,16 @@ public final class GameApp implements UiActions, UiView {
         } catch (IOException e) {
             return List.of();
         }
+    }
+
+    @Override
+    public String notice() {
+        return notice;
+    }
+
+    @Override
+    public void dismissNotice() {
+        notice = null;
     }
 
     @Override

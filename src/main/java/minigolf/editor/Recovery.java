@@ -8,7 +8,9 @@ import minigolf.course.Course;
 import minigolf.course.CourseException;
 import minigolf.course.CourseLoader;
 import minigolf.course.CourseWriter;
+import minigolf.course.Limits;
 import minigolf.io.AtomicFile;
+import minigolf.io.TextFiles;
 
 /**
  * The editor's autosave: the course being edited is written (atomically) to a recovery file in
@@ -24,6 +26,8 @@ public final class Recovery {
     private final Path origin;
     private double lastSave = Double.NEGATIVE_INFINITY;
     private long savedVersion = -1;
+    /** A recovery file of an earlier session is waiting for the user's choice: never overwrite or remove it. */
+    private boolean held;
 
     /** A recovered course and the file it was edited from (null for a course never saved). */
     public record Recovered(Course course, Path originalFile) {
@@ -36,6 +40,34 @@ public final class Recovery {
 
     public Path file() {
         return course;
+    }
+
+    /**
+     * At the start of a session: removes temporary files a killed autosave left behind and, if an
+     * earlier session's recovery file is waiting, holds it (no autosave replaces it and
+     * {@link #closeCleanly()} keeps it) until {@link #release()} or {@link #clear()}.
+     *
+     * @return whether a recovery file is waiting
+     */
+    public boolean start() {
+        AtomicFile.removeStaleTemporaries(course.getParent());
+        held = exists();
+        return held;
+    }
+
+    /** Whether an earlier session's recovery file is being kept. */
+    public boolean isHeld() {
+        return held;
+    }
+
+    /** The user recovered the course: from now on autosaves may replace the file. */
+    public void release() {
+        held = false;
+    }
+
+    /** A clean close: the recovery file is removed unless an earlier session's file is still held. */
+    public void closeCleanly() {
+        if (!held) clear();
     }
 
     /** Writes the course now. */
@@ -51,7 +83,7 @@ public final class Recovery {
      * interval has passed since the last autosave. Returns whether it wrote.
      */
     public boolean autosave(CourseEditor editor, double nowSeconds) throws IOException {
-        if (!editor.isDirty() || nowSeconds - lastSave < INTERVAL_SECONDS || savedVersion == editor.version()) return false;
+        if (held || !editor.isDirty() || nowSeconds - lastSave < INTERVAL_SECONDS || savedVersion == editor.version()) return false;
         save(editor.toCourse(), editor.file());
         lastSave = nowSeconds;
         savedVersion = editor.version();
@@ -67,9 +99,9 @@ public final class Recovery {
     public Recovered load() throws CourseException {
         Path original = null;
         try {
-            String text = Files.isRegularFile(origin) ? Files.readString(origin, StandardCharsets.UTF_8).trim() : "";
+            String text = Files.isRegularFile(origin) ? TextFiles.read(origin, 64 * 1024).trim() : "";
             if (!text.isEmpty()) original = Path.of(text);
-            String json = Files.readString(course, StandardCharsets.UTF_8);
+            String json = TextFiles.read(course, Limits.COURSE_FILE_BYTES);
             String source = original != null ? original.toString() : course.toString();
             return new Recovered(CourseLoader.parse(json, source), original);
         } catch (IOException | RuntimeException e) {
@@ -87,5 +119,6 @@ public final class Recovery {
         }
         savedVersion = -1;
         lastSave = Double.NEGATIVE_INFINITY;
+        held = false;
     }
 }

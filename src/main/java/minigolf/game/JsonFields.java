@@ -1,22 +1,24 @@
 package minigolf.game;
 
+import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.StreamReadConstraints;
 import com.fasterxml.jackson.core.json.JsonReadFeature;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.json.JsonMapper;
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Iterator;
 import java.util.List;
+import minigolf.course.Limits;
+import minigolf.io.TextFiles;
 
 /** Strict reading of the game's own JSON files, field by field, with one-line errors naming the field. */
 final class JsonFields {
-    static final ObjectMapper MAPPER = JsonMapper.builder()
+    static final ObjectMapper MAPPER = JsonMapper.builder(JsonFactory.builder()
+                    .streamReadConstraints(StreamReadConstraints.builder().maxNestingDepth(Limits.JSON_DEPTH).build())
+                    .build())
             .enable(DeserializationFeature.FAIL_ON_READING_DUP_TREE_KEY)
             .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
             .disable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
@@ -28,17 +30,18 @@ final class JsonFields {
         this.source = source;
     }
 
-    static String readText(Path file) throws SaveGameException {
+    /** The file's text: a regular UTF-8 file of at most {@code maxBytes} (see {@link TextFiles}). */
+    static String readText(Path file, long maxBytes) throws SaveGameException {
         try {
-            return Files.readString(file, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new SaveGameException(String.valueOf(file), null, "cannot read: no such file");
-        } catch (IOException | RuntimeException e) {
-            throw new SaveGameException(String.valueOf(file), null, "cannot read: " + e.getMessage(), e);
+            return TextFiles.read(file, maxBytes);
+        } catch (TextFiles.TextFileException e) {
+            throw new SaveGameException(String.valueOf(file), null, "cannot read: " + e.getMessage());
         }
     }
 
     JsonNode parse(String json) throws SaveGameException {
+        String blank = TextFiles.blankProblem(json);
+        if (blank != null) throw new SaveGameException(source, null, "not valid JSON: " + blank);
         try {
             JsonNode root = MAPPER.readTree(json.startsWith("\uFEFF") ? json.substring(1) : json);
             if (root == null || root.isMissingNode()) throw new SaveGameException(source, null, "not valid JSON: the file is empty");
@@ -117,6 +120,14 @@ final class JsonFields {
         JsonNode v = field(node, path, name);
         if (!v.isArray()) throw error(join(path, name), "must be an array");
         return v;
+    }
+
+    /** A value from the file for a message: quoted, one line, cut short. */
+    static String shown(String value) {
+        String v = value.length() > 40 ? value.substring(0, 37) + "..." : value;
+        StringBuilder sb = new StringBuilder("\"");
+        for (char c : v.toCharArray()) sb.append(Character.isISOControl(c) ? '?' : c);
+        return sb.append('"').toString();
     }
 
     static String join(String path, String name) {

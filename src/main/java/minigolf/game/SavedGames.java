@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import minigolf.course.CourseException;
 import minigolf.course.CourseWriter;
+import minigolf.course.Limits;
 import minigolf.io.AtomicFile;
 import minigolf.physics.Integrator;
 import minigolf.physics.Outcome;
@@ -52,7 +53,7 @@ public final class SavedGames {
     }
 
     public static Loaded load(Path file) throws SaveGameException {
-        return parse(JsonFields.readText(file), String.valueOf(file));
+        return parse(JsonFields.readText(file, Limits.SAVE_FILE_BYTES), String.valueOf(file));
     }
 
     public static String toJson(Game game) {
@@ -103,6 +104,20 @@ public final class SavedGames {
     }
 
     public static Loaded parse(String json, String source) throws SaveGameException {
+        try {
+            return parseChecked(json, source);
+        } catch (OutOfMemoryError e) {
+            throw new SaveGameException(source, null, "too large to load: the Java heap ran out of memory");
+        } catch (StackOverflowError e) {
+            throw new SaveGameException(source, null, "too deeply nested to load");
+        }
+    }
+
+    private static Loaded parseChecked(String json, String source) throws SaveGameException {
+        if (json.length() > Limits.SAVE_FILE_BYTES) {
+            throw new SaveGameException(source, null, "too large: " + json.length() + " characters (the limit is "
+                    + Limits.SAVE_FILE_BYTES + ")");
+        }
         JsonFields f = new JsonFields(source);
         JsonNode root = f.parse(json);
         f.onlyFields(root, null, TOP);
@@ -122,12 +137,16 @@ public final class SavedGames {
         f.onlyFields(sim, "simulation", SIMULATION);
         Integrator integrator = Integrator.fromName(f.text(sim, "simulation", "integrator"));
         if (integrator == null) throw f.error("simulation.integrator", "must be euler, rk2 or rk4");
-        SimulationSettings settings;
-        try {
-            settings = new SimulationSettings(integrator, f.number(sim, "simulation", "dt"), f.number(sim, "simulation", "maxTime"));
-        } catch (IllegalArgumentException e) {
-            throw f.error("simulation", e.getMessage());
+        // The rules of the settings file (UserSettings), which is where a game's step comes from.
+        double dt = f.number(sim, "simulation", "dt");
+        if (!(dt >= UserSettings.MIN_DT && dt <= UserSettings.MAX_DT)) {
+            throw f.error("simulation.dt", "must be 1/1000 to 1/30 s, got " + dt);
         }
+        double maxTime = f.number(sim, "simulation", "maxTime");
+        if (!(maxTime >= 1 && maxTime <= SimulationSettings.DEFAULT_MAX_TIME)) {
+            throw f.error("simulation.maxTime", "must be 1 to " + SimulationSettings.DEFAULT_MAX_TIME + " s, got " + maxTime);
+        }
+        SimulationSettings settings = new SimulationSettings(integrator, dt, maxTime);
         int strokeLimit = f.integer(root, null, "strokeLimit", 1, Game.MAX_STROKE_LIMIT);
 
         JsonNode playersNode = f.array(root, null, "players");
@@ -143,6 +162,10 @@ public final class SavedGames {
             PlayerKind kind = PlayerKind.fromJsonName(f.text(o, p, "kind"));
             if (kind == null) throw f.error(p + ".kind", "must be human or bot");
             String bot = kind == PlayerKind.BOT ? f.text(o, p, "bot") : null;
+            if (bot != null && !BotCatalog.names().contains(bot)) {
+                throw f.error(p + ".bot", "no bot named " + JsonFields.shown(bot) + " (known: "
+                        + String.join(", ", BotCatalog.names()) + ")");
+            }
             try {
                 players.add(new Player(f.text(o, p, "name"), kind, bot));
             } catch (IllegalArgumentException e) {
@@ -150,6 +173,8 @@ public final class SavedGames {
             }
             double[] ball = f.vec(o, p, "ball");
             if (!world.playArea().contains(ball[0], ball[1])) throw f.error(p + ".ball", "lies outside the course (its bounds or a deleted cell)");
+            double h = world.terrain().height(ball[0], ball[1]);
+            if (!(h >= 0)) throw f.error(p + ".ball", "lies in water (h = " + (float) h + "), where no ball can rest");
             int strokes = f.integer(o, p, "strokes", 0, 10_000);
             int penalties = f.integer(o, p, "penalties", 0, strokes);
             PlayerStatus status = PlayerStatus.fromJsonName(f.text(o, p, "status"));

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import minigolf.course.Limits;
 import minigolf.io.AtomicFile;
 import minigolf.physics.Integrator;
 
@@ -57,12 +58,17 @@ public final class SettingsStore {
         return directory.resolve("saves");
     }
 
+    /** Removes the temporary files that a process killed while saving left in the config and saves folders. */
+    public int removeStaleTemporaries() {
+        return AtomicFile.removeStaleTemporaries(directory) + AtomicFile.removeStaleTemporaries(savesDirectory());
+    }
+
     /** The stored settings, or the defaults when there is no file yet. */
     public UserSettings load() throws SaveGameException {
         if (!Files.exists(file())) return UserSettings.DEFAULTS;
         String source = file().toString();
         JsonFields f = new JsonFields(source);
-        JsonNode root = f.parse(JsonFields.readText(file()));
+        JsonNode root = f.parse(JsonFields.readText(file(), Limits.SETTINGS_FILE_BYTES));
         f.onlyFields(root, null, FIELDS);
         UserSettings d = UserSettings.DEFAULTS;
         try {
@@ -91,6 +97,28 @@ public final class SettingsStore {
         }
     }
 
+    /** The name a broken settings file is moved to before new settings are written, or null if it is not broken. */
+    public Path keepBrokenFile() throws SaveGameException {
+        if (!Files.exists(file(), java.nio.file.LinkOption.NOFOLLOW_LINKS)) return null;
+        try {
+            load();
+            return null;
+        } catch (SaveGameException broken) {
+            for (int n = 1; n < 1000; n++) {
+                Path kept = directory.resolve(n == 1 ? "settings.broken.json" : "settings.broken-" + n + ".json");
+                if (Files.exists(kept, java.nio.file.LinkOption.NOFOLLOW_LINKS)) continue;
+                try {
+                    Files.move(file(), kept);
+                    return kept;
+                } catch (IOException e) {
+                    throw new SaveGameException(file().toString(), null, "cannot save: the broken settings file"
+                            + " cannot be moved aside to " + kept.getFileName() + ": " + e.getMessage(), e);
+                }
+            }
+            throw new SaveGameException(file().toString(), null, "cannot save: too many settings.broken-N.json files");
+        }
+    }
+
     /** Loads the settings; a broken file gives the defaults and {@code problem[0]} its one-line message. */
     public UserSettings loadOrDefaults(String[] problem) {
         try {
@@ -101,7 +129,13 @@ public final class SettingsStore {
         }
     }
 
+    /**
+     * Writes the settings. A broken settings file is never overwritten: it is first renamed to
+     * {@code settings.broken.json} (or {@code settings.broken-2.json}, ...), so nothing the user
+     * wrote is lost.
+     */
     public void save(UserSettings s) throws SaveGameException {
+        keepBrokenFile();
         ObjectNode root = JsonFields.MAPPER.createObjectNode();
         root.put("integrator", s.integrator().cliName());
         root.put("dt", s.dt());

@@ -66,6 +66,36 @@ public final class AtomicFile {
         }
     }
 
+    /** Temporary files older than this are left over from a killed process; younger ones may be in use. */
+    public static final long STALE_AFTER_MILLIS = 60_000;
+
+    /**
+     * Removes the temporary files ({@code .name.<hex>.tmp}) that a process killed while writing left
+     * in {@code directory}, if they are older than {@link #STALE_AFTER_MILLIS}. Returns how many it
+     * removed; a missing or unreadable folder removes nothing.
+     */
+    public static int removeStaleTemporaries(Path directory) {
+        int removed = 0;
+        long now = System.currentTimeMillis();
+        try (java.nio.file.DirectoryStream<Path> files = Files.newDirectoryStream(directory, ".*.tmp")) {
+            for (Path f : files) {
+                String name = f.getFileName().toString();
+                if (!name.matches("\\..+\\.[0-9a-f]{1,16}\\.tmp")) continue;
+                try {
+                    if (!Files.isRegularFile(f, java.nio.file.LinkOption.NOFOLLOW_LINKS)) continue;
+                    if (now - Files.getLastModifiedTime(f).toMillis() < STALE_AFTER_MILLIS) continue;
+                    Files.delete(f);
+                    removed++;
+                } catch (IOException | RuntimeException ignored) {
+                    // someone else removed it, or it cannot be removed: nothing is lost either way
+                }
+            }
+        } catch (IOException | RuntimeException ignored) {
+            // no folder yet
+        }
+        return removed;
+    }
+
     /** The operating system's reason without the file names ("permission denied", "Is a directory"). */
     private static String reason(Exception e) {
         if (e instanceof NoSuchFileException) return "no such file or directory";

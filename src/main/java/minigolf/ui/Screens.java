@@ -90,6 +90,14 @@ public final class Screens {
             case SCORECARD -> scorecard(view, w, h);
             case TEST_BOT -> hud(view, w, h, false);
         }
+        if (view.notice() != null) {
+            ImGui.setNextWindowPos(w * 0.5f, 16, ImGuiCond.Always, 0.5f, 0f);
+            ImGui.begin("Notice##notice", ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.AlwaysAutoResize
+                    | ImGuiWindowFlags.NoMove);
+            ImGui.text(view.notice());
+            if (ImGui.button("Dismiss")) actions.dismissNotice();
+            ImGui.end();
+        }
         if (view.message() != null) {
             ImGui.setNextWindowPos(w * 0.5f, h - 16, ImGuiCond.Always, 0.5f, 1f);
             ImGui.begin("##message", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize

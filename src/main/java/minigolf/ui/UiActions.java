@@ -31,4 +31,8 @@ public interface UiActions {
     void createCourse();
 
     void quit();
+
+    /** Hides the {@link UiView#notice()}. */
+    default void dismissNotice() {
+    }
 }

@@ -31,6 +31,14 @@ public interface UiView {
     /** A one-line message for the player (errors, "saved to ..."), or null. */
     String message();
 
+    /**
+     * A notice that stays until the player dismisses it (a broken settings file that was ignored),
+     * or null.
+     */
+    default String notice() {
+        return null;
+    }
+
     /** The aim being dragged: speed in m/s, or negative when not aiming. */
     double aimSpeed();
 

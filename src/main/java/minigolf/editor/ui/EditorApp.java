@@ -142,7 +142,16 @@ public final class EditorApp {
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
             try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale)) {
                 imgui = ui;
-                if (options.frames() <= 0 && recovery.exists()) dialog = Dialog.RECOVERY;
+                if (recovery.start()) {
+                    if (options.frames() <= 0) {
+                        dialog = Dialog.RECOVERY;
+                    } else {
+                        // A scripted run cannot ask: it keeps the file for the next interactive start and says so.
+                        System.err.println("minigolf: a recovery file from an editor session that did not close is"
+                                + " kept: " + recovery.file() + " (open the editor without --frames to recover it);"
+                                + " this run does not autosave");
+                    }
+                }
                 try {
                     buildScene();
                     loop();
@@ -153,7 +162,7 @@ public final class EditorApp {
             }
         }
         // A normal exit: the recovery file is no longer needed (a crash leaves it for the next start).
-        if (dialog != Dialog.RECOVERY) recovery.clear();
+        recovery.closeCleanly();
         if (playFile != null) playFile.toFile().delete();
         return editor;
     }
@@ -888,6 +897,7 @@ public final class EditorApp {
                 if (ImGui.button("Recover")) {
                     try {
                         replaceEditor(CourseEditor.recovered(recovery.load()));
+                        recovery.release();
                         say("recovered: save it to keep it");
                     } catch (CourseException e) {
                         say(e.getMessage());
