@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
         subcommands = {PlayCommand.class, SimulateCommand.class, BenchPhysicsCommand.class, BenchAccuracyCommand.class,
                 RenderCommand.class,
                 BenchRenderCommand.class, SolveCommand.class, ExperimentCommand.class,
-                EditCommand.class, BenchEditorCommand.class})
+                EditCommand.class, BenchEditorCommand.class, BenchLimitsCommand.class})
 public final class MinigolfCommand implements Callable<Integer> {
 
     @Override

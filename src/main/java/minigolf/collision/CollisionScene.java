@@ -21,6 +21,8 @@ public final class CollisionScene {
     /** Triangles per obstacle tree-top rim: the rim circle is a 32-gon (within 0.5% of the radius). */
     private static final int RIM_SEGMENTS = 32;
     private static final int MAX_CELLS_PER_AXIS = 512;
+    /** At most this many (cell, shape) entries in the grid (32 MB of ints). */
+    private static final long MAX_CELL_ENTRIES = 8_000_000;
 
     private final double radius;
     // Triangles: 9 vertex coordinates + unit normal (12 doubles); bounding boxes 6 doubles per shape.
@@ -59,6 +61,12 @@ public final class CollisionScene {
         size = Math.max(size, Math.max(maxX - minX, maxY - minY) / MAX_CELLS_PER_AXIS);
         size = Math.max(0.05, Math.min(1.0, size));
         size = Math.max(size, Math.max(maxX - minX, maxY - minY) / MAX_CELLS_PER_AXIS);
+        // A shape is listed in every cell its box touches: thousands of long walls across a course would
+        // fill gigabytes. Past a budget the cells grow, so memory stays in proportion to the shapes.
+        while (cellEntries(shapes, minX, minY, maxX, maxY, size) > MAX_CELL_ENTRIES
+                && size < Math.max(maxX - minX, maxY - minY)) {
+            size *= 2;
+        }
         this.cellSize = size;
         this.originX = minX;
         this.originY = minY;
@@ -423,6 +431,25 @@ public final class CollisionScene {
             out[at + 4] = cylinders[o + 1] + r;
             out[at + 5] = cylinders[o + 4];
         }
+    }
+
+    /** How many (cell, shape) entries a grid of this cell size would hold, as the constructor fills it. */
+    private long cellEntries(int shapes, double minX, double minY, double maxX, double maxY, double size) {
+        long columns = Math.max(1, (long) Math.ceil((maxX - minX) / size));
+        long rows = Math.max(1, (long) Math.ceil((maxY - minY) / size));
+        long entries = 0;
+        for (int s = 0; s < shapes; s++) {
+            long i0 = clamp((long) Math.floor((boxes[6 * s] - radius - minX) / size), columns);
+            long i1 = clamp((long) Math.floor((boxes[6 * s + 3] + radius - minX) / size), columns);
+            long j0 = clamp((long) Math.floor((boxes[6 * s + 1] - radius - minY) / size), rows);
+            long j1 = clamp((long) Math.floor((boxes[6 * s + 4] + radius - minY) / size), rows);
+            entries += (i1 - i0 + 1) * (j1 - j0 + 1);
+        }
+        return entries;
+    }
+
+    private static long clamp(long i, long count) {
+        return i < 0 ? 0 : Math.min(i, count - 1);
     }
 
     private int column(double x) {

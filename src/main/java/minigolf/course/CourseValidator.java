@@ -15,9 +15,9 @@ public final class CourseValidator {
      */
     public static void checkPlacement(Course course, HeightProbe probe, String sourceName) throws CourseException {
         checkInBounds(course, sourceName);
-        checkHeights(course, probe, sourceName);
         checkDry(course.start(), "start", probe, sourceName);
         checkDry(course.hole().position(), "hole.position", probe, sourceName);
+        checkHeights(course, probe, sourceName);
     }
 
     /** Samples per axis of the terrain height check. */

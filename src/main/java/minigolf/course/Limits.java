@@ -9,18 +9,18 @@ import minigolf.mesh.ObjParser;
  * one line naming the file, the field and the limit.
  */
 public final class Limits {
-    /** A course file (a 1024 x 1024 grid written with 4 decimals is about 9 MB). */
-    public static final long COURSE_FILE_BYTES = 16L << 20;
+    /** A course file (a 512 x 512 grid with both friction grids is about 4 MB). */
+    public static final long COURSE_FILE_BYTES = 8L << 20;
     /** One .obj model file. */
-    public static final long MODEL_FILE_BYTES = 16L << 20;
+    public static final long MODEL_FILE_BYTES = 8L << 20;
     /** A saved game, which embeds its course. */
     public static final long SAVE_FILE_BYTES = COURSE_FILE_BYTES + (1L << 20);
     /** The settings file. */
     public static final long SETTINGS_FILE_BYTES = 64L << 10;
     /** Nesting of JSON arrays and objects (a course needs 5 levels). */
     public static final int JSON_DEPTH = 32;
-    /** Nodes of a height grid (1024 x 1024). */
-    public static final int GRID_NODES = 1 << 20;
+    /** Nodes of a height grid (512 x 512). */
+    public static final int GRID_NODES = 1 << 18;
     /** Obstacles of one course. */
     public static final int OBSTACLES = 1_000;
     /** Friction zones of one course. */
@@ -34,11 +34,9 @@ public final class Limits {
     /** Triangles of one .obj model (after polygons are split). */
     public static final int MODEL_TRIANGLES = ObjParser.MAX_TRIANGLES;
     /** Model triangles of all model obstacles together, a model placed twice counted twice. */
-    public static final int TRIANGLES = 250_000;
+    public static final int TRIANGLES = 200_000;
     /** The terrain's height (sampled over the bounds) stays within +-this many metres. */
     public static final double HEIGHT = 1_000;
-    /** Coordinates and sizes (bounds, positions, radii) stay within +-this many metres. */
-    public static final double COORDINATE = 100_000;
 
     private Limits() {
     }

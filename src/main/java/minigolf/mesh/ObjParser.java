@@ -19,9 +19,11 @@ import java.util.Map;
  */
 public final class ObjParser {
     /** The most v (and each of vt, vn) lines one model may have; docs/course-format.md lists the limits. */
-    public static final int MAX_VERTICES = 200_000;
+    public static final int MAX_VERTICES = 50_000;
     /** The most triangles one model may have, after polygons are split into triangles. */
-    public static final int MAX_TRIANGLES = 200_000;
+    public static final int MAX_TRIANGLES = 50_000;
+
+    private static final java.util.regex.Pattern WHITESPACE = java.util.regex.Pattern.compile("\\s+");
 
     private ObjParser() {
     }
@@ -63,7 +65,7 @@ public final class ObjParser {
                 line = line.strip();
                 if (line.isEmpty()) continue;
                 if (i == 0 && line.charAt(0) == '\uFEFF') line = line.substring(1).strip();
-                String[] t = line.split("\\s+");
+                String[] t = WHITESPACE.split(line);
                 switch (t[0]) {
                     case "v" -> {
                         if (t.length < 4 || t.length > 5) throw new ObjException(lineNumber, "v needs x y z, got " + (t.length - 1) + " numbers");

@@ -145,7 +145,7 @@ class CourseLoaderTest {
 
     @Test
     void emptyDocumentIsAnError() {
-        assertEquals("courses/x.json: not valid JSON: the file is empty", error("  \n"));
+        assertEquals("courses/x.json: not valid JSON: the file holds only whitespace (3 characters), no content", error("  \n"));
     }
 
     @Test
@@ -399,7 +399,8 @@ class CourseLoaderTest {
         Path f = dir.resolve("bad.json");
         Files.write(f, new byte[]{'{', (byte) 0xC3, (byte) 0x28, '}'});
         CourseException e = assertThrows(CourseException.class, () -> CourseLoader.load(f));
-        assertEquals(f + ": cannot read: not valid UTF-8 text", e.getMessage());
+        assertEquals(f + ": cannot read: not UTF-8 text (an invalid byte sequence at byte 1): binary data or another encoding",
+                e.getMessage());
     }
 
     @Test
