@@ -145,6 +145,8 @@ public final class CourseLoader {
         JsonNode root;
         try {
             root = MAPPER.readTree(json);
+        } catch (com.fasterxml.jackson.core.exc.StreamConstraintsException e) {
+            throw new CourseException(source, null, "not valid JSON: " + constraint(e));
         } catch (JsonProcessingException e) {
             String msg = firstLine(e.getOriginalMessage());
             JsonLocation loc = e.getLocation();
@@ -164,6 +166,13 @@ public final class CourseLoader {
             throw new CourseException(source, null, "not valid JSON: the file is empty");
         }
         return root;
+    }
+
+    /** Jackson's limits in our words: "nested more than 32 levels deep (the limit)". */
+    static String constraint(com.fasterxml.jackson.core.exc.StreamConstraintsException e) {
+        String m = String.valueOf(e.getOriginalMessage());
+        if (m.contains("nesting depth")) return "nested more than " + Limits.JSON_DEPTH + " levels deep (the limit)";
+        return firstLine(m);
     }
 
     private static String firstLine(String s) {

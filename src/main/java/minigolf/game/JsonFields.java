@@ -46,6 +46,10 @@ final class JsonFields {
             JsonNode root = MAPPER.readTree(json.startsWith("\uFEFF") ? json.substring(1) : json);
             if (root == null || root.isMissingNode()) throw new SaveGameException(source, null, "not valid JSON: the file is empty");
             return object(root, null);
+        } catch (com.fasterxml.jackson.core.exc.StreamConstraintsException e) {
+            String m = String.valueOf(e.getOriginalMessage());
+            throw new SaveGameException(source, null, "not valid JSON: " + (m.contains("nesting depth")
+                    ? "nested more than " + Limits.JSON_DEPTH + " levels deep (the limit)" : m.lines().findFirst().orElse("")));
         } catch (JsonProcessingException e) {
             String msg = String.valueOf(e.getOriginalMessage()).lines().findFirst().orElse("");
             String where = e.getLocation() != null && e.getLocation().getLineNr() > 0
