@@ -41,6 +41,7 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         Integrator chosen = Integrator.fromName(integrator);
         if (chosen == null) throw new UserError("--integrator: expected rk4, rk2 or euler, got '" + integrator + "'");
         if (shots < 1) throw new UserError("--shots: must be at least 1, got " + shots);
+        if (!(dt > 0) || dt > 0.1) throw new UserError("--dt: must be in (0, 0.1] seconds, got " + dt);
         World world = CourseArgument.load(course);
         Simulator tested = new Simulator(world, SimulationSettings.DEFAULT.withIntegrator(chosen).withDt(dt));
         Simulator reference = new Simulator(world, SimulationSettings.DEFAULT.withDt(1e-5));

@@ -27,6 +27,12 @@ public final class MinigolfCommand implements Callable<Integer> {
         CommandLine commandLine = new CommandLine(new MinigolfCommand());
         commandLine.setOut(out);
         commandLine.setErr(err);
+        // Bad options: one line (picocli would add the whole usage text), exit code 2.
+        commandLine.setParameterExceptionHandler((ex, arguments) -> {
+            err.println("minigolf: " + firstLine(ex.getMessage()));
+            err.flush();
+            return 2;
+        });
         commandLine.setExecutionExceptionHandler((exception, cmd, parseResult) -> {
             if (exception instanceof UserError || exception instanceof CourseException) {
                 err.println("minigolf: " + exception.getMessage());
