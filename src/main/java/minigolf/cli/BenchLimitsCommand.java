@@ -22,8 +22,9 @@ import picocli.CommandLine.Spec;
 @Command(name = "bench-limits",
         description = {"Writes a course at each documented limit (the worst cases an accepted file can ask for) and",
                 "times loading it as the game does (read, validate, compile the terrain, build the collision scene).",
-                "Prints each case's first (cold) load time, the heap's peak and the file size; exits 1 if a case",
-                "takes 2 s or more. Run it with -Xmx1g to check the memory bound too."})
+                "After loading the bundled courses once (as the game's menu does), prints each case's first load",
+                "time, its best of three, the heap's peak during the first load and the file size; exits 1 if a",
+                "first load takes 2 s or more. Run it with -Xmx1g to check the memory bound too."})
 final class BenchLimitsCommand implements Callable<Integer> {
     static final double MAX_SECONDS = 2.0;
 
@@ -39,6 +40,7 @@ final class BenchLimitsCommand implements Callable<Integer> {
         Path folder = temporary ? Files.createTempDirectory("minigolf-limits") : dir;
         try {
             Map<String, Path> cases = LimitCases.write(folder);
+            warmUp();
             ArrayNode rows = Json.MAPPER.createArrayNode();
             boolean ok = true;
             for (Map.Entry<String, Path> c : cases.entrySet()) {
@@ -53,10 +55,17 @@ final class BenchLimitsCommand implements Callable<Integer> {
                 }
                 double seconds = (System.nanoTime() - start) / 1e9;
                 long peak = heapPeak();
+                double best = seconds;
+                for (int k = 0; k < 2; k++) {
+                    long again = System.nanoTime();
+                    loadQuietly(c.getValue());
+                    best = Math.min(best, (System.nanoTime() - again) / 1e9);
+                }
                 ObjectNode row = rows.addObject();
                 row.put("case", c.getKey());
                 row.put("fileBytes", size(c.getValue()));
                 row.put("loadSeconds", Math.round(seconds * 1000) / 1000.0);
+                row.put("bestOf3Seconds", Math.round(best * 1000) / 1000.0);
                 row.put("heapPeakMB", Math.round((peak) / 1e5) / 10.0);
                 row.put("heapBeforeMB", Math.round(before / 1e5) / 10.0);
                 ok &= seconds < MAX_SECONDS;
@@ -70,6 +79,29 @@ final class BenchLimitsCommand implements Callable<Integer> {
             return ok ? 0 : 1;
         } finally {
             if (temporary) deleteTree(folder);
+        }
+    }
+
+    /**
+     * The game has loaded its menu's courses before a player opens one: the same with the bundled
+     * courses (grid, obstacles, the windmill model, zones) brings the loader's classes in, so each
+     * case's first load measures its own data, not the JVM's start.
+     */
+    private static void warmUp() {
+        for (String name : new String[]{"grid-256.json", "lake-obstacles.json", "windmill.json", "sand.json", "lake.json"}) {
+            try (java.io.InputStream in = BenchLimitsCommand.class.getResourceAsStream("/courses/" + name)) {
+                if (in != null) World.parse(new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8), "courses/" + name);
+            } catch (IOException | CourseException e) {
+                throw new UserError("bench-limits: the bundled course " + name + " does not load: " + e.getMessage());
+            }
+        }
+    }
+
+    private static void loadQuietly(Path file) {
+        try {
+            World.load(file);
+        } catch (CourseException e) {
+            throw new UserError("bench-limits: " + e.getMessage());
         }
     }
 

@@ -23,8 +23,6 @@ public final class ObjParser {
     /** The most triangles one model may have, after polygons are split into triangles. */
     public static final int MAX_TRIANGLES = 50_000;
 
-    private static final java.util.regex.Pattern WHITESPACE = java.util.regex.Pattern.compile("\\s+");
-
     private ObjParser() {
     }
 
@@ -65,7 +63,7 @@ public final class ObjParser {
                 line = line.strip();
                 if (line.isEmpty()) continue;
                 if (i == 0 && line.charAt(0) == '\uFEFF') line = line.substring(1).strip();
-                String[] t = WHITESPACE.split(line);
+                String[] t = tokens(line);
                 switch (t[0]) {
                     case "v" -> {
                         if (t.length < 4 || t.length > 5) throw new ObjException(lineNumber, "v needs x y z, got " + (t.length - 1) + " numbers");
@@ -232,6 +230,25 @@ public final class ObjParser {
         private static String shorten(String s) {
             return s.length() > 40 ? s.substring(0, 37) + "..." : s;
         }
+    }
+
+    /** The line (already stripped) split at runs of whitespace; by hand, since this runs once per line of big files. */
+    static String[] tokens(String line) {
+        int count = 0, n = line.length();
+        for (int i = 0; i < n; ) {
+            while (i < n && Character.isWhitespace(line.charAt(i))) i++;
+            if (i < n) count++;
+            while (i < n && !Character.isWhitespace(line.charAt(i))) i++;
+        }
+        String[] out = new String[count];
+        int k = 0;
+        for (int i = 0; i < n; ) {
+            while (i < n && Character.isWhitespace(line.charAt(i))) i++;
+            int start = i;
+            while (i < n && !Character.isWhitespace(line.charAt(i))) i++;
+            if (i > start) out[k++] = line.substring(start, i);
+        }
+        return out;
     }
 
     private record Corner(int v, int vt, int vn) {
