@@ -46,7 +46,7 @@ final class LimitCases {
 
     private static final String BOUNDS = "{\"min\": [-5, -5], \"max\": [5, 5]}";
 
-    private static Path grid(Path dir) throws IOException {
+    static Path grid(Path dir) throws IOException {
         int n = (int) Math.sqrt(Limits.GRID_NODES);
         Path f = dir.resolve("grid.json");
         try (Writer w = Files.newBufferedWriter(f, StandardCharsets.UTF_8)) {

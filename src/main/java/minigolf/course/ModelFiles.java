@@ -85,9 +85,10 @@ interface ModelFiles {
             String m = e.getMessage();
             throw new ModelException(shown + ": " + (m.startsWith("refused") ? m : "cannot read: " + m));
         }
-        // The bundled models: only below /courses on the classpath, never elsewhere in the jar.
-        InputStream in = ModelFiles.class.getResourceAsStream(ConfinedFiles.bundledResource(relative));
-        if (in != null) {
+        // The bundled models: only below /courses and /models on the classpath, never elsewhere in the jar.
+        for (String resource : ConfinedFiles.bundledResources(relative)) {
+            InputStream in = ModelFiles.class.getResourceAsStream(resource);
+            if (in == null) continue;
             try (in) {
                 byte[] bytes = in.readNBytes((int) Limits.MODEL_FILE_BYTES + 1);
                 if (bytes.length > Limits.MODEL_FILE_BYTES) {

@@ -64,8 +64,13 @@ public final class ConfinedFiles {
         }
     }
 
-    /** The classpath resource of a bundled file: {@code /courses/<relative name>}. */
-    public static String bundledResource(Path relativeName) {
-        return "/courses/" + relativeName.toString().replace('\\', '/');
+    /**
+     * Where a bundled file may lie on the classpath: {@code /courses/<name>} (the shipped courses and
+     * their models) and, for {@code models/...}, {@code /models/...} (the game's own models); nowhere
+     * else in the jar.
+     */
+    public static java.util.List<String> bundledResources(Path relativeName) {
+        String n = relativeName.toString().replace('\\', '/');
+        return n.startsWith("models/") ? java.util.List.of("/courses/" + n, "/" + n) : java.util.List.of("/courses/" + n);
     }
 }

@@ -5,8 +5,6 @@ import minigolf.mesh.TriangleMesh;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
@@ -60,8 +58,8 @@ public final class MaterialLibrary {
     /**
      * The materials of a model loaded from {@code objFile} (a path as written in the course, e.g.
      * {@code models/windmill.obj}): each {@code mtllib} of the mesh is looked up beside the .obj,
-     * first under {@code courseFolder} (if not null), then on the classpath ({@code /} and
-     * {@code /courses/}, as the course loader finds model files).
+     * first under {@code courseFolder} (if not null), then among the bundled files ({@code /courses/}
+     * on the classpath), confined as the course loader confines model files.
      */
     public static MaterialLibrary forModel(String objFile, TriangleMesh mesh, Path courseFolder) {
         Map<String, float[]> all = new HashMap<>();
@@ -93,7 +91,11 @@ public final class MaterialLibrary {
         } catch (IOException e) {
             return null; // refused or unreadable: the model is drawn in its default colour
         }
-        return readResource(minigolf.io.ConfinedFiles.bundledResource(name));
+        for (String resource : minigolf.io.ConfinedFiles.bundledResources(name)) {
+            String text = readResource(resource);
+            if (text != null) return text;
+        }
+        return null;
     }
 
     private static String readResource(String name) {

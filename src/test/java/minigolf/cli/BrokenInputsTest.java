@@ -105,6 +105,22 @@ class BrokenInputsTest {
         for (String[] c : cases) assertOneLineExit2(CliRun.of(c), String.join(" ", c), "");
     }
 
+    /** A heap too small for a course: the out-of-memory error ends as one line with exit code 2, not a stack trace. */
+    @Test
+    void runningOutOfMemoryWhileLoadingGivesOneLine() throws Exception {
+        String grid = LimitCases.grid(dir).toString(); // 512 x 512 with both friction grids, 3.7 MB
+        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx20m",
+                "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), "minigolf.Main",
+                "simulate", grid, "--velocity", "1,0");
+        Path err = dir.resolve("oom.txt");
+        Process p = new ProcessBuilder(cmd).redirectError(err.toFile()).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS));
+        String text = Files.readString(err).strip();
+        assertEquals(2, p.exitValue(), text);
+        assertFalse(text.contains("\n") || text.contains("\tat "), text);
+        assertTrue(text.startsWith("minigolf: ") && text.contains("memory"), text);
+    }
+
     /** Without a display the window commands say so in one line (a child process: DISPLAY is read at start). */
     @Test
     void windowCommandsWithoutADisplayGiveOneLine() throws Exception {
