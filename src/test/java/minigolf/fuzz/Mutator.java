@@ -60,7 +60,7 @@ final class Mutator {
                 case "duplicate-key" -> {
                     int brace = json.indexOf('{', 1);
                     if (brace < 0) brace = json.indexOf('{');
-                    String out = brace > 0 ? json.substring(0, brace + 1) + "\"x\": 1, \"x\": 2, " + json.substring(brace + 1) : json;
+                    String out = brace >= 0 ? json.substring(0, brace + 1) + "\"x\": 1, \"x\": 2, " + json.substring(brace + 1) : json;
                     return new Case(kind, "duplicate x", out.getBytes(StandardCharsets.UTF_8));
                 }
                 default -> {
