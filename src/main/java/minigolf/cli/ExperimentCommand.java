@@ -9,6 +9,9 @@ import java.util.ArrayList;
 import java.util.BitSet;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.IntStream;
 import java.util.stream.Stream;
 import minigolf.bot.Bots;
 import minigolf.bot.experiment.Experiment;
@@ -31,6 +34,8 @@ import picocli.CommandLine.Spec;
         "With --shard K/N (or a Slurm array task, or a Kubernetes Indexed Job with --shards N) it runs every",
         "N-th run from K into DIR/shard-K-of-N/; minigolf experiment-merge DIR --out MERGED joins the shards."})
 final class ExperimentCommand implements Callable<Integer> {
+    private static final Pattern SHARD_FOLDER = Pattern.compile("shard-(\\d+)-of-(\\d+)");
+
     @Spec
     CommandSpec spec;
 
@@ -93,6 +98,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers);
         Path folder = shard == null ? out : out.resolve(shard.folderName());
         PrintWriter err = spec.commandLine().getErr();
+        if (shard != null) refuseMixedSplits(shard);
         try {
             Files.createDirectories(folder);
             Manifest existing = Manifest.read(folder);
@@ -106,7 +112,7 @@ final class ExperimentCommand implements Callable<Integer> {
             Path logFile = folder.resolve(RunLog.FILE_NAME);
             RunLog.Contents contents = RunLog.read(logFile, plan, shard);
             BitSet done = contents.done();
-            int[] pending = java.util.stream.IntStream.range(0, plan.size())
+            int[] pending = IntStream.range(0, plan.size())
                     .filter(i -> (shard == null || shard.contains(i)) && !done.get(i)).toArray();
             int total = shard == null ? plan.size() : shard.size(plan.size());
             err.println("experiment: " + (shard == null ? "" : "shard " + shard + ", ") + total + " runs, "
@@ -135,6 +141,28 @@ final class ExperimentCommand implements Callable<Integer> {
             return 0;
         } catch (IOException | UncheckedIOException e) {
             throw new UserError(folder + ": cannot write the results: " + e.getMessage());
+        }
+    }
+
+    /**
+     * Shards of one --out folder must all come from one split: a different shard count there is
+     * almost always a mistake, such as re-submitting one Slurm array task on its own (it would see
+     * an array of one task and run the whole experiment as shard 0/1).
+     */
+    private void refuseMixedSplits(Shard shard) {
+        if (!Files.isDirectory(out)) return;
+        try (Stream<Path> listing = Files.list(out)) {
+            for (Path p : (Iterable<Path>) listing.sorted()::iterator) {
+                Matcher m = SHARD_FOLDER.matcher(p.getFileName().toString());
+                if (m.matches() && !m.group(2).equals(Integer.toString(shard.count()))) {
+                    throw new UserError(out + " already holds shards of a " + m.group(2) + "-way split (" + p.getFileName()
+                            + "), and this is shard " + shard + ". To re-run one task of that split give --shard K/"
+                            + m.group(2) + " (with docs/cluster/experiment.sbatch: SHARDS=" + m.group(2)
+                            + "); for a new split give another --out");
+                }
+            }
+        } catch (IOException e) {
+            throw new UserError(out + ": cannot list: " + e.getMessage());
         }
     }
 

@@ -19,7 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
  * where it stopped, redoes a row that the kill cut in half, and merges to the single machine's result.
  */
 class ShardKillTest {
-    private static final int SEEDS = 40;
+    private static final int SEEDS = 15;
 
     private static List<String> experiment(Path suite, Path out, String... more) {
         List<String> args = new ArrayList<>(List.of("experiment", "--suite", suite.toString(), "--bots", "planner,newton",

@@ -1,0 +1,183 @@
+#!/usr/bin/env bash
+# CI: the cluster job files on a real Slurm. Installs Debian's Slurm (slurmctld, slurmd,
+# slurm-client) and munge, starts a private single-node cluster on this machine (its own config,
+# ports, munge socket and state under a temporary folder; nothing in /etc is changed), submits
+# docs/cluster/submit.sh (a 4-task array of experiment.sbatch, then merge.sbatch with
+# --dependency=afterok) on a small suite, waits, and compares the merged result with a
+# single-machine run of the same experiment. Stops everything it started. Prints one
+# "slurm: PASSED" or "slurm: FAILED: why" line; exits non-zero on failure. Takes 1-3 minutes.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+W=""
+started_pids=()
+
+say() { echo "slurm: $*"; }
+
+cleanup() {
+    if [ -n "$W" ] && [ -f "$W/slurm.conf" ]; then
+        SLURM_CONF="$W/slurm.conf" timeout 20 scontrol shutdown >/dev/null 2>&1
+    fi
+    # Whatever did not stop: only the daemons this script started, by their pid.
+    for pid in "${started_pids[@]}"; do
+        kill "$pid" 2>/dev/null && sleep 0.5
+        kill -9 "$pid" 2>/dev/null
+    done
+    for f in "$W/slurmctld.pid" "$W/slurmd.pid" "$W/munge/munged.pid"; do
+        [ -n "$W" ] && [ -f "$f" ] && kill "$(cat "$f")" 2>/dev/null
+    done
+    if [ -n "$W" ] && [ -z "${KEEP_SLURM_DIR:-}" ]; then rm -rf "$W"; fi
+}
+trap cleanup EXIT
+
+fail() {
+    say "FAILED: $*"
+    if [ -n "$W" ]; then
+        for log in "$W"/log/*.log "$W"/jobs/*.out; do
+            [ -f "$log" ] || continue
+            echo "----- $log (last 30 lines)"
+            tail -30 "$log"
+        done
+    fi
+    exit 1
+}
+
+# --- install -------------------------------------------------------------------------------
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || fail "not root and no sudo: cannot install or start Slurm"
+    sudo="sudo"
+fi
+need=()
+for cmd in slurmctld:slurmctld slurmd:slurmd sbatch:slurm-client munged:munge; do
+    command -v "${cmd%%:*}" >/dev/null || need+=("${cmd#*:}")
+done
+if [ ${#need[@]} -gt 0 ]; then
+    say "installing ${need[*]}"
+    $sudo apt-get update -qq >/dev/null || fail "apt-get update failed"
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null \
+        || fail "apt-get install ${need[*]} failed"
+fi
+say "Slurm $(dpkg-query -W -f='${Version}' slurm-client 2>/dev/null), munge $(dpkg-query -W -f='${Version}' munge 2>/dev/null)"
+
+# --- build the launcher the job scripts call --------------------------------------------------
+gradle --no-daemon -q --console=plain installDist >/tmp/minigolf-slurm-build.log 2>&1 \
+    || { cat /tmp/minigolf-slurm-build.log; fail "gradle installDist failed"; }
+minigolf="$root/build/install/minigolf/bin/minigolf"
+[ -x "$minigolf" ] || fail "no launcher at $minigolf"
+
+# --- a private single-node cluster -----------------------------------------------------------
+W=$(mktemp -d /tmp/minigolf-slurm.XXXXXX) || fail "mktemp failed"
+chmod 755 "$W"
+mkdir -p "$W/state" "$W/spool" "$W/log" "$W/munge" "$W/jobs"
+chmod 755 "$W/munge"    # munged wants its socket's folder searchable by everyone, writable by none
+dd if=/dev/urandom of="$W/munge/munge.key" bs=1024 count=1 status=none
+chmod 400 "$W/munge/munge.key"
+$sudo munged --force --socket="$W/munge/socket" --key-file="$W/munge/munge.key" \
+    --log-file="$W/log/munged.log" --pid-file="$W/munge/munged.pid" --seed-file="$W/munge/seed" \
+    || fail "munged did not start"
+started_pids+=("$(cat "$W/munge/munged.pid")")
+
+free_port() {   # the first port from $1 on that nothing listens to
+    local p=$1
+    while (exec 3<>"/dev/tcp/127.0.0.1/$p") 2>/dev/null; do p=$((p + 1)); done
+    echo "$p"
+}
+ctld_port=$(free_port 16817)
+slurmd_port=$(free_port $((ctld_port + 1)))
+host=$(hostname -s)
+# The node as slurmd sees this machine (CPUs, sockets, memory), so the config cannot disagree.
+node=$(slurmd -C 2>/dev/null | grep '^NodeName=') || fail "slurmd -C printed no node line"
+cat >"$W/slurm.conf" <<EOF
+ClusterName=minigolfci
+SlurmctldHost=$host(127.0.0.1)
+SlurmctldPort=$ctld_port
+SlurmdPort=$slurmd_port
+AuthType=auth/munge
+AuthInfo=socket=$W/munge/socket
+CredType=cred/munge
+SlurmUser=root
+SlurmdUser=root
+StateSaveLocation=$W/state
+SlurmdSpoolDir=$W/spool
+SlurmctldPidFile=$W/slurmctld.pid
+SlurmdPidFile=$W/slurmd.pid
+SlurmctldLogFile=$W/log/slurmctld.log
+SlurmdLogFile=$W/log/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+SchedulerType=sched/backfill
+SelectType=select/cons_tres
+SelectTypeParameters=CR_Core
+MpiDefault=none
+ReturnToService=2
+MinJobAge=600
+$node NodeAddr=127.0.0.1 State=UNKNOWN
+PartitionName=ci Nodes=$host Default=YES MaxTime=INFINITE State=UP
+EOF
+export SLURM_CONF="$W/slurm.conf"
+$sudo slurmctld -f "$W/slurm.conf" || fail "slurmctld did not start"
+sleep 1
+[ -f "$W/slurmctld.pid" ] && started_pids+=("$(cat "$W/slurmctld.pid")")
+$sudo slurmd -f "$W/slurm.conf" || fail "slurmd did not start"
+sleep 1
+[ -f "$W/slurmd.pid" ] && started_pids+=("$(cat "$W/slurmd.pid")")
+for _ in $(seq 60); do
+    state=$(sinfo -h -n "$host" -o %T 2>/dev/null)
+    [ "$state" = "idle" ] && break
+    sleep 1
+done
+[ "$state" = "idle" ] || fail "the node did not become idle (state '$state')"
+say "single-node cluster up: $host, $(sinfo -h -o '%c CPUs') (ports $ctld_port/$slurmd_port)"
+
+# --- the experiment, through the documented job files ------------------------------------------
+mkdir -p "$W/suite"
+for c in flat-7m two-putt pond; do cp "courses/bench/$c.json" "$W/suite/"; done
+args="--bots planner,astar,newton --seeds 4"
+cd "$W/jobs" || fail "no jobs folder"
+submitted=$(SUITE="$W/suite" OUT="$W/exp" SHARDS=4 MINIGOLF="$minigolf" EXPERIMENT_ARGS="$args" \
+    JAVA_OPTS="-Xmx384m" "$root/docs/cluster/submit.sh" --cpus-per-task=1 --mem=512M --time=10) \
+    || fail "submit.sh failed: $submitted"
+echo "$submitted"
+array=$(echo "$submitted" | sed -n 's/.*array job \([0-9]*\).*/\1/p')
+merge=$(echo "$submitted" | sed -n 's/.*merge job \([0-9]*\).*/\1/p')
+[ -n "$array" ] && [ -n "$merge" ] || fail "could not read the job ids from submit.sh"
+
+job_state() { scontrol show job "$1" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | cut -d= -f2 | sort -u | tr '\n' ' '; }
+deadline=$((SECONDS + 240))
+while [ $SECONDS -lt $deadline ]; do
+    m=$(job_state "$merge")
+    case "$m" in
+        *COMPLETED*) break ;;
+        *FAILED*|*CANCELLED*|*TIMEOUT*|*NODE_FAIL*|*OUT_OF_MEMORY*) fail "merge job $merge ended $m (array: $(job_state "$array"))" ;;
+    esac
+    sleep 2
+done
+[[ "$(job_state "$merge")" == *COMPLETED* ]] || fail "the jobs did not finish in 4 minutes (array: $(job_state "$array"), merge: $(job_state "$merge"))"
+[ "$(job_state "$array")" = "COMPLETED " ] || fail "array tasks ended $(job_state "$array")"
+tasks=$(scontrol show job "$array" 2>/dev/null | grep -c '^JobId=')
+[ "$tasks" -eq 4 ] || fail "expected 4 array tasks, Slurm shows $tasks"
+for k in 0 1 2 3; do
+    [ -f "$W/exp/shard-$k-of-4/runs.csv" ] || fail "shard $k/4 wrote no runs.csv"
+done
+say "array job $array: 4 tasks COMPLETED; merge job $merge COMPLETED"
+
+# --- compare with one machine's run ------------------------------------------------------------
+# shellcheck disable=SC2086
+JAVA_OPTS="-Xmx512m" "$minigolf" experiment --suite "$W/suite" --out "$W/single" $args >"$W/single.out" 2>&1 \
+    || { cat "$W/single.out"; fail "the single-machine run failed"; }
+merged="$W/exp/merged"
+no_wall() { sed 's/,[^,]*$//' "$1"; }                          # results.csv less its wall_ms column
+no_time() { awk -F'|' 'BEGIN{OFS="|"} /^\| / && !/^\| course/ {$8=" ms "} {print}' "$1"; }   # summary.md less median ms
+rows=$(($(wc -l <"$merged/results.csv") - 1))
+[ "$rows" -eq 36 ] || fail "merged results.csv has $rows rows, expected 3 courses x 3 bots x 4 seeds = 36"
+diff <(no_wall "$W/single/results.csv") <(no_wall "$merged/results.csv") >"$W/diff.txt" \
+    || { cat "$W/diff.txt"; fail "merged results.csv differs from the single run's (beyond wall_ms)"; }
+diff <(no_time "$W/single/summary.md") <(no_time "$merged/summary.md") >"$W/diff.txt" \
+    || { cat "$W/diff.txt"; fail "merged summary.md differs from the single run's (beyond times)"; }
+for f in simulations.png success.png experiment.json; do
+    cmp -s "$W/single/$f" "$merged/$f" || fail "merged $f differs from the single run's"
+done
+say "PASSED: 4 array tasks + merge (afterok) on Slurm $(sbatch --version | cut -d' ' -f2) = the single-machine run ($rows runs; results.csv, summary.md, charts, experiment.json)"
