@@ -141,6 +141,12 @@ class ExperimentShardsTest {
         assertTrue(resumeOther.err().contains("holds runs of a different experiment (options --bots planner,astar,newton "
                 + "--seeds 3 --budget 20000 --max-strokes 10 against --bots planner,astar,newton --seeds 4"), resumeOther.err());
 
+        // One task of the 2-way split re-submitted alone would look like shard 0/1: refused.
+        CliRun otherSplit = run(experiment(suite, shards, "--shard", "0/1"));
+        assertEquals(2, otherSplit.code());
+        assertTrue(otherSplit.err().startsWith("minigolf: " + shards + " already holds shards of a 2-way split "
+                + "(shard-0-of-2), and this is shard 0/1. To re-run one task of that split give --shard K/2"), otherSplit.err());
+
         CliRun notShards = CliRun.of("experiment-merge", suite.toString(), "--out", out);
         assertEquals(2, notShards.code());
         assertTrue(notShards.err().contains("neither a shard folder"), notShards.err());
