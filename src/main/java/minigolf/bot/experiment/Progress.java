@@ -1,6 +1,10 @@
 package minigolf.bot.experiment;
 
 import java.io.Console;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.Path;
 import java.io.PrintWriter;
 import java.lang.reflect.Method;
 import java.util.Locale;
@@ -46,8 +50,21 @@ public final class Progress implements AutoCloseable {
         }
     }
 
-    /** Whether standard input and output are a terminal (on Java 22+ System.console() alone no longer says). */
+    /**
+     * Whether standard error, where the progress goes, is a terminal. Java cannot ask that
+     * directly: on Linux /proc names the file behind descriptor 2; elsewhere, whether standard
+     * input and output are a terminal (on Java 22+ System.console() alone no longer says).
+     */
     public static boolean onTerminal() {
+        try {
+            Path stderr = Path.of("/proc/self/fd/2");
+            if (Files.exists(stderr, LinkOption.NOFOLLOW_LINKS)) {
+                String target = Files.readSymbolicLink(stderr).toString();
+                return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty");
+            }
+        } catch (IOException | RuntimeException e) {
+            // fall through to the portable test
+        }
         Console console = System.console();
         if (console == null) return false;
         try {
