@@ -11,22 +11,23 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 W=""
 started_pids=()
+sudo=""
 
 say() { echo "slurm: $*"; }
 
 cleanup() {
     if [ -n "$W" ] && [ -f "$W/slurm.conf" ]; then
-        SLURM_CONF="$W/slurm.conf" timeout 20 scontrol shutdown >/dev/null 2>&1
+        timeout 20 $sudo env SLURM_CONF="$W/slurm.conf" scontrol shutdown >/dev/null 2>&1
+        sleep 1
     fi
-    # Whatever did not stop: only the daemons this script started, by their pid.
+    # Whatever did not stop: only the daemons this script started, by their pid (checking the
+    # pid still names that daemon).
     for pid in "${started_pids[@]}"; do
-        kill "$pid" 2>/dev/null && sleep 0.5
-        kill -9 "$pid" 2>/dev/null
+        case "$(ps -p "$pid" -o comm= 2>/dev/null)" in
+            munged|slurmctld|slurmd) $sudo kill "$pid" 2>/dev/null ;;
+        esac
     done
-    for f in "$W/slurmctld.pid" "$W/slurmd.pid" "$W/munge/munged.pid"; do
-        [ -n "$W" ] && [ -f "$f" ] && kill "$(cat "$f")" 2>/dev/null
-    done
-    if [ -n "$W" ] && [ -z "${KEEP_SLURM_DIR:-}" ]; then rm -rf "$W"; fi
+    if [ -n "$W" ] && [ -z "${KEEP_SLURM_DIR:-}" ]; then $sudo rm -rf "$W"; fi
 }
 trap cleanup EXIT
 
@@ -43,7 +44,6 @@ fail() {
 }
 
 # --- install -------------------------------------------------------------------------------
-sudo=""
 if [ "$(id -u)" -ne 0 ]; then
     command -v sudo >/dev/null || fail "not root and no sudo: cannot install or start Slurm"
     sudo="sudo"
@@ -73,6 +73,7 @@ mkdir -p "$W/state" "$W/spool" "$W/log" "$W/munge" "$W/jobs"
 chmod 755 "$W/munge"    # munged wants its socket's folder searchable by everyone, writable by none
 dd if=/dev/urandom of="$W/munge/munge.key" bs=1024 count=1 status=none
 chmod 400 "$W/munge/munge.key"
+[ -n "$sudo" ] && { $sudo chown root "$W/munge/munge.key" || fail "cannot hand the munge key to root"; }   # munged wants its own key
 $sudo munged --force --socket="$W/munge/socket" --key-file="$W/munge/munge.key" \
     --log-file="$W/log/munged.log" --pid-file="$W/munge/munged.pid" --seed-file="$W/munge/seed" \
     || fail "munged did not start"

@@ -98,7 +98,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers);
         Path folder = shard == null ? out : out.resolve(shard.folderName());
         PrintWriter err = spec.commandLine().getErr();
-        if (shard != null) refuseMixedSplits(shard);
+        refuseMixedFolders(shard);
         try {
             Files.createDirectories(folder);
             Manifest existing = Manifest.read(folder);
@@ -145,16 +145,26 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /**
-     * Shards of one --out folder must all come from one split: a different shard count there is
-     * almost always a mistake, such as re-submitting one Slurm array task on its own (it would see
-     * an array of one task and run the whole experiment as shard 0/1).
+     * One --out folder holds one kind of result: a whole experiment, or the shards of one split.
+     * Anything else is almost always a mistake, such as re-submitting one Slurm array task on its
+     * own (it would see an array of one task and run the whole experiment as shard 0/1), and would
+     * leave the merge a folder it cannot read unambiguously.
      */
-    private void refuseMixedSplits(Shard shard) {
+    private void refuseMixedFolders(Shard shard) {
         if (!Files.isDirectory(out)) return;
+        if (shard != null && Files.exists(out.resolve(Manifest.FILE_NAME))) {
+            throw new UserError(out + " holds an experiment run without shards (" + Manifest.FILE_NAME
+                    + "); give the shards another --out");
+        }
         try (Stream<Path> listing = Files.list(out)) {
             for (Path p : (Iterable<Path>) listing.sorted()::iterator) {
                 Matcher m = SHARD_FOLDER.matcher(p.getFileName().toString());
-                if (m.matches() && !m.group(2).equals(Integer.toString(shard.count()))) {
+                if (!m.matches()) continue;
+                if (shard == null) {
+                    throw new UserError(out + " holds shards (" + p.getFileName() + "); a run without --shard needs "
+                            + "another --out (or merge them: minigolf experiment-merge " + out + " --out DIR)");
+                }
+                if (!m.group(2).equals(Integer.toString(shard.count()))) {
                     throw new UserError(out + " already holds shards of a " + m.group(2) + "-way split (" + p.getFileName()
                             + "), and this is shard " + shard + ". To re-run one task of that split give --shard K/"
                             + m.group(2) + " (with docs/cluster/experiment.sbatch: SHARDS=" + m.group(2)

@@ -1,6 +1,7 @@
 package minigolf.cli;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -37,6 +38,11 @@ final class ExperimentMergeCommand implements Callable<Integer> {
         } catch (IOException e) {
             throw new UserError("cannot read the shards: " + e.getMessage());
         }
+        for (Path folder : merged.folders()) {
+            if (sameFile(folder, out) || inputs.stream().anyMatch(input -> sameFile(input, out))) {
+                throw new UserError("--out " + out + ": is one of the folders being merged; give another folder");
+            }
+        }
         try {
             String markdown = Results.write(out, merged.manifest(), merged.records());
             spec.commandLine().getErr().println("experiment-merge: " + merged.records().size() + " runs from "
@@ -46,5 +52,13 @@ final class ExperimentMergeCommand implements Callable<Integer> {
             throw new UserError(out + ": cannot write the results: " + e.getMessage());
         }
         return 0;
+    }
+
+    private static boolean sameFile(Path a, Path b) {
+        try {
+            return Files.exists(b) && Files.isSameFile(a, b);
+        } catch (IOException e) {
+            return false;
+        }
     }
 }

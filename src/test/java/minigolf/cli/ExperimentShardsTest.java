@@ -147,6 +147,15 @@ class ExperimentShardsTest {
         assertTrue(otherSplit.err().startsWith("minigolf: " + shards + " already holds shards of a 2-way split "
                 + "(shard-0-of-2), and this is shard 0/1. To re-run one task of that split give --shard K/2"), otherSplit.err());
 
+        CliRun wholeIntoShards = run(experiment(suite, shards));
+        assertEquals(2, wholeIntoShards.code());
+        assertTrue(wholeIntoShards.err().startsWith("minigolf: " + shards + " holds shards (shard-0-of-2); a run without --shard "
+                + "needs another --out"), wholeIntoShards.err());
+        CliRun intoItself = CliRun.of("experiment-merge", shards.toString(), "--out", shards.toString());
+        assertEquals(2, intoItself.code());
+        assertEquals("minigolf: --out " + shards + ": is one of the folders being merged; give another folder",
+                intoItself.err().trim());
+
         CliRun notShards = CliRun.of("experiment-merge", suite.toString(), "--out", out);
         assertEquals(2, notShards.code());
         assertTrue(notShards.err().contains("neither a shard folder"), notShards.err());
