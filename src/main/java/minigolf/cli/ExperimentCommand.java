@@ -2,27 +2,40 @@ package minigolf.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.BitSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.IntStream;
 import java.util.stream.Stream;
 import minigolf.bot.Bots;
-import minigolf.bot.experiment.Charts;
 import minigolf.bot.experiment.Experiment;
-import minigolf.bot.experiment.RunRecord;
-import minigolf.bot.experiment.Summary;
-import minigolf.io.AtomicFile;
+import minigolf.bot.experiment.ExperimentException;
+import minigolf.bot.experiment.Manifest;
+import minigolf.bot.experiment.Merge;
+import minigolf.bot.experiment.Progress;
+import minigolf.bot.experiment.Results;
+import minigolf.bot.experiment.RunLog;
+import minigolf.bot.experiment.RunPlan;
+import minigolf.bot.experiment.Shard;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
-@Command(name = "experiment", description = "Runs bots on every course of a suite and writes results.csv, summary.md and charts.")
+@Command(name = "experiment", description = {
+        "Runs bots on every course of a suite and writes results.csv, summary.md and charts.",
+        "Rows are appended to DIR/runs.csv as runs end; the same command again resumes where it stopped.",
+        "With --shard K/N (or a Slurm array task, or a Kubernetes Indexed Job with --shards N) it runs every",
+        "N-th run from K into DIR/shard-K-of-N/; minigolf experiment-merge DIR --out MERGED joins the shards."})
 final class ExperimentCommand implements Callable<Integer> {
+    private static final Pattern SHARD_FOLDER = Pattern.compile("shard-(\\d+)-of-(\\d+)");
+
     @Spec
     CommandSpec spec;
 
@@ -44,36 +57,135 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--max-strokes", paramLabel = "K", description = "Most shots per game (default 10).")
     int maxStrokes = 10;
 
-    @Option(names = "--threads", paramLabel = "T", description = "Worker threads (default: one per core).")
-    int threads = Runtime.getRuntime().availableProcessors();
+    @Option(names = "--threads", paramLabel = "T",
+            description = "Worker threads (default: SLURM_CPUS_PER_TASK when set, else one per core).")
+    Integer threads;
+
+    @Option(names = "--shard", paramLabel = "K/N",
+            description = "Run only every N-th run starting at K (K from 0) into DIR/shard-K-of-N/.")
+    String shardText;
+
+    @Option(names = "--shards", paramLabel = "N",
+            description = "The number of shards when the index comes from the scheduler (Kubernetes' JOB_COMPLETION_INDEX).")
+    Integer shards;
 
     @Override
     public Integer call() throws InterruptedException {
+        try {
+            return runExperiment();
+        } catch (ExperimentException e) {
+            throw new UserError(e.getMessage());
+        }
+    }
+
+    private int runExperiment() throws InterruptedException {
         List<String> bots = parseBots(botList);
         if (seeds < 1) throw new UserError("--seeds: must be at least 1, got " + seeds);
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
-        if (threads < 1) throw new UserError("--threads: must be at least 1, got " + threads);
-        List<Experiment.SuiteCourse> courses = loadSuite(suite);
-        Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, threads);
-        PrintWriter err = spec.commandLine().getErr();
-        ProgressBar bar = new ProgressBar(err, experiment.runCount());
-        List<RunRecord> records = experiment.run(bar::update);
-        bar.finish();
-        List<Summary.Line> lines = Summary.lines(records);
-        try {
-            Files.createDirectories(out);
-            StringBuilder csv = new StringBuilder(RunRecord.CSV_HEADER).append('\n');
-            for (RunRecord r : records) csv.append(r.csvRow()).append('\n');
-            AtomicFile.write(out.resolve("results.csv"), csv.toString().getBytes(StandardCharsets.UTF_8));
-            AtomicFile.write(out.resolve("summary.md"),
-                    Summary.markdown(lines, seeds, budget, maxStrokes).getBytes(StandardCharsets.UTF_8));
-            Charts.write(lines, out);
-        } catch (IOException e) {
-            throw new UserError(out + ": cannot write the results: " + e.getMessage());
+        int workers = threads != null ? threads : defaultThreads();
+        if (workers < 1) throw new UserError("--threads: must be at least 1, got " + workers);
+        if (shards != null && shards < 1) throw new UserError("--shards: must be at least 1, got " + shards);
+        Shard shard = shardText != null ? Shard.parse(shardText) : Shard.fromEnvironment(System.getenv(), shards);
+        if (shardText != null && shards != null && shards != shard.count()) {
+            throw new UserError("--shards " + shards + " disagrees with --shard " + shardText);
         }
-        spec.commandLine().getOut().println(Summary.markdown(lines, seeds, budget, maxStrokes));
-        return 0;
+        List<Experiment.SuiteCourse> courses = new ArrayList<>();
+        List<Manifest.CourseFile> files = new ArrayList<>();
+        loadSuite(suite, courses, files);
+        Manifest manifest = Manifest.of(spec.root().version()[0],
+                new Manifest.Options(bots, seeds, budget, maxStrokes), files).forShard(shard);
+        Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers);
+        Path folder = shard == null ? out : out.resolve(shard.folderName());
+        PrintWriter err = spec.commandLine().getErr();
+        refuseMixedFolders(shard);
+        try {
+            Files.createDirectories(folder);
+            Manifest existing = Manifest.read(folder);
+            if (existing == null) {
+                manifest.write(folder);
+            } else if (!existing.fingerprint().equals(manifest.fingerprint())) {
+                throw new UserError(folder + ": holds runs of a different experiment (" + manifest.differences(existing)
+                        + "); give another --out, or delete the folder to start again");
+            }
+            RunPlan plan = experiment.plan();
+            Path logFile = folder.resolve(RunLog.FILE_NAME);
+            RunLog.Contents contents = RunLog.read(logFile, plan, shard);
+            BitSet done = contents.done();
+            int[] pending = IntStream.range(0, plan.size())
+                    .filter(i -> (shard == null || shard.contains(i)) && !done.get(i)).toArray();
+            int total = shard == null ? plan.size() : shard.size(plan.size());
+            err.println("experiment: " + (shard == null ? "" : "shard " + shard + ", ") + total + " runs, "
+                    + contents.rows().size() + " done before" + (contents.partialBytes() > 0 ? " (a cut-off last row redone)" : "")
+                    + ", " + pending.length + " to run on " + workers + " thread(s); rows in " + logFile);
+            err.flush();
+            try (RunLog log = RunLog.openForAppend(logFile, contents);
+                 Progress progress = new Progress(err, Progress.onTerminal(), total, contents.rows().size(), 60)) {
+                experiment.run(pending, (run, record) -> {
+                    try {
+                        log.append(run, record);
+                    } catch (IOException e) {
+                        throw new UncheckedIOException(e);
+                    }
+                    progress.finished();
+                });
+            }
+            if (shard != null) {
+                spec.commandLine().getOut().println("shard " + shard + " complete: " + total + " runs in " + logFile
+                        + "; when every shard is complete: minigolf experiment-merge " + out + " --out MERGED");
+                return 0;
+            }
+            Merge.Merged merged = Merge.merge(List.of(folder));
+            String markdown = Results.write(out, merged.manifest(), merged.records());
+            spec.commandLine().getOut().println(markdown);
+            return 0;
+        } catch (IOException | UncheckedIOException e) {
+            throw new UserError(folder + ": cannot write the results: " + e.getMessage());
+        }
+    }
+
+    /**
+     * One --out folder holds one kind of result: a whole experiment, or the shards of one split.
+     * Anything else is almost always a mistake, such as re-submitting one Slurm array task on its
+     * own (it would see an array of one task and run the whole experiment as shard 0/1), and would
+     * leave the merge a folder it cannot read unambiguously.
+     */
+    private void refuseMixedFolders(Shard shard) {
+        if (!Files.isDirectory(out)) return;
+        if (shard != null && Files.exists(out.resolve(Manifest.FILE_NAME))) {
+            throw new UserError(out + " holds an experiment run without shards (" + Manifest.FILE_NAME
+                    + "); give the shards another --out");
+        }
+        try (Stream<Path> listing = Files.list(out)) {
+            for (Path p : (Iterable<Path>) listing.sorted()::iterator) {
+                Matcher m = SHARD_FOLDER.matcher(p.getFileName().toString());
+                if (!m.matches()) continue;
+                if (shard == null) {
+                    throw new UserError(out + " holds shards (" + p.getFileName() + "); a run without --shard needs "
+                            + "another --out (or merge them: minigolf experiment-merge " + out + " --out DIR)");
+                }
+                if (!m.group(2).equals(Integer.toString(shard.count()))) {
+                    throw new UserError(out + " already holds shards of a " + m.group(2) + "-way split (" + p.getFileName()
+                            + "), and this is shard " + shard + ". To re-run one task of that split give --shard K/"
+                            + m.group(2) + " (with docs/cluster/experiment.sbatch: SHARDS=" + m.group(2)
+                            + "); for a new split give another --out");
+                }
+            }
+        } catch (IOException e) {
+            throw new UserError(out + ": cannot list: " + e.getMessage());
+        }
+    }
+
+    private static int defaultThreads() {
+        String slurm = System.getenv("SLURM_CPUS_PER_TASK");
+        if (slurm != null) {
+            try {
+                return Integer.parseInt(slurm.trim());
+            } catch (NumberFormatException e) {
+                throw new UserError("SLURM_CPUS_PER_TASK: not a whole number: '" + slurm + "'");
+            }
+        }
+        return Runtime.getRuntime().availableProcessors();
     }
 
     static List<String> parseBots(String text) {
@@ -91,48 +203,27 @@ final class ExperimentCommand implements Callable<Integer> {
         return names;
     }
 
-    static List<Experiment.SuiteCourse> loadSuite(Path dir) {
+    /** Loads the suite's course files (sorted by name) and the SHA-256 of each file's bytes. */
+    static void loadSuite(Path dir, List<Experiment.SuiteCourse> courses, List<Manifest.CourseFile> files) {
         if (!Files.isDirectory(dir)) throw new UserError("--suite: " + dir + ": no such folder");
-        List<Path> files;
+        List<Path> paths;
         try (Stream<Path> listing = Files.list(dir)) {
-            files = listing.filter(p -> p.getFileName().toString().endsWith(".json")).sorted().toList();
+            paths = listing.filter(p -> p.getFileName().toString().endsWith(".json")).sorted().toList();
         } catch (IOException e) {
             throw new UserError("--suite: " + dir + ": cannot list: " + e.getMessage());
         }
-        if (files.isEmpty()) throw new UserError("--suite: " + dir + ": no course files (*.json)");
-        List<Experiment.SuiteCourse> courses = new ArrayList<>();
-        for (Path f : files) {
-            String name = f.getFileName().toString();
-            courses.add(new Experiment.SuiteCourse(name.substring(0, name.length() - 5), CourseArgument.load(f)));
-        }
-        return courses;
-    }
-
-    /** A one-line bar on stderr, redrawn at most ten times a second. */
-    private static final class ProgressBar {
-        private final PrintWriter err;
-        private final int total;
-        private final long started = System.nanoTime();
-        private long lastDrawn;
-
-        ProgressBar(PrintWriter err, int total) {
-            this.err = err;
-            this.total = total;
-        }
-
-        synchronized void update(int done) {
-            long now = System.nanoTime();
-            if (done < total && now - lastDrawn < 100_000_000L) return;
-            lastDrawn = now;
-            int width = 30, filled = (int) ((long) width * done / total);
-            err.print(String.format(Locale.ROOT, "\r[%s%s] %d/%d runs  %.1f s", "#".repeat(filled),
-                    " ".repeat(width - filled), done, total, (now - started) / 1e9));
-            err.flush();
-        }
-
-        void finish() {
-            err.println();
-            err.flush();
+        if (paths.isEmpty()) throw new UserError("--suite: " + dir + ": no course files (*.json)");
+        for (Path f : paths) {
+            String file = f.getFileName().toString();
+            String name = file.substring(0, file.length() - 5);
+            byte[] bytes;
+            try {
+                bytes = Files.readAllBytes(f);
+            } catch (IOException e) {
+                throw new UserError(f + ": cannot read: " + e.getMessage());
+            }
+            courses.add(new Experiment.SuiteCourse(name, CourseArgument.load(f)));
+            files.add(new Manifest.CourseFile(name, Manifest.sha256(bytes)));
         }
     }
 }

@@ -99,6 +99,10 @@ class BrokenInputsTest {
         cases.add(new String[]{"experiment", "--suite", dir.resolve("missing").toString(), "--out", dir.resolve("o").toString()});
         cases.add(new String[]{"experiment", "--suite", lake, "--out", dir.resolve("o").toString()});
         cases.add(new String[]{"experiment", "--suite", dir.toString(), "--out", dir.resolve("o").toString(), "--seeds", "0"});
+        cases.add(new String[]{"experiment-merge", dir.resolve("missing").toString(), "--out", dir.resolve("m").toString()});
+        cases.add(new String[]{"experiment-merge", lake, "--out", dir.resolve("m").toString()});
+        cases.add(new String[]{"experiment-merge", dir.toString(), "--out", dir.resolve("m2").toString()});
+        cases.add(new String[]{"bench-limits", "--dir", lake});
         cases.add(new String[]{"bench-editor", "--dabs", "-1"});
         cases.add(new String[]{"bench-editor", "--radius", "0"});
         cases.add(new String[]{"no-such-command"});

@@ -1,13 +1,11 @@
 package minigolf.bot.experiment;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
+import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.function.IntConsumer;
+import java.util.concurrent.atomic.AtomicReference;
 import minigolf.bot.Bot;
 import minigolf.bot.BotProgress;
 import minigolf.bot.Bots;
@@ -18,75 +16,88 @@ import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 
 /**
- * Every bot on every course with every seed, one run per task on a pool of threads (one per
- * core). Each run gets a fresh bot; worlds are immutable and shared. Results come back in a fixed
- * order (course, bot, seed) whatever order the threads finish in.
+ * Every bot on every course with every seed, on a pool of threads. The runs are those of a
+ * {@link RunPlan}; each gets a fresh bot and its own seed, and worlds are immutable and shared, so
+ * a run's result depends only on the run, never on the thread, the machine or the order.
  */
 public final class Experiment {
     /** A course of the suite: its file name (without .json) and its world. */
     public record SuiteCourse(String name, World world) {
     }
 
-    private final List<SuiteCourse> courses;
-    private final List<String> bots;
-    private final int seeds;
+    /** Receives each finished run, from the worker threads. */
+    public interface Sink {
+        void finished(int run, RunRecord record) throws Exception;
+    }
+
+    private final Map<String, World> worlds = new HashMap<>();
+    private final RunPlan plan;
     private final long budget;
     private final int maxStrokes;
     private final int threads;
 
     public Experiment(List<SuiteCourse> courses, List<String> bots, int seeds, long budget, int maxStrokes, int threads) {
-        this.courses = List.copyOf(courses);
-        this.bots = List.copyOf(bots);
-        this.seeds = seeds;
+        for (SuiteCourse c : courses) worlds.put(c.name(), c.world());
+        this.plan = new RunPlan(courses.stream().map(SuiteCourse::name).toList(), bots, seeds);
         this.budget = budget;
         this.maxStrokes = maxStrokes;
         this.threads = threads;
     }
 
-    public int runCount() {
-        return courses.size() * bots.size() * seeds;
+    public RunPlan plan() {
+        return plan;
     }
 
-    /** Runs everything; {@code finished} is called (from worker threads) with the count done so far. */
-    public List<RunRecord> run(IntConsumer finished) throws InterruptedException {
-        ExecutorService pool = Executors.newFixedThreadPool(threads);
-        AtomicInteger done = new AtomicInteger();
-        List<Future<RunRecord>> futures = new ArrayList<>();
-        try {
-            for (SuiteCourse course : courses) {
-                for (String botName : bots) {
-                    for (int s = 1; s <= seeds; s++) {
-                        long seed = s;
-                        futures.add(pool.submit(() -> {
-                            RunRecord r = runOne(course, botName, seed);
-                            finished.accept(done.incrementAndGet());
-                            return r;
-                        }));
+    public int runCount() {
+        return plan.size();
+    }
+
+    /**
+     * Runs the given runs of the plan, each handed to the sink as it ends. Threads take the next
+     * run from a shared counter rather than from a queue of all of them, so millions of runs cost
+     * no memory. The first failure (of a run or of the sink) stops the others and is thrown.
+     */
+    public void run(int[] runs, Sink sink) throws InterruptedException {
+        AtomicInteger next = new AtomicInteger();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        List<Thread> workers = new ArrayList<>();
+        for (int t = 0; t < Math.min(threads, Math.max(1, runs.length)); t++) {
+            Thread worker = new Thread(() -> {
+                int i;
+                while (failure.get() == null && (i = next.getAndIncrement()) < runs.length) {
+                    try {
+                        sink.finished(runs[i], runOne(plan.run(runs[i])));
+                    } catch (Throwable e) {
+                        failure.compareAndSet(null, e);
                     }
                 }
-            }
-            List<RunRecord> records = new ArrayList<>();
-            for (Future<RunRecord> f : futures) {
-                try {
-                    records.add(f.get());
-                } catch (ExecutionException e) {
-                    throw new IllegalStateException("a bot run failed: " + e.getCause(), e.getCause());
-                }
-            }
-            return records;
-        } finally {
-            pool.shutdownNow();
+            }, "experiment-" + t);
+            worker.setDaemon(true);
+            workers.add(worker);
+            worker.start();
         }
+        try {
+            for (Thread w : workers) w.join();
+        } catch (InterruptedException e) {
+            failure.compareAndSet(null, e);
+            for (Thread w : workers) w.join();
+            throw e;
+        }
+        Throwable e = failure.get();
+        if (e instanceof RuntimeException r) throw r;
+        if (e instanceof Error r) throw r;
+        if (e != null) throw new IllegalStateException("a bot run failed: " + e, e);
     }
 
-    private RunRecord runOne(SuiteCourse course, String botName, long seed) {
-        Bot bot = Bots.create(botName);
-        if (bot == null) throw new IllegalArgumentException("unknown bot " + botName);
-        Playthrough.Result result = Playthrough.play(bot, course.world(), SimulationSettings.DEFAULT, maxStrokes,
-                budget, seed, CancellationToken.none(), BotProgress.NONE);
+    /** One run, from its description alone. */
+    public RunRecord runOne(RunPlan.Run run) {
+        Bot bot = Bots.create(run.bot());
+        if (bot == null) throw new IllegalArgumentException("unknown bot " + run.bot());
+        Playthrough.Result result = Playthrough.play(bot, worlds.get(run.course()), SimulationSettings.DEFAULT, maxStrokes,
+                budget, run.seed(), CancellationToken.none(), BotProgress.NONE);
         boolean holeInOne = result.holed() && result.shots().size() == 1
                 && result.shots().get(0).result().outcome() == Outcome.HOLED;
-        return new RunRecord(course.name(), botName, seed, result.holed(), result.strokes(), holeInOne,
+        return new RunRecord(run.course(), run.bot(), run.seed(), result.holed(), result.strokes(), holeInOne,
                 result.simulations(), result.wallNanos() / 1e6);
     }
 }

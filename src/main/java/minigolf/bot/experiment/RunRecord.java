@@ -1,17 +1,74 @@
 package minigolf.bot.experiment;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
 /** One bot playing one course with one seed: a row of results.csv. */
 public record RunRecord(String course, String bot, long seed, boolean holed, int strokes, boolean holeInOne,
                         long simulations, double wallMs) {
     public static final String CSV_HEADER = "course,bot,seed,holed,strokes,hole_in_one,simulations,wall_ms";
+    private static final int FIELDS = 8;
 
     public String csvRow() {
-        return String.format(java.util.Locale.ROOT, "%s,%s,%d,%b,%d,%b,%d,%.3f",
+        return String.format(Locale.ROOT, "%s,%s,%d,%b,%d,%b,%d,%.3f",
                 csv(course), csv(bot), seed, holed, strokes, holeInOne, simulations, wallMs);
+    }
+
+    /**
+     * The inverse of {@link #csvRow()}: csvRow(parse(row)) == row for every row csvRow wrote.
+     *
+     * @throws IllegalArgumentException saying what is wrong with the row
+     */
+    public static RunRecord parse(String row) {
+        List<String> f = split(row);
+        if (f.size() != FIELDS) throw new IllegalArgumentException("expected " + FIELDS + " fields, found " + f.size());
+        try {
+            return new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), bool(f.get(3)), Integer.parseInt(f.get(4)),
+                    bool(f.get(5)), Long.parseLong(f.get(6)), Double.parseDouble(f.get(7)));
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("not a number: " + e.getMessage());
+        }
+    }
+
+    private static boolean bool(String text) {
+        if (text.equals("true")) return true;
+        if (text.equals("false")) return false;
+        throw new IllegalArgumentException("expected true or false, found '" + text + "'");
     }
 
     private static String csv(String text) {
         if (text.contains(",") || text.contains("\"")) return "\"" + text.replace("\"", "\"\"") + "\"";
         return text;
+    }
+
+    /** Splits a row at commas outside double quotes; "" inside quotes is one quote. */
+    static List<String> split(String row) {
+        List<String> fields = new ArrayList<>();
+        StringBuilder field = new StringBuilder();
+        boolean quoted = false;
+        for (int i = 0; i < row.length(); i++) {
+            char c = row.charAt(i);
+            if (quoted) {
+                if (c != '"') {
+                    field.append(c);
+                } else if (i + 1 < row.length() && row.charAt(i + 1) == '"') {
+                    field.append('"');
+                    i++;
+                } else {
+                    quoted = false;
+                }
+            } else if (c == '"' && field.length() == 0) {
+                quoted = true;
+            } else if (c == ',') {
+                fields.add(field.toString());
+                field.setLength(0);
+            } else {
+                field.append(c);
+            }
+        }
+        if (quoted) throw new IllegalArgumentException("a quoted field is not closed");
+        fields.add(field.toString());
+        return fields;
     }
 }
