@@ -37,9 +37,17 @@ final class BenchLimitsCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         boolean temporary = dir == null;
+        if (!temporary && Files.exists(dir) && !Files.isDirectory(dir)) {
+            throw new UserError("--dir: " + dir + " is a file, not a folder");
+        }
         Path folder = temporary ? Files.createTempDirectory("minigolf-limits") : dir;
         try {
-            Map<String, Path> cases = LimitCases.write(folder);
+            Map<String, Path> cases;
+            try {
+                cases = LimitCases.write(folder);
+            } catch (IOException e) {
+                throw new UserError("--dir: cannot write the cases in " + folder + ": " + e.getMessage());
+            }
             warmUp();
             ArrayNode rows = Json.MAPPER.createArrayNode();
             boolean ok = true;
