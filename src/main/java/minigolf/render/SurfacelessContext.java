@@ -34,15 +34,20 @@ final class SurfacelessContext implements AutoCloseable {
         this.context = context;
     }
 
+    /** Why EGL cannot work in this process (found once; LWJGL does not retry loading libEGL). */
+    private static volatile String unavailable;
+
     /** Creates the context and makes it current on this thread, or throws a RenderException saying why not. */
     static SurfacelessContext create(int glMajor, int glMinor) {
+        if (unavailable != null) throw new RenderException(unavailable);
         if (Platform.get() != Platform.LINUX) {
             throw new RenderException("no display-less OpenGL on " + Platform.get().getName());
         }
         try {
             EGL.getCapabilities();
         } catch (Throwable e) { // libEGL.so.1 missing: the class initialiser fails with an Error
-            throw new RenderException("no libEGL (install libegl1 and libegl-mesa0): " + e.getMessage(), e);
+            unavailable = "no libEGL (install libegl1 and libegl-mesa0): " + e.getMessage();
+            throw new RenderException(unavailable, e);
         }
         String clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
         if (clientExtensions == null || !clientExtensions.contains("EGL_MESA_platform_surfaceless")) {

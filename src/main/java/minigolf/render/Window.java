@@ -67,6 +67,11 @@ public final class Window implements AutoCloseable {
             return;
         }
         try {
+            if (!hasDisplay()) {
+                // Not even tried: GLFW's probe of Wayland would print a libwayland warning first.
+                throw new NoOpenGlException("no display for a window (DISPLAY is unset; render and bench-render"
+                        + " work without one)");
+            }
             acquireGlfw();
         } catch (NoOpenGlException e) {
             if (!mayUseEgl) throw e;
@@ -125,8 +130,8 @@ public final class Window implements AutoCloseable {
             return SurfacelessContext.create(options.glMajor(), options.glMinor());
         } catch (RenderException e) {
             if (e.getMessage().contains("could not create an OpenGL")) throw e; // EGL works; the version does not
-            String why = glfwProblem != null ? glfwProblem + "; without a display: " + e.getMessage()
-                    : "no display (DISPLAY is unset) and no display-less OpenGL: " + e.getMessage();
+            String why = glfwProblem != null ? glfwProblem + "; and without a display: " + e.getMessage()
+                    : (hasDisplay() ? "" : "no display (DISPLAY is unset) and ") + "no display-less OpenGL: " + e.getMessage();
             throw new NoOpenGlException("no OpenGL available: " + why);
         }
     }
