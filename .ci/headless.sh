@@ -9,7 +9,7 @@ if [ ! -e /usr/lib/x86_64-linux-gnu/libEGL_mesa.so.0 ] && [ ! -e /usr/lib/aarch6
     echo "headless: installing libegl1 libegl-mesa0"
     sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
     $sudo apt-get update -qq || { echo "headless: apt-get update failed"; exit 1; }
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends libegl1 libegl-mesa0 >/dev/null \
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends libegl1 libegl-mesa0 >/dev/null 2>&1 \
         || { echo "headless: apt-get install failed"; exit 1; }
 fi
 
