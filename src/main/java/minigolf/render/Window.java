@@ -167,6 +167,9 @@ public final class Window implements AutoCloseable {
                     && glfwPlatformSupported(GLFW_PLATFORM_X11);
             if (x11Only) glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
             boolean ok = glfwInit();
+            // Seen here (Xvfb, Mesa): once a GL context has existed and GLFW was terminated, the next
+            // X11 connection of the process fails once ("Failed to open display") and the one after works.
+            if (!ok && x11Only) ok = glfwInit();
             if (x11Only) glfwInitHint(GLFW_PLATFORM, GLFW_ANY_PLATFORM);
             if (!ok && !x11Only && System.getenv("DISPLAY") != null && glfwPlatformSupported(GLFW_PLATFORM_X11)) {
                 // A stale WAYLAND_DISPLAY (no compositor) makes auto-detection fail though X11 would work.

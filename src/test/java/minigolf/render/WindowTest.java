@@ -37,6 +37,16 @@ class WindowTest {
         }
     }
 
+    /** GLFW is terminated when the last window closes and initialised again for the next (the game's probe, then its window). */
+    @Test
+    void windowsOpenOneAfterAnother() {
+        for (int i = 0; i < 3; i++) {
+            try (Window w = new Window("test " + i, 64, 64, Window.Options.hidden())) {
+                assertTrue(glGetInteger(org.lwjgl.opengl.GL30.GL_MAJOR_VERSION) >= 3, "round " + i);
+            }
+        }
+    }
+
     /** The display-less path, forced, so that it is also tested where a display exists (CI under Xvfb). */
     @Test
     void surfacelessContextDrawsIntoAFramebuffer() {
