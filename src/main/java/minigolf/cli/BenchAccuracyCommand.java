@@ -21,19 +21,19 @@ final class BenchAccuracyCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "COURSE")
+    @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--shots", paramLabel = "N", description = "Shots to compare (default 100).")
+    @Option(names = "--shots", paramLabel = "N", description = "Random shots from the start to compare (default: ${DEFAULT-VALUE}).")
     int shots = 100;
 
-    @Option(names = "--integrator", description = "Integrator under test (default rk4).")
+    @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator under test (default: ${DEFAULT-VALUE}).")
     String integrator = "rk4";
 
-    @Option(names = "--dt", description = "Step under test (default 1/60).")
+    @Option(names = "--dt", paramLabel = "S", description = "Time step under test in seconds (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
     double dt = SimulationSettings.DEFAULT_DT;
 
-    @Option(names = "--seed", description = "Seed of the random shots (default 1).")
+    @Option(names = "--seed", paramLabel = "S", description = "Seed of the random shots (default: ${DEFAULT-VALUE}).")
     long seed = 1;
 
     @Override

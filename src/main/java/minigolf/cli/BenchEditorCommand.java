@@ -27,16 +27,16 @@ final class BenchEditorCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--dabs", paramLabel = "N", description = "Dabs to time (default 300).")
+    @Option(names = "--dabs", paramLabel = "N", description = "Brush dabs to time (default: ${DEFAULT-VALUE}).")
     int dabs = 300;
 
-    @Option(names = "--radius", paramLabel = "M", description = "Brush radius in metres (default 0.5).")
+    @Option(names = "--radius", paramLabel = "M", description = "Brush radius in metres (default: ${DEFAULT-VALUE}).")
     double radius = 0.5;
 
-    @Option(names = "--cells", paramLabel = "N", description = "Grid cells a side (default 256).")
+    @Option(names = "--cells", paramLabel = "N", description = "Grid cells a side (default: ${DEFAULT-VALUE}).")
     int cells = 256;
 
-    @Option(names = "--gl", description = "Also upload each dab's mesh rows to a GL buffer (needs a display, e.g. xvfb-run).")
+    @Option(names = "--gl", description = "Also upload each dab's mesh rows to a GL buffer (needs OpenGL; default: off).")
     boolean gl;
 
     @Override

@@ -19,13 +19,13 @@ final class BenchPhysicsCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "COURSE")
+    @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--shots", paramLabel = "N", description = "Shots to time (default 20000).")
+    @Option(names = "--shots", paramLabel = "N", description = "Random legal shots to time (default: ${DEFAULT-VALUE}).")
     int shots = 20000;
 
-    @Option(names = "--seed", description = "Seed of the random shots (default 1).")
+    @Option(names = "--seed", paramLabel = "S", description = "Seed of the random shots (default: ${DEFAULT-VALUE}).")
     long seed = 1;
 
     @Override

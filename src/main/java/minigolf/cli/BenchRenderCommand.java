@@ -26,29 +26,29 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--frames", paramLabel = "N", description = "Frames to time (default 200).")
+    @Option(names = "--frames", paramLabel = "N", description = "Frames to time after the warm-up (default: ${DEFAULT-VALUE}).")
     int frames = 200;
 
-    @Option(names = "--size", paramLabel = "WxH", description = "Frame size (default 1280x720).")
+    @Option(names = "--size", paramLabel = "WxH", description = "Frame size in pixels (default: ${DEFAULT-VALUE}).")
     String size = "1280x720";
 
-    @Option(names = "--samples", paramLabel = "N", description = "Multisampling (default: the quality's, as the game window's; 0 off).")
+    @Option(names = "--samples", paramLabel = "N", description = "Multisampling, samples per pixel (default: the quality's, as the game window's; 0 off).")
     Integer samples;
 
     @Option(names = "--quality", paramLabel = "Q",
-            description = "auto (default: as the game picks it from GL_RENDERER), high (real GPUs) or software (llvmpipe).")
+            description = "auto (as the game picks it from GL_RENDERER), high (real GPUs) or software (llvmpipe) (default: ${DEFAULT-VALUE}).")
     String quality = "auto";
 
-    @Option(names = "--water-scale", paramLabel = "S", description = "The water targets' size relative to the frame (default: the quality's).")
+    @Option(names = "--water-scale", paramLabel = "S", description = "The water targets' size as a fraction of the frame's, 0..1 (default: the quality's).")
     Float waterScale;
 
-    @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction.")
+    @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction (default: off).")
     boolean noReflections;
 
-    @Option(names = "--no-shadows", description = "No sun shadows.")
+    @Option(names = "--no-shadows", description = "No sun shadows (default: off).")
     boolean noShadows;
 
-    @Option(names = "--breakdown", description = "Also time each pass (glFinish after each; run separately from the untimed frames).")
+    @Option(names = "--breakdown", description = "Also time each pass (glFinish after each; run separately from the untimed frames; default: off).")
     boolean breakdown;
 
     @Override

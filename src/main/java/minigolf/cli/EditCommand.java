@@ -20,26 +20,26 @@ final class EditCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--screenshot", paramLabel = "FILE.png", description = "Saves the last frame as PNG (needs --frames).")
+    @Option(names = "--screenshot", paramLabel = "FILE.png", description = "Saves the last frame as PNG (needs --frames; default: none).")
     Path screenshot;
 
-    @Option(names = "--frames", paramLabel = "N", description = "Runs the editor N frames, then exits.")
+    @Option(names = "--frames", paramLabel = "N", description = "Runs the editor N frames, then exits (default: ${DEFAULT-VALUE}, until the window is closed).")
     int frames;
 
     @Option(names = "--keys", paramLabel = "KEY", split = ",",
-            description = "Key presses played one per frame through the keyboard path, e.g. D,D,ENTER,SHIFT,M,ENTER,CTRL+S.")
+            description = "Key presses played one per frame through the keyboard path, e.g. D,D,ENTER,SHIFT,M,ENTER,CTRL+S (default: none).")
     List<String> keys;
 
-    @Option(names = "--name", paramLabel = "NAME", description = "New course: its name (default: New course).")
+    @Option(names = "--name", paramLabel = "NAME", description = "New course: its name (default: ${DEFAULT-VALUE}).")
     String name = "New course";
 
-    @Option(names = "--size", paramLabel = "WxD", description = "New course: width x depth in metres (default 10x6).")
+    @Option(names = "--size", paramLabel = "WxD", description = "New course: width x depth in metres (default: ${DEFAULT-VALUE}).")
     String size = "10x6";
 
-    @Option(names = "--spacing", paramLabel = "M", description = "New course: grid spacing in metres (default 0.05).")
+    @Option(names = "--spacing", paramLabel = "M", description = "New course: grid spacing in metres (default: ${DEFAULT-VALUE}).")
     double spacing = 0.05;
 
-    @Option(names = "--height", paramLabel = "EXPR", description = "New course: sample h(x, y) instead of flat ground.")
+    @Option(names = "--height", paramLabel = "EXPR", description = "New course: sample the height h(x, y) in metres instead of flat ground (default: flat, h = 0).")
     String height;
 
     @Override

@@ -42,19 +42,19 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--suite", required = true, paramLabel = "DIR", description = "Folder of course files (*.json).")
     Path suite;
 
-    @Option(names = "--bots", paramLabel = "a,b,c|all", description = "Bots to compare (default all).")
+    @Option(names = "--bots", paramLabel = "a,b,c|all", description = "Bots to compare (default: ${DEFAULT-VALUE}).")
     String botList = "all";
 
-    @Option(names = "--seeds", paramLabel = "N", description = "Runs per course and bot, seeds 1..N (default 5).")
+    @Option(names = "--seeds", paramLabel = "N", description = "Runs per course and bot, seeds 1..N (default: ${DEFAULT-VALUE}).")
     int seeds = 5;
 
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "Folder for the results (created).")
     Path out;
 
-    @Option(names = "--budget", paramLabel = "N", description = "Most simulations per game (default 20000).")
+    @Option(names = "--budget", paramLabel = "N", description = "Most simulations per game (default: ${DEFAULT-VALUE}).")
     long budget = 20_000;
 
-    @Option(names = "--max-strokes", paramLabel = "K", description = "Most shots per game (default 10).")
+    @Option(names = "--max-strokes", paramLabel = "K", description = "Most shots per game (default: ${DEFAULT-VALUE}).")
     int maxStrokes = 10;
 
     @Option(names = "--threads", paramLabel = "T",
@@ -62,11 +62,13 @@ final class ExperimentCommand implements Callable<Integer> {
     Integer threads;
 
     @Option(names = "--shard", paramLabel = "K/N",
-            description = "Run only every N-th run starting at K (K from 0) into DIR/shard-K-of-N/.")
+            description = "Run only every N-th run starting at K (K from 0) into DIR/shard-K-of-N/ "
+                    + "(default: the Slurm array task or Kubernetes index when set, else every run).")
     String shardText;
 
     @Option(names = "--shards", paramLabel = "N",
-            description = "The number of shards when the index comes from the scheduler (Kubernetes' JOB_COMPLETION_INDEX).")
+            description = "The number of shards when the index comes from the scheduler (Kubernetes' JOB_COMPLETION_INDEX; "
+                    + "default: none, required there).")
     Integer shards;
 
     @Override

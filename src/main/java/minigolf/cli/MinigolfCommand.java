@@ -6,9 +6,15 @@ import minigolf.app.GameLauncher;
 import minigolf.course.CourseException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.ScopeType;
+import minigolf.render.NoOpenGlException;
 
-/** The {@code minigolf} command: without a subcommand it opens the game. */
-@Command(name = "minigolf", mixinStandardHelpOptions = true, version = "minigolf 0.1.0",
+/**
+ * The {@code minigolf} command: without a subcommand it opens the game. {@code --help} and
+ * {@code --version} are inherited by every subcommand ({@code minigolf simulate --help}).
+ */
+@Command(name = "minigolf", mixinStandardHelpOptions = true, versionProvider = VersionInfo.class,
+        scope = ScopeType.INHERIT,
         description = "3D minigolf: play, simulate shots and benchmark the physics.",
         subcommands = {PlayCommand.class, SimulateCommand.class, BenchPhysicsCommand.class, BenchAccuracyCommand.class,
                 RenderCommand.class,
@@ -34,7 +40,8 @@ public final class MinigolfCommand implements Callable<Integer> {
             return 2;
         });
         commandLine.setExecutionExceptionHandler((exception, cmd, parseResult) -> {
-            if (exception instanceof UserError || exception instanceof CourseException) {
+            if (exception instanceof UserError || exception instanceof CourseException
+                    || exception instanceof NoOpenGlException) { // a fact about the machine: one line, exit 2
                 err.println("minigolf: " + exception.getMessage());
                 err.flush();
                 return 2;

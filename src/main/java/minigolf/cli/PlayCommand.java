@@ -25,25 +25,26 @@ final class PlayCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--screenshot", paramLabel = "FILE.png", description = "Saves the last frame's window as PNG (needs --frames).")
+    @Option(names = "--screenshot", paramLabel = "FILE.png", description = "Saves the last frame's window as PNG (needs --frames; default: none).")
     Path screenshot;
 
-    @Option(names = "--frames", paramLabel = "N", description = "Runs the game N frames, then exits.")
+    @Option(names = "--frames", paramLabel = "N", description = "Runs the game N frames, then exits (default: ${DEFAULT-VALUE}, until the window is closed).")
     int frames;
 
     @Option(names = "--players", paramLabel = "NAME", split = ",",
-            description = "Starts a game at once with these human players (1 to 4), e.g. --players Ann,Bob.")
+            description = "Starts a game at once with these human players (1 to 4), e.g. --players Ann,Bob (default: none, the main menu opens).")
     List<String> players;
 
     @Option(names = "--shots", paramLabel = "VX:VY", split = ",",
-            description = "Scripted shots for the human players, through the game's HIT input, e.g. 1.5:0.2,2:0.")
+            description = "Scripted shots for the human players, through the game's HIT input, in m/s, e.g. 1.5:0.2,2:0 (default: none).")
     List<String> shots;
 
-    @Option(names = "--time-scale", paramLabel = "K", description = "Animation speed (1 = real time; default 1).")
+    @Option(names = "--time-scale", paramLabel = "K", description = "Animation speed as a multiple of real time (default: ${DEFAULT-VALUE}).")
     double timeScale = 1;
 
     @Option(names = "--timing", description = {"With --frames: prints the real game loop's frame time as JSON"
-            + " (window, scene, minimap, HUD; the first quarter of the frames is warm-up) instead of the scorecard."})
+            + " (window, scene, minimap, HUD; the first quarter of the frames is warm-up) instead of the scorecard"
+            + " (default: off)."})
     boolean timing;
 
     @Override

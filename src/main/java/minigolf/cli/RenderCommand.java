@@ -23,20 +23,20 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--out", required = true, paramLabel = "FILE.png", description = "Where to save the picture.")
     Path out;
 
-    @Option(names = "--size", paramLabel = "WxH", description = "Picture size (default 1280x720).")
+    @Option(names = "--size", paramLabel = "WxH", description = "Picture size in pixels (default: ${DEFAULT-VALUE}).")
     String size = "1280x720";
 
     @Option(names = "--view", paramLabel = "VIEW",
-            description = "orbit: behind the ball towards the hole (default); top: from above.")
+            description = "orbit: behind the ball towards the hole; top: from above (default: ${DEFAULT-VALUE}).")
     View view = View.orbit;
 
-    @Option(names = "--height-map", description = "Colour the terrain by altitude.")
+    @Option(names = "--height-map", description = "Colour the terrain by altitude (default: off).")
     boolean heightMap;
 
-    @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction.")
+    @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction (default: off).")
     boolean noReflections;
 
-    @Option(names = "--minimap", description = "Draw the minimap in the top-right corner, as the game does.")
+    @Option(names = "--minimap", description = "Draw the minimap in the top-right corner, as the game does (default: off).")
     boolean minimap;
 
     @Override

@@ -31,19 +31,19 @@ final class SimulateCommand implements Callable<Integer> {
     Path course;
 
     @Option(names = "--velocity", required = true, paramLabel = "VX,VY[,VZ]",
-            description = "The shot's velocity in m/s, e.g. 3.2,0.5 (a putt) or 3,0,2 (a chip)")
+            description = "The shot's velocity in m/s, e.g. 3.2,0.5 (a putt) or 3,0,2 (a chip).")
     String velocityText;
 
-    @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator (default rk4).")
+    @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator (default: ${DEFAULT-VALUE}).")
     String integrator = "rk4";
 
-    @Option(names = "--dt", paramLabel = "S", description = "Time step in seconds (default 1/60).")
+    @Option(names = "--dt", paramLabel = "S", description = "Time step in seconds (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
     double dt = SimulationSettings.DEFAULT_DT;
 
-    @Option(names = "--model", paramLabel = "classic|complete", description = "Overrides the course's physics model.")
+    @Option(names = "--model", paramLabel = "classic|complete", description = "Overrides the course's physics model (default: the course's).")
     String model;
 
-    @Option(names = "--trajectory", paramLabel = "FILE.csv", description = "Writes t,x,y,vx,vy,z,vz for every step.")
+    @Option(names = "--trajectory", paramLabel = "FILE.csv", description = "Writes t,x,y,vx,vy,z,vz (s, m, m/s) for every step (default: none).")
     Path trajectory;
 
     @Override

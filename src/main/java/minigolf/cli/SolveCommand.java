@@ -25,16 +25,16 @@ final class SolveCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
 
-    @Option(names = "--bot", paramLabel = "NAME", description = "The bot (default planner).")
+    @Option(names = "--bot", paramLabel = "NAME", description = "The bot (default: ${DEFAULT-VALUE}).")
     String bot = Bots.DEFAULT;
 
-    @Option(names = "--seed", paramLabel = "S", description = "Seed for the bot's random choices (default 1).")
+    @Option(names = "--seed", paramLabel = "S", description = "Seed for the bot's random choices (default: ${DEFAULT-VALUE}).")
     long seed = 1;
 
-    @Option(names = "--max-strokes", paramLabel = "K", description = "Stop after K shots (default 10).")
+    @Option(names = "--max-strokes", paramLabel = "K", description = "Stop after K shots (default: ${DEFAULT-VALUE}).")
     int maxStrokes = 10;
 
-    @Option(names = "--budget", paramLabel = "N", description = "Most simulations for the whole game (default 1000000).")
+    @Option(names = "--budget", paramLabel = "N", description = "Most simulations for the whole game (default: ${DEFAULT-VALUE}).")
     long budget = 1_000_000;
 
     @Override

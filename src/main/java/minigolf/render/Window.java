@@ -15,6 +15,12 @@ import static org.lwjgl.system.MemoryUtil.NULL;
  * created it. GLFW is initialised by the first open window and terminated when the last one closes.
  * The viewport size to use is {@link #framebufferWidth()} x {@link #framebufferHeight()}: pixels, not
  * screen coordinates, so HiDPI screens render at full resolution; it follows resizes.
+ * <p>
+ * A hidden window (off-screen rendering: stills, benchmarks, tests) on a Linux machine with no display
+ * is no window at all but a {@link SurfacelessContext} (EGL without a display server); it has no default
+ * framebuffer, which off-screen code never uses. {@code -Dminigolf.gl=surfaceless} (or the environment
+ * variable {@code MINIGOLF_GL}) forces that path, {@code glfw} forbids it. With neither a display nor
+ * EGL, the constructor throws {@link NoOpenGlException}.
  */
 public final class Window implements AutoCloseable {
 
@@ -40,6 +46,8 @@ public final class Window implements AutoCloseable {
     private static volatile String lastError = "";
 
     private final long handle;
+    private final SurfacelessContext surfaceless;
+    private boolean closeRequested;
     private int fbWidth;
     private int fbHeight;
     private boolean closed;
@@ -49,7 +57,32 @@ public final class Window implements AutoCloseable {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("window size must be positive: " + width + "x" + height);
         }
-        acquireGlfw();
+        String backend = backendOverride();
+        boolean mayUseEgl = !options.visible() && !"glfw".equals(backend);
+        if (mayUseEgl && ("surfaceless".equals(backend) || !hasDisplay())) {
+            handle = NULL;
+            surfaceless = createSurfaceless(options, null);
+            fbWidth = width;
+            fbHeight = height;
+            return;
+        }
+        try {
+            if (!hasDisplay()) {
+                // Not even tried: GLFW's probe of Wayland would print a libwayland warning first.
+                throw new NoOpenGlException("no display for a window (DISPLAY is unset; render and bench-render"
+                        + " work without one)");
+            }
+            acquireGlfw();
+        } catch (NoOpenGlException e) {
+            if (!mayUseEgl) throw e;
+            // A display that cannot be opened (a stale DISPLAY, say): render without it.
+            handle = NULL;
+            surfaceless = createSurfaceless(options, e.getMessage());
+            fbWidth = width;
+            fbHeight = height;
+            return;
+        }
+        surfaceless = null;
         boolean ok = false;
         try {
             glfwDefaultWindowHints();
@@ -92,6 +125,34 @@ public final class Window implements AutoCloseable {
         }
     }
 
+    private static SurfacelessContext createSurfaceless(Options options, String glfwProblem) {
+        try {
+            return SurfacelessContext.create(options.glMajor(), options.glMinor());
+        } catch (RenderException e) {
+            if (e.getMessage().contains("could not create an OpenGL")) throw e; // EGL works; the version does not
+            String why = glfwProblem != null ? glfwProblem + "; and without a display: " + e.getMessage()
+                    : (hasDisplay() ? "" : "no display (DISPLAY is unset) and ") + "no display-less OpenGL: " + e.getMessage();
+            throw new NoOpenGlException("no OpenGL available: " + why);
+        }
+    }
+
+    /** -Dminigolf.gl or MINIGOLF_GL: "surfaceless" (EGL, even with a display) or "glfw" (never EGL). */
+    private static String backendOverride() {
+        String v = System.getProperty("minigolf.gl");
+        if (v == null) v = System.getenv("MINIGOLF_GL");
+        return v == null ? "" : v.trim().toLowerCase(java.util.Locale.ROOT);
+    }
+
+    /** On Linux a window needs an X server or a Wayland compositor; Windows and macOS always have a desktop. */
+    private static boolean hasDisplay() {
+        if (org.lwjgl.system.Platform.get() != org.lwjgl.system.Platform.LINUX) return true;
+        return !isBlank(System.getenv("DISPLAY")) || !isBlank(System.getenv("WAYLAND_DISPLAY"));
+    }
+
+    private static boolean isBlank(String s) {
+        return s == null || s.isBlank();
+    }
+
     private static synchronized void acquireGlfw() {
         if (openWindows == 0) {
             // The error callback goes first so that a failing glfwInit can say why.
@@ -99,8 +160,18 @@ public final class Window implements AutoCloseable {
                     lastError = String.format("GLFW error 0x%X: %s", code, GLFWErrorCallback.getDescription(description)));
             GLFWErrorCallback previous = glfwSetErrorCallback(errorCallback);
             if (previous != null) previous.free();
+            // With only an X display, ask for X11 straight away: probing Wayland first makes libwayland print
+            // "XDG_RUNTIME_DIR is invalid or not set" when that variable is unset (ssh, xvfb-run, CI).
+            boolean x11Only = org.lwjgl.system.Platform.get() == org.lwjgl.system.Platform.LINUX
+                    && !isBlank(System.getenv("DISPLAY")) && isBlank(System.getenv("WAYLAND_DISPLAY"))
+                    && glfwPlatformSupported(GLFW_PLATFORM_X11);
+            if (x11Only) glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
             boolean ok = glfwInit();
-            if (!ok && System.getenv("DISPLAY") != null && glfwPlatformSupported(GLFW_PLATFORM_X11)) {
+            // Seen here (Xvfb, Mesa): once a GL context has existed and GLFW was terminated, the next
+            // X11 connection of the process fails once ("Failed to open display") and the one after works.
+            if (!ok && x11Only) ok = glfwInit();
+            if (x11Only) glfwInitHint(GLFW_PLATFORM, GLFW_ANY_PLATFORM);
+            if (!ok && !x11Only && System.getenv("DISPLAY") != null && glfwPlatformSupported(GLFW_PLATFORM_X11)) {
                 // A stale WAYLAND_DISPLAY (no compositor) makes auto-detection fail though X11 would work.
                 String first = describeLastError();
                 glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
@@ -113,7 +184,7 @@ public final class Window implements AutoCloseable {
                 glfwSetErrorCallback(null);
                 errorCallback.free();
                 errorCallback = null;
-                throw new RenderException("GLFW could not be initialised (is there a display? DISPLAY="
+                throw new NoOpenGlException("GLFW could not be initialised (is there a display? DISPLAY="
                         + System.getenv("DISPLAY") + "): " + why + staleXauthorityHint());
             }
         }
@@ -143,6 +214,7 @@ public final class Window implements AutoCloseable {
         return lastError.isEmpty() ? "no GLFW error reported" : lastError;
     }
 
+    /** The GLFW window, or NULL (0) for a display-less context. */
     public long handle() {
         return handle;
     }
@@ -155,33 +227,40 @@ public final class Window implements AutoCloseable {
         return fbHeight;
     }
 
+    /** True for a display-less EGL context: there is no window, no default framebuffer and no input. */
+    public boolean isSurfaceless() {
+        return surfaceless != null;
+    }
+
     public boolean shouldClose() {
-        return glfwWindowShouldClose(handle);
+        return surfaceless != null ? closeRequested : glfwWindowShouldClose(handle);
     }
 
     public void requestClose() {
-        glfwSetWindowShouldClose(handle, true);
+        if (surfaceless != null) closeRequested = true;
+        else glfwSetWindowShouldClose(handle, true);
     }
 
     public void swapBuffers() {
-        glfwSwapBuffers(handle);
+        if (surfaceless == null) glfwSwapBuffers(handle);
     }
 
     public void pollEvents() {
-        glfwPollEvents();
+        if (surfaceless == null) glfwPollEvents();
     }
 
     /** Vsync on or off (the game's frame limiter takes over when it is off or has no effect). */
     public void setVsync(boolean on) {
-        glfwSwapInterval(on ? 1 : 0);
+        if (surfaceless == null) glfwSwapInterval(on ? 1 : 0);
     }
 
     public boolean isFullscreen() {
-        return glfwGetWindowMonitor(handle) != NULL;
+        return surfaceless == null && glfwGetWindowMonitor(handle) != NULL;
     }
 
     /** Switches between a window and the primary monitor's full screen (F11), restoring the window's place. */
     public void toggleFullscreen() {
+        if (surfaceless != null) return;
         if (isFullscreen()) {
             glfwSetWindowMonitor(handle, NULL, windowedX, windowedY, windowedW, windowedH, GLFW_DONT_CARE);
             return;
@@ -204,17 +283,21 @@ public final class Window implements AutoCloseable {
 
     /** Minimised (iconified): nothing to draw. */
     public boolean isIconified() {
-        return glfwGetWindowAttrib(handle, GLFW_ICONIFIED) == GLFW_TRUE;
+        return surfaceless == null && glfwGetWindowAttrib(handle, GLFW_ICONIFIED) == GLFW_TRUE;
     }
 
     public void setTitle(String title) {
-        glfwSetWindowTitle(handle, title);
+        if (surfaceless == null) glfwSetWindowTitle(handle, title);
     }
 
     @Override
     public void close() {
         if (closed) return;
         closed = true;
+        if (surfaceless != null) {
+            surfaceless.close();
+            return;
+        }
         if (glfwGetCurrentContext() == handle) {
             GL.setCapabilities(null);
             glfwMakeContextCurrent(NULL);

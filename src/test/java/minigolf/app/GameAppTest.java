@@ -24,6 +24,7 @@ import org.junit.jupiter.api.io.TempDir;
  * The real game window under Xvfb: a scripted two-player game on the flat course goes through the
  * same input path as the HIT button ({@link GameApp#hit}), animated at the fixed physics step.
  */
+@minigolf.render.NeedsDisplay
 class GameAppTest {
     @TempDir
     Path dir;

@@ -21,6 +21,7 @@ import org.junit.jupiter.api.io.TempDir;
  * The real game window under Xvfb while a ball rolls: it is resized, minimised and restored, then
  * closed mid-shot. The game must go on drawing at the new size and shut down cleanly.
  */
+@minigolf.render.NeedsDisplay
 class GameWindowEventsTest {
     @TempDir
     Path dir;

@@ -72,6 +72,7 @@ class RenderCommandTest {
     }
 
     @Test
+    @minigolf.render.NeedsDisplay
     void playTimingTimesTheRealGameLoop() throws Exception {
         CliRun r = run("play", course("flat.json"), "--players", "Ann", "--frames", "24", "--timing");
         assertEquals(0, r.code(), r.err());

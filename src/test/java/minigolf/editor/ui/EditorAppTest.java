@@ -21,6 +21,7 @@ import org.junit.jupiter.api.io.TempDir;
  * The real editor window under Xvfb: key presses go through the same path as the keyboard
  * ({@link EditorApp#onKey}), CTRL+S saves, and the saved file loads with exactly the changes made.
  */
+@minigolf.render.NeedsDisplay
 class EditorAppTest {
     @TempDir
     Path dir;
