@@ -21,6 +21,9 @@ import minigolf.game.CourseEdits;
 import minigolf.game.Game;
 import minigolf.game.Player;
 import minigolf.game.PlayerState;
+import minigolf.game.Round;
+import minigolf.game.RoundGame;
+import minigolf.game.SavedRounds;
 import minigolf.game.SaveGameException;
 import minigolf.game.SavedGames;
 import minigolf.game.SettingsStore;
@@ -67,6 +70,8 @@ public final class GameApp implements UiActions, UiView {
     }
 
     private static final double AIM_PICK_PIXELS = 48;
+    /** Frames a headless run (--frames) shows the card between holes before it plays the next. */
+    static final int ROUND_CARD_FRAMES = 30;
 
     private final Options options;
     private final SettingsStore store;
@@ -74,6 +79,12 @@ public final class GameApp implements UiActions, UiView {
     private World world;
     private Path coursePath;
     private Game game;
+    /** The round being played (null for a single course); {@link #game} is its current hole's game. */
+    private RoundGame round;
+    /** The round the next game plays (set by {@link #playRound} or the menu). */
+    private Round roundToPlay;
+    /** Frames the between-holes card has been shown (the headless run moves on by itself). */
+    private int cardFrames;
     private StrokeAnimator animator;
     private BotTurn botTurn;
     private String message;
@@ -82,6 +93,7 @@ public final class GameApp implements UiActions, UiView {
     private final Screens screens = new Screens(this);
     private final Thumbnails thumbnails = new Thumbnails();
     private List<CourseEntry> courses;
+    private List<RoundEntry> rounds;
 
     private Window window;
     private SceneRenderer renderer;
@@ -123,7 +135,10 @@ public final class GameApp implements UiActions, UiView {
                 imgui = ui;
                 buildScene();
                 try {
-                    if (options.startPlayers() != null) startGame(options.startPlayers());
+                    if (options.startPlayers() != null) {
+                        if (roundToPlay != null) startRound(roundToPlay, options.startPlayers());
+                        else startGame(options.startPlayers());
+                    }
                     loop();
                 } finally {
                     if (botTurn != null) botTurn.cancel();
@@ -133,6 +148,16 @@ public final class GameApp implements UiActions, UiView {
             }
         }
         return game;
+    }
+
+    /** Plays this round instead of a single course (before {@link #run()}: with the options' players it starts at once). */
+    public void playRound(Round r) {
+        roundToPlay = r;
+    }
+
+    /** The round being played, or null. */
+    public RoundGame roundGame() {
+        return round;
     }
 
     /** Sets what runs at the start of every pass of the render loop (for tests: resize, minimise, close). */
@@ -158,7 +183,9 @@ public final class GameApp implements UiActions, UiView {
             if (rebuildScene) buildScene();
             drawFrame(fw, fh, (float) (now - start));
             frame++;
-            overFrames = screens.screen() == Screen.SCORECARD ? overFrames + 1 : 0;
+            boolean finalCard = screens.screen() == Screen.SCORECARD
+                    || (screens.screen() == Screen.ROUND_CARD && round != null && round.isOver());
+            overFrames = finalCard ? overFrames + 1 : 0;
             // ImGui sizes a new window in its first frames: stop once the scorecard has been drawn.
             boolean over = options.exitWhenOver() && overFrames >= 3;
             if ((options.frames() > 0 && frame >= options.frames()) || over) {
@@ -190,6 +217,11 @@ public final class GameApp implements UiActions, UiView {
     private void update(double elapsed, double now) {
         if (message != null && now > messageUntil) message = null;
         Screen screen = screens.screen();
+        if (screen == Screen.ROUND_CARD && round != null && !round.isOver() && options.frames() > 0
+                && ++cardFrames >= ROUND_CARD_FRAMES) {
+            nextHole(); // a headless run moves on by itself; a player presses "Next hole"
+            return;
+        }
         boolean running = screen == Screen.PLAYING || screen == Screen.TEST_BOT;
         if (game == null || !running) return;
         if (animator != null) {
@@ -200,7 +232,13 @@ public final class GameApp implements UiActions, UiView {
                 Player p = game.players().get(r.player());
                 say(p.name() + ": " + describe(r));
                 if (game.isOver()) {
-                    screens.show(Screen.SCORECARD);
+                    if (round != null) {
+                        round.finishHole();
+                        cardFrames = 0;
+                        screens.show(Screen.ROUND_CARD);
+                    } else {
+                        screens.show(Screen.SCORECARD);
+                    }
                     return;
                 }
             }
@@ -329,6 +367,10 @@ public final class GameApp implements UiActions, UiView {
             if (action != GLFW_PRESS || (imgui != null && imgui.wantsKeyboard())) return;
             switch (key) {
                 case GLFW_KEY_ESCAPE -> escape();
+                case GLFW_KEY_F1 -> {
+                    if (screens.screen() == Screen.HELP) screens.closeHelp();
+                    else screens.openHelp();
+                }
                 case GLFW_KEY_F11 -> window.toggleFullscreen();
                 case GLFW_KEY_R -> camera.reset();
                 case GLFW_KEY_H -> renderer.terrainPass().setColorMode(renderer.terrainPass().colorMode().next());
@@ -398,6 +440,10 @@ public final class GameApp implements UiActions, UiView {
             case TEST_BOT -> toMainMenu();
             case COURSES, NEW_GAME, SETTINGS, SCORECARD -> screens.show(game != null && !game.isOver()
                     && screens.screen() == Screen.SETTINGS ? Screen.PAUSED : Screen.MAIN_MENU);
+            case HELP -> screens.closeHelp();
+            case ROUND_CARD -> {
+                if (round != null && round.isOver()) toMainMenu();
+            }
             case MAIN_MENU -> {
             }
         }
@@ -448,12 +494,57 @@ public final class GameApp implements UiActions, UiView {
 
     @Override
     public void startGame(List<Player> players) {
+        if (roundToPlay != null) {
+            startRound(roundToPlay, players);
+            return;
+        }
+        round = null;
         cancelBot();
         animator = null;
         game = new Game(world, settings.simulation(), players, settings.strokeLimit());
         camera.reset();
         screens.show(Screen.PLAYING);
         say(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
+    }
+
+    private void startRound(Round r, List<Player> players) {
+        cancelBot();
+        botTurn = null;
+        animator = null;
+        round = new RoundGame(r, settings.simulation(), players, settings.strokeLimit());
+        showHole();
+        say(r.name() + ", hole 1 of " + r.size() + " (par " + r.hole(0).par() + "): " + players.get(0).name() + " tees off.");
+    }
+
+    /** Shows the round's current hole: its course, a fresh camera, the HUD. */
+    private void showHole() {
+        game = round.game();
+        world = game.world();
+        coursePath = null;
+        buildScene();
+        screens.show(Screen.PLAYING);
+    }
+
+    @Override
+    public void nextHole() {
+        if (round == null) return;
+        if (round.isHoleOver()) round.finishHole();
+        if (!round.nextHole()) {
+            screens.show(Screen.ROUND_CARD);
+            return;
+        }
+        cancelBot();
+        botTurn = null;
+        animator = null;
+        showHole();
+        Round.Hole h = round.hole();
+        say("Hole " + (round.holeIndex() + 1) + " of " + round.round().size() + ": " + world.course().name() + ", par " + h.par());
+    }
+
+    @Override
+    public void chooseRound(Round r) {
+        roundToPlay = r;
+        screens.show(Screen.NEW_GAME);
     }
 
     @Override
@@ -472,6 +563,8 @@ public final class GameApp implements UiActions, UiView {
         try {
             world = World.load(file);
             coursePath = file;
+            roundToPlay = null;
+            round = null;
             game = null;
             animator = null;
             rebuildScene = true;
@@ -499,9 +592,10 @@ public final class GameApp implements UiActions, UiView {
         if (game == null) return;
         try {
             Files.createDirectories(store.savesDirectory());
-            Path file = store.savesDirectory().resolve("game-"
+            Path file = store.savesDirectory().resolve((round != null ? "round-" : "game-")
                     + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".json");
-            SavedGames.save(game, file);
+            if (round != null) SavedRounds.save(round, file);
+            else SavedGames.save(game, file);
             say("saved to " + file);
         } catch (IOException | SaveGameException e) {
             say("not saved: " + e.getMessage());
@@ -511,9 +605,23 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public void loadGame(Path file) {
         try {
+            if (Files.isRegularFile(file) && SavedRounds.isSavedRound(Files.readString(file))) {
+                RoundGame loaded = SavedRounds.load(file);
+                cancelBot();
+                botTurn = null;
+                round = loaded;
+                roundToPlay = loaded.round();
+                showHole();
+                game = round.game();
+                animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
+                if (game.isOver()) screens.show(Screen.ROUND_CARD);
+                say("loaded " + file.getFileName() + ": " + round.round().name() + ", hole " + (round.holeIndex() + 1));
+                return;
+            }
             SavedGames.Loaded loaded = SavedGames.load(file);
             cancelBot();
             botTurn = null;
+            round = null;
             world = loaded.world();
             buildScene();
             game = loaded.resume();
@@ -522,6 +630,8 @@ public final class GameApp implements UiActions, UiView {
             say("loaded " + file.getFileName());
         } catch (SaveGameException e) {
             say(e.getMessage());
+        } catch (IOException e) {
+            say("cannot read " + file + ": " + e.getMessage());
         }
     }
 
@@ -551,6 +661,7 @@ public final class GameApp implements UiActions, UiView {
         botTurn = null;
         animator = null;
         game = null;
+        round = null;
         screens.show(Screen.MAIN_MENU);
     }
 
@@ -579,6 +690,22 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public Game game() {
         return game;
+    }
+
+    @Override
+    public RoundGame round() {
+        return round;
+    }
+
+    @Override
+    public Round chosenRound() {
+        return roundToPlay;
+    }
+
+    @Override
+    public List<RoundEntry> rounds() {
+        if (rounds == null) rounds = CourseFolders.rounds(store);
+        return rounds;
     }
 
     /** Exposed for tests: the screen shown now. */

@@ -89,6 +89,11 @@ public final class Screens {
             }
             case SCORECARD -> scorecard(view, w, h);
             case TEST_BOT -> hud(view, w, h, false);
+            case ROUND_CARD -> {
+                hud(view, w, h, false);
+                roundCard(view, w, h);
+            }
+            case HELP -> help(w, h);
         }
         if (view.message() != null) {
             ImGui.setNextWindowPos(w * 0.5f, h - 16, ImGuiCond.Always, 0.5f, 1f);
@@ -106,11 +111,12 @@ public final class Screens {
     private void mainMenu(UiView view, float w, float h) {
         centre(w, h);
         ImGui.begin("Minigolf", PANEL);
-        ImGui.text("Course: " + view.world().course().name());
+        ImGui.text(view.chosenRound() != null ? "Round: " + view.chosenRound().name() + " (" + view.chosenRound().size()
+                + " holes, par " + view.chosenRound().par() + ")" : "Course: " + view.world().course().name());
         ImGui.separator();
         float bw = 300, bh = 0;
         if (ImGui.button("Play", bw, bh)) show(Screen.NEW_GAME);
-        if (ImGui.button("Select course", bw, bh)) show(Screen.COURSES);
+        if (ImGui.button("Rounds and practice holes", bw, bh)) show(Screen.COURSES);
         List<String> botNames = BotCatalog.names();
         if (ImGui.button("Test bot", bw, bh) && !botNames.isEmpty()) {
             actions.testBot(botNames.get(Math.min(testBot.get(), botNames.size() - 1)));
@@ -124,6 +130,7 @@ public final class Screens {
             ImGui.endMenu();
         }
         if (ImGui.button("Settings", bw, bh)) openSettings(view, Screen.MAIN_MENU);
+        if (ImGui.button("Help (F1)", bw, bh)) openHelp();
         if (ImGui.button("Quit", bw, bh)) actions.quit();
         ImGui.end();
     }
@@ -132,6 +139,15 @@ public final class Screens {
         centre(w, h);
         ImGui.setNextWindowSize(Math.min(w - 40, 760), Math.min(h - 40, 560));
         ImGui.begin("Select course", ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoResize);
+        ImGui.textColored(1f, 0.85f, 0.3f, 1f, "Rounds");
+        for (UiView.RoundEntry r : view.rounds()) {
+            String label = String.format(Locale.ROOT, "%s  (%d holes, par %d)##%s", r.round().name(), r.round().size(),
+                    r.round().par(), r.file());
+            if (ImGui.button(label, 420, 0)) actions.chooseRound(r.round());
+        }
+        if (view.rounds().isEmpty()) ImGui.text("(no rounds found)");
+        ImGui.separator();
+        ImGui.textColored(1f, 0.85f, 0.3f, 1f, "Practice (single holes)");
         int column = 0;
         for (UiView.CourseEntry c : view.courses()) {
             ImGui.beginGroup();
@@ -153,7 +169,8 @@ public final class Screens {
 
     private void newGame(UiView view, float w, float h) {
         centre(w, h);
-        ImGui.begin("New game: " + view.world().course().name(), PANEL);
+        ImGui.begin("New game: " + (view.chosenRound() != null ? view.chosenRound().name() : view.world().course().name())
+                + "###newgame", PANEL);
         ImGui.sliderInt("Players", playerCount.getData(), 1, Game.MAX_PLAYERS);
         List<String> botNames = BotCatalog.names();
         for (int i = 0; i < playerCount.get(); i++) {
@@ -253,6 +270,11 @@ public final class Screens {
         Game g = view.game();
         ImGui.setNextWindowPos(12, 12, ImGuiCond.Always);
         ImGui.begin("##hud", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+        minigolf.game.RoundGame rg = view.round();
+        if (rg != null) {
+            ImGui.textColored(0.6f, 0.9f, 1f, 1f, String.format(Locale.ROOT, "%s  -  hole %d of %d  -  par %d",
+                    rg.round().name(), rg.holeIndex() + 1, rg.round().size(), rg.hole().par()));
+        }
         if (g != null) {
             int cur = g.currentPlayer();
             if (cur >= 0) {
@@ -369,6 +391,119 @@ public final class Screens {
         if (ImGui.button("Play again")) show(Screen.NEW_GAME);
         ImGui.sameLine();
         if (ImGui.button("Main menu")) actions.toMainMenu();
+        ImGui.end();
+    }
+
+    private void roundCard(UiView view, float w, float h) {
+        minigolf.game.RoundGame rg = view.round();
+        if (rg == null) return;
+        minigolf.game.RoundScorecard card = rg.scorecard();
+        int holes = card.pars().length;
+        centre(w, h);
+        ImGui.begin((card.over() ? "Final card: " : "Card: ") + card.roundName() + "###roundcard", PANEL);
+        if (ImGui.beginTable("##card", holes + 3, ImGuiTableFlags.Borders | ImGuiTableFlags.RowBg | ImGuiTableFlags.SizingFixedFit)) {
+            ImGui.tableSetupColumn("Hole");
+            for (int i = 0; i < holes; i++) ImGui.tableSetupColumn(String.valueOf(i + 1));
+            ImGui.tableSetupColumn("Total");
+            ImGui.tableSetupColumn("To par");
+            ImGui.tableHeadersRow();
+            ImGui.tableNextRow();
+            ImGui.tableSetColumnIndex(0);
+            ImGui.text("Par");
+            for (int i = 0; i < holes; i++) {
+                ImGui.tableSetColumnIndex(i + 1);
+                ImGui.text(String.valueOf(card.pars()[i]));
+            }
+            ImGui.tableSetColumnIndex(holes + 1);
+            ImGui.text(String.valueOf(card.totalPar()));
+            for (int s = 0; s < card.rows().size(); s++) {
+                minigolf.game.RoundScorecard.Row row = card.rows().get(s);
+                ImGui.tableNextRow();
+                ImGui.tableSetColumnIndex(0);
+                float[] c = PlayerColors.of(s);
+                ImGui.textColored(c[0], c[1], c[2], 1f, row.name());
+                for (int i = 0; i < row.holes().length; i++) {
+                    ImGui.tableSetColumnIndex(i + 1);
+                    int score = row.holes()[i], par = card.pars()[i];
+                    if (score == 1) ImGui.textColored(1f, 0.85f, 0.2f, 1f, "1");
+                    else if (score < par) ImGui.textColored(0.5f, 1f, 0.5f, 1f, String.valueOf(score));
+                    else if (score > par) ImGui.textColored(1f, 0.6f, 0.5f, 1f, String.valueOf(score));
+                    else ImGui.text(String.valueOf(score));
+                }
+                ImGui.tableSetColumnIndex(holes + 1);
+                ImGui.text(String.valueOf(row.total()));
+                ImGui.tableSetColumnIndex(holes + 2);
+                ImGui.text(minigolf.game.RoundScorecard.formatToPar(card.toPar(s)));
+            }
+            ImGui.endTable();
+        }
+        List<Integer> winners = card.winners();
+        if (!winners.isEmpty()) {
+            List<String> names = winners.stream().map(s -> card.rows().get(s).name()).toList();
+            ImGui.textColored(1f, 0.85f, 0.3f, 1f, (names.size() == 1 ? "Winner: " : "Tied for the win: ") + String.join(", ", names));
+        }
+        if (!card.over()) {
+            if (ImGui.button("Next hole", 160, 0)) actions.nextHole();
+            ImGui.sameLine();
+            if (ImGui.button("Save and quit", 160, 0)) {
+                actions.saveGame();
+                actions.toMainMenu();
+            }
+        } else {
+            if (ImGui.button("Play again", 160, 0)) show(Screen.NEW_GAME);
+            ImGui.sameLine();
+            if (ImGui.button("Main menu", 160, 0)) actions.toMainMenu();
+        }
+        ImGui.end();
+    }
+
+    private Screen helpReturn = Screen.MAIN_MENU;
+
+    /** Opens the help screen; ESC or "Back" returns to where it was opened. */
+    public void openHelp() {
+        if (screen != Screen.HELP) helpReturn = screen;
+        show(Screen.HELP);
+    }
+
+    /** Where the help screen goes back to. */
+    public void closeHelp() {
+        show(helpReturn);
+    }
+
+    static final String[][] CONTROLS = {
+            {"Aim and hit", "press on your ball, drag back away from where it should go, release"},
+            {"Cancel an aim", "right click while dragging"},
+            {"Power", "the longer the drag, the harder the putt (the bar shows it)"},
+            {"Turn the camera", "drag with the left button away from the ball"},
+            {"Move the camera", "drag with the right button"},
+            {"Zoom", "mouse wheel"},
+            {"Reset the camera", "R"},
+            {"Skip the rolling ball", "SPACE"},
+            {"Height colours", "H"},
+            {"Pause / back", "ESC"},
+            {"Full screen", "F11"},
+            {"This help", "F1"},
+    };
+
+    private void help(float w, float h) {
+        centre(w, h);
+        ImGui.begin("Help###help", PANEL);
+        ImGui.textColored(1f, 0.85f, 0.3f, 1f, "How to play");
+        ImGui.text("Get the ball in the cup in as few strokes as you can. Par is what a good player needs.");
+        ImGui.text("Water or out of bounds: one penalty stroke, the ball goes back to where the stroke began.");
+        ImGui.text("A ball that rolls slowly enough over the cup drops in.");
+        ImGui.separator();
+        if (ImGui.beginTable("##controls", 2, ImGuiTableFlags.RowBg | ImGuiTableFlags.SizingFixedFit)) {
+            for (String[] c : CONTROLS) {
+                ImGui.tableNextRow();
+                ImGui.tableSetColumnIndex(0);
+                ImGui.textColored(0.6f, 0.9f, 1f, 1f, c[0]);
+                ImGui.tableSetColumnIndex(1);
+                ImGui.text(c[1]);
+            }
+            ImGui.endTable();
+        }
+        if (ImGui.button("Back", 160, 0)) closeHelp();
         ImGui.end();
     }
 }

@@ -31,4 +31,10 @@ public interface UiActions {
     void createCourse();
 
     void quit();
+
+    /** Plays a round: the new-game dialog opens for it. */
+    void chooseRound(minigolf.game.Round round);
+
+    /** After a hole's card: on to the next hole (or the final card). */
+    void nextHole();
 }

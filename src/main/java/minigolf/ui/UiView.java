@@ -39,4 +39,16 @@ public interface UiView {
 
     record CourseEntry(String name, Path file, boolean own) {
     }
+
+    /** The round being played, or null (a single course). */
+    minigolf.game.RoundGame round();
+
+    /** The round the next game plays, or null (the selected course). */
+    minigolf.game.Round chosenRound();
+
+    /** The rounds to choose from (loaded, so they can be played). */
+    List<RoundEntry> rounds();
+
+    record RoundEntry(minigolf.game.Round round, Path file) {
+    }
 }
