@@ -19,6 +19,7 @@ import minigolf.game.BotCatalog;
 import minigolf.game.BotTurn;
 import minigolf.game.CourseEdits;
 import minigolf.game.Game;
+import minigolf.game.HighScores;
 import minigolf.game.Player;
 import minigolf.game.PlayerState;
 import minigolf.game.Round;
@@ -81,6 +82,8 @@ public final class GameApp implements UiActions, UiView {
     private Game game;
     /** The round being played (null for a single course); {@link #game} is its current hole's game. */
     private RoundGame round;
+    /** Scores kept between games (null when the file is broken: it is then left alone). */
+    private HighScores highScores;
     /** The round the next game plays (set by {@link #playRound} or the menu). */
     private Round roundToPlay;
     /** Frames the between-holes card has been shown (the headless run moves on by itself). */
@@ -116,6 +119,12 @@ public final class GameApp implements UiActions, UiView {
         String[] problem = new String[1];
         this.settings = store.loadOrDefaults(problem);
         if (problem[0] != null) say("settings ignored: " + problem[0]);
+        try {
+            highScores = HighScores.load(HighScores.file(store.directory()));
+        } catch (SaveGameException e) {
+            highScores = null;
+            say("high scores ignored: " + e.getMessage());
+        }
         this.world = world;
         this.coursePath = options.coursePath();
         this.script = new ArrayDeque<>(options.scriptedShots());
@@ -233,7 +242,7 @@ public final class GameApp implements UiActions, UiView {
                 say(p.name() + ": " + describe(r));
                 if (game.isOver()) {
                     if (round != null) {
-                        round.finishHole();
+                        recordScores(round.finishHole());
                         cardFrames = 0;
                         screens.show(Screen.ROUND_CARD);
                     } else {
@@ -528,7 +537,7 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public void nextHole() {
         if (round == null) return;
-        if (round.isHoleOver()) round.finishHole();
+        if (round.isHoleOver()) recordScores(round.finishHole());
         if (!round.nextHole()) {
             screens.show(Screen.ROUND_CARD);
             return;
@@ -539,6 +548,30 @@ public final class GameApp implements UiActions, UiView {
         showHole();
         Round.Hole h = round.hole();
         say("Hole " + (round.holeIndex() + 1) + " of " + round.round().size() + ": " + world.course().name() + ", par " + h.par());
+    }
+
+    /** Personal bests for the hole just finished, and the table once the round is over; saved at once. */
+    private void recordScores(int[] holeScores) {
+        if (highScores == null) return;
+        String name = round.round().name();
+        List<HighScores.Achievement> news = new ArrayList<>(highScores.recordHole(name, round.holeIndex(), round.players(), holeScores));
+        if (round.isOver()) {
+            news.addAll(highScores.recordRound(name, round.scorecard(), round.players(), java.time.LocalDate.now()));
+        }
+        try {
+            highScores.save(HighScores.file(store.directory()));
+        } catch (SaveGameException e) {
+            say("scores not saved: " + e.getMessage());
+            return;
+        }
+        if (!news.isEmpty()) {
+            say(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+        }
+    }
+
+    @Override
+    public HighScores highScores() {
+        return highScores;
     }
 
     @Override

@@ -442,6 +442,37 @@ public final class Screens {
             List<String> names = winners.stream().map(s -> card.rows().get(s).name()).toList();
             ImGui.textColored(1f, 0.85f, 0.3f, 1f, (names.size() == 1 ? "Winner: " : "Tied for the win: ") + String.join(", ", names));
         }
+        minigolf.game.HighScores scores = view.highScores();
+        if (scores != null) {
+            ImGui.separator();
+            for (int s = 0; s < card.rows().size(); s++) {
+                String n = card.rows().get(s).name();
+                Integer best = scores.personalBest(card.roundName(), n);
+                int hole = Math.max(0, card.holesPlayed() - 1);
+                Integer holeBest = card.holesPlayed() > 0 ? scores.personalBest(card.roundName(), hole, n) : null;
+                ImGui.text(n + ": best round " + (best == null ? "-" : best) + (holeBest == null ? ""
+                        : ", best on hole " + (hole + 1) + ": " + holeBest));
+            }
+            if (card.over()) {
+                ImGui.separator();
+                ImGui.textColored(1f, 0.85f, 0.3f, 1f, "High scores: " + card.roundName());
+                if (ImGui.beginTable("##high", 4, ImGuiTableFlags.RowBg | ImGuiTableFlags.SizingFixedFit)) {
+                    int place = 1;
+                    for (minigolf.game.HighScores.Entry e : scores.table(card.roundName())) {
+                        ImGui.tableNextRow();
+                        ImGui.tableSetColumnIndex(0);
+                        ImGui.text("#" + place++);
+                        ImGui.tableSetColumnIndex(1);
+                        ImGui.text(e.name());
+                        ImGui.tableSetColumnIndex(2);
+                        ImGui.text(e.score() + " (" + minigolf.game.RoundScorecard.formatToPar(e.score() - card.totalPar()) + ")");
+                        ImGui.tableSetColumnIndex(3);
+                        ImGui.text(e.date().toString());
+                    }
+                    ImGui.endTable();
+                }
+            }
+        }
         if (!card.over()) {
             if (ImGui.button("Next hole", 160, 0)) actions.nextHole();
             ImGui.sameLine();
