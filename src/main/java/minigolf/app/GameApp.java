@@ -18,6 +18,7 @@ import minigolf.game.BallReadout;
 import minigolf.game.BotCatalog;
 import minigolf.game.BotTurn;
 import minigolf.game.CourseEdits;
+import minigolf.game.AudioSettings;
 import minigolf.game.Game;
 import minigolf.game.HighScores;
 import minigolf.game.Player;
@@ -84,6 +85,9 @@ public final class GameApp implements UiActions, UiView {
     private RoundGame round;
     /** Scores kept between games (null when the file is broken: it is then left alone). */
     private HighScores highScores;
+    private AudioSettings audio;
+    /** Silent until the window is open, and where there is no audio device. */
+    private Sounds sounds;
     /** The round the next game plays (set by {@link #playRound} or the menu). */
     private Round roundToPlay;
     /** Frames the between-holes card has been shown (the headless run moves on by itself). */
@@ -120,6 +124,12 @@ public final class GameApp implements UiActions, UiView {
         this.settings = store.loadOrDefaults(problem);
         if (problem[0] != null) say("settings ignored: " + problem[0]);
         try {
+            audio = AudioSettings.load(AudioSettings.file(store.directory()));
+        } catch (SaveGameException e) {
+            audio = AudioSettings.DEFAULTS;
+            say("volumes ignored: " + e.getMessage());
+        }
+        try {
             highScores = HighScores.load(HighScores.file(store.directory()));
         } catch (SaveGameException e) {
             highScores = null;
@@ -140,7 +150,8 @@ public final class GameApp implements UiActions, UiView {
             window.setVsync(settings.vsync() && options.frames() <= 0);
             installInput();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
-            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale)) {
+            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale); Sounds sound = Sounds.open(audio)) {
+                sounds = sound;
                 imgui = ui;
                 buildScene();
                 try {
@@ -501,6 +512,47 @@ public final class GameApp implements UiActions, UiView {
 
     // ---- UiActions ----------------------------------------------------------------------------
 
+    /** The sounds of a stroke's events: hits, landings, water, the cup (and applause for a hole in one). */
+    private minigolf.physics.TrajectoryListener strokeSounds(boolean firstStroke) {
+        return new minigolf.physics.TrajectoryListener() {
+            @Override
+            public void onStep(double t, double x, double y, double vx, double vy) {
+            }
+
+            @Override
+            public void onEvent(minigolf.physics.StrokeEvent e) {
+                if (sounds == null) return;
+                switch (e.type()) {
+                    case COLLISION -> sounds.play(SoundSynth.Sound.KNOCK, e.speedBefore() / 3, 0.9 + 0.1 * Math.min(2, e.speedBefore()));
+                    case LAND, BOUNCE -> sounds.play(SoundSynth.Sound.THUD, e.speedBefore() / 3, 1);
+                    case WATER -> sounds.play(SoundSynth.Sound.SPLASH, 0.8, 1);
+                    case HOLED -> {
+                        sounds.play(SoundSynth.Sound.CUP, 0.9, 1);
+                        if (firstStroke) sounds.play(SoundSynth.Sound.APPLAUSE, 0.8, 1);
+                    }
+                    default -> {
+                    }
+                }
+            }
+        };
+    }
+
+    @Override
+    public AudioSettings volumes() {
+        return audio;
+    }
+
+    @Override
+    public void applyVolumes(AudioSettings v) {
+        audio = v;
+        if (sounds != null) sounds.setVolumes(v);
+        try {
+            v.save(AudioSettings.file(store.directory()));
+        } catch (SaveGameException e) {
+            say("volumes not saved: " + e.getMessage());
+        }
+    }
+
     @Override
     public void startGame(List<Player> players) {
         if (roundToPlay != null) {
@@ -588,7 +640,10 @@ public final class GameApp implements UiActions, UiView {
             say(problem);
             return;
         }
-        animator = new StrokeAnimator(game.startShot(vx, vy), game.settings().dt());
+        double max = world.physics().maxSpeed(), speed = Math.hypot(vx, vy);
+        boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
+        animator = new StrokeAnimator(game.startShot(vx, vy, strokeSounds(firstStroke)), game.settings().dt());
+        if (sounds != null) sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
     }
 
     @Override

@@ -51,6 +51,7 @@ public final class Screens {
     private final ImInt frameLimit = new ImInt(60);
     private final ImInt strokeLimit = new ImInt(Game.DEFAULT_STROKE_LIMIT);
     private final float[] mouseSpeed = {1f};
+    private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
     private final ImDouble[] course = new ImDouble[9];
     private final ImInt testBot = new ImInt(0);
     private String formError;
@@ -220,6 +221,9 @@ public final class Screens {
         frameLimit.set(s.frameLimit());
         strokeLimit.set(s.strokeLimit());
         mouseSpeed[0] = (float) s.mouseSpeed();
+        masterVolume[0] = (float) view.volumes().master();
+        effectsVolume[0] = (float) view.volumes().effects();
+        ambienceVolume[0] = (float) view.volumes().ambience();
         CourseEdits e = CourseEdits.of(view.world().course());
         double[] v = {e.gravity(), e.kineticFriction(), e.staticFriction(), e.maxSpeed(), e.startX(), e.startY(),
                 e.holeX(), e.holeY(), e.holeRadius()};
@@ -238,6 +242,9 @@ public final class Screens {
         ImGui.inputInt("Frame limit (0 = none)", frameLimit);
         ImGui.inputInt("Stroke limit", strokeLimit);
         ImGui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
+        ImGui.sliderFloat("Volume", masterVolume, 0f, 1f);
+        ImGui.sliderFloat("Effects", effectsVolume, 0f, 1f);
+        ImGui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
         ImGui.separator();
         ImGui.text("This course (" + view.world().course().name() + "): applies to the next game");
         String[] labels = {"Gravity (m/s^2)", "Kinetic friction", "Static friction", "Max speed (m/s)", "Start x",
@@ -253,6 +260,7 @@ public final class Screens {
                 CourseEdits e = new CourseEdits(course[0].get(), course[1].get(), course[2].get(), course[3].get(),
                         course[4].get(), course[5].get(), course[6].get(), course[7].get(), course[8].get());
                 actions.applySettings(s, e);
+                actions.applyVolumes(new minigolf.game.AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
                 formError = null;
                 show(settingsReturn);
             } catch (IllegalArgumentException e) {

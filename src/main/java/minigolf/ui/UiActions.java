@@ -37,4 +37,7 @@ public interface UiActions {
 
     /** After a hole's card: on to the next hole (or the final card). */
     void nextHole();
+
+    /** Sets and keeps the volumes. */
+    void applyVolumes(minigolf.game.AudioSettings volumes);
 }

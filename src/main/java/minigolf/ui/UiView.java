@@ -46,6 +46,9 @@ public interface UiView {
     /** The round the next game plays, or null (the selected course). */
     minigolf.game.Round chosenRound();
 
+    /** The volumes. */
+    minigolf.game.AudioSettings volumes();
+
     /** Scores kept between games, or null when the score file could not be read. */
     minigolf.game.HighScores highScores();
 
