@@ -54,6 +54,8 @@ public final class Screens {
     private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
     private final ImDouble[] course = new ImDouble[9];
     private final ImInt testBot = new ImInt(0);
+    /** The HUD's physics readout (position, velocity, acceleration, slope, friction): off unless asked for. */
+    private final ImBoolean details = new ImBoolean(false);
     private String formError;
 
     public Screens(UiActions actions) {
@@ -294,12 +296,19 @@ public final class Screens {
                 float[] c = PlayerColors.of(i);
                 ImGui.textColored(c[0], c[1], c[2], 1f, String.format(Locale.ROOT, "%-12s", g.players().get(i).name()));
                 ImGui.sameLine();
-                ImGui.text(String.format(Locale.ROOT, "strokes %d%s%s", s.total(),
+                ImGui.text(String.format(Locale.ROOT, "strokes %d%s%s%s", s.total(),
+                        view.round() != null ? " (par " + view.round().hole().par() + ")" : "",
                         s.penalties() > 0 ? " (" + s.penalties() + " penalty)" : "",
                         s.status() == minigolf.game.PlayerStatus.PLAYING ? "" : ", " + s.status().jsonName()));
             }
         }
-        BallReadout r = view.readout();
+        double aim = view.aimSpeed();
+        if (aim >= 0 && g != null) {
+            double max = view.world().physics().maxSpeed();
+            ImGui.progressBar((float) (aim / max), 260, 0, String.format(Locale.ROOT, "power %.0f%%", 100 * aim / max));
+        }
+        if (g != null) ImGui.checkbox("details", details);
+        BallReadout r = details.get() ? view.readout() : null;
         if (r != null) {
             ImGui.separator();
             ImGui.text(String.format(Locale.ROOT, "position  (%.3f, %.3f, %.3f) m", r.x(), r.y(), r.z()));
