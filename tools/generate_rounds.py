@@ -173,8 +173,8 @@ holes.append(("12-two-tiers", course("Two Tiers", "0.1 + 0.18*(0.5+atan(5*(x-0.5
                                      (-3.0, -0.3), (2.6, 0.3)), 2))
 
 # 13. Castle: the cup inside a keep of boxes with one gate facing sideways.
-keep = [box(2.0, 0.55, 1.1, 0.1, 0.0, 0.3), box(2.0, -0.55, 1.1, 0.1, 0.0, 0.3), box(2.55, 0.0, 0.1, 1.2, 0.0, 0.3),
-        box(1.45, 0.32, 0.1, 0.55, 0.0, 0.3)]
+keep = [box(1.65, 0.55, 0.4, 0.1, 0.0, 0.3), box(2.35, 0.55, 0.4, 0.1, 0.0, 0.3),  # the gate between them, facing north
+        box(2.0, -0.55, 1.1, 0.1, 0.0, 0.3), box(2.55, 0.0, 0.1, 1.2, 0.0, 0.3), box(1.45, 0.0, 0.1, 1.2, 0.0, 0.3)]
 holes.append(("13-castle", course("Castle", "0.1", lane(-3.5, 3.5, 1.3), (-3.0, 0), (2.1, 0), keep), 3))
 
 # 14. Waves: rolling waves across the lane, pace on the last downslope.

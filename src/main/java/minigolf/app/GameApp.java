@@ -175,6 +175,11 @@ public final class GameApp implements UiActions, UiView {
         roundToPlay = r;
     }
 
+    /** Opens the help screen (what F1 does). */
+    public void openHelp() {
+        screens.openHelp();
+    }
+
     /** The round being played, or null. */
     public RoundGame roundGame() {
         return round;
