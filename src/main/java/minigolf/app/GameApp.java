@@ -116,6 +116,8 @@ public final class GameApp implements UiActions, UiView {
     private double lastX, lastY;
     private double[] aimVelocity;
     private final Vector3f followTarget = new Vector3f();
+    /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
+    private boolean turnToHole;
 
     public GameApp(World world, Options options) {
         this.options = options;
@@ -254,6 +256,7 @@ public final class GameApp implements UiActions, UiView {
             if (animator.isFinished()) {
                 ShotRecord r = game.completeShot();
                 animator = null;
+                turnToHole = true;
                 Player p = game.players().get(r.player());
                 say(p.name() + ": " + describe(r));
                 if (game.isOver()) {
@@ -381,6 +384,17 @@ public final class GameApp implements UiActions, UiView {
         Vector3f t = camera.target();
         t.lerp(followTarget, 0.12f);
         camera.setTarget(t);
+        if (turnToHole && animator == null) {
+            // Once the balls are at rest, swing round behind the next ball, looking at the hole.
+            double hx = world.hole().position().x() - x, hy = world.hole().position().y() - y;
+            if (Math.hypot(hx, hy) < 1e-6) {
+                turnToHole = false;
+                return;
+            }
+            double want = Math.atan2(-hy, -hx), delta = Math.IEEEremainder(want - camera.yaw(), 2 * Math.PI);
+            camera.rotate((float) (delta * 0.1), 0);
+            if (Math.abs(delta) < 0.005) turnToHole = false;
+        }
     }
 
     // ---- Input --------------------------------------------------------------------------------
@@ -425,6 +439,7 @@ public final class GameApp implements UiActions, UiView {
                     if (v != null && Math.hypot(v[0], v[1]) > 0.02) hit(v[0], v[1]);
                 } else {
                     rotating = down;
+                    if (down) turnToHole = false; // the player's own view wins
                 }
             }
             if (button == GLFW_MOUSE_BUTTON_RIGHT) {
