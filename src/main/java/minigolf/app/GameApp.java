@@ -21,6 +21,7 @@ import minigolf.game.CourseEdits;
 import minigolf.game.AudioSettings;
 import minigolf.game.Game;
 import minigolf.game.HighScores;
+import minigolf.game.HoleReplay;
 import minigolf.game.Player;
 import minigolf.game.PlayerState;
 import minigolf.game.Round;
@@ -118,6 +119,12 @@ public final class GameApp implements UiActions, UiView {
     private final Vector3f followTarget = new Vector3f();
     /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
     private boolean turnToHole;
+    // Watching the hole again ("Watch again"): the replay, its rolling stroke and where to go back to.
+    private HoleReplay replay;
+    private StrokeAnimator replayAnimator;
+    private minigolf.game.ShotRecord replayShot;
+    private Screen replayReturn;
+    private int replayedStrokes, replayMismatches;
 
     public GameApp(World world, Options options) {
         this.options = options;
@@ -244,6 +251,10 @@ public final class GameApp implements UiActions, UiView {
     private void update(double elapsed, double now) {
         if (message != null && now > messageUntil) message = null;
         Screen screen = screens.screen();
+        if (screen == Screen.REPLAY) {
+            updateReplay(elapsed);
+            return;
+        }
         if (screen == Screen.ROUND_CARD && round != null && !round.isOver() && options.frames() > 0
                 && ++cardFrames >= ROUND_CARD_FRAMES) {
             nextHole(); // a headless run moves on by itself; a player presses "Next hole"
@@ -300,6 +311,61 @@ public final class GameApp implements UiActions, UiView {
         }
     }
 
+    private void updateReplay(double elapsed) {
+        if (replayAnimator != null) {
+            replayAnimator.advance(elapsed, options.timeScale());
+            if (!replayAnimator.isFinished()) return;
+            replayedStrokes++;
+            if (!HoleReplay.sameEnd(replayShot, replayAnimator.stroke())) replayMismatches++;
+            replayAnimator = null;
+        }
+        if (replay.hasNext()) {
+            replayShot = replay.shots().get(replay.position());
+            replayAnimator = new StrokeAnimator(replay.nextStroke(strokeSounds(false)), game.settings().dt());
+            if (sounds != null) {
+                double max = world.physics().maxSpeed(), speed = Math.hypot(replayShot.vx(), replayShot.vy());
+                sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
+            }
+        } else {
+            stopReplay();
+            say(replayMismatches == 0 ? "replay over: every stroke ended exactly where it did in play"
+                    : replayMismatches + " replayed strokes ended elsewhere than in play");
+        }
+    }
+
+    @Override
+    public void watchReplay() {
+        if (game == null || game.history().isEmpty() || game.isShotInFlight() || screens.screen() == Screen.REPLAY) return;
+        cancelBot();
+        botTurn = null;
+        replay = HoleReplay.of(game);
+        replayAnimator = null;
+        replayedStrokes = 0;
+        replayMismatches = 0;
+        replayReturn = screens.screen();
+        screens.show(Screen.REPLAY);
+    }
+
+    @Override
+    public void stopReplay() {
+        if (screens.screen() != Screen.REPLAY) return;
+        replay = null;
+        replayAnimator = null;
+        screens.show(replayReturn);
+    }
+
+    /** Strokes replayed by the last "Watch again" and how many ended elsewhere than in play (for tests). */
+    public int[] replayCounts() {
+        return new int[]{replayedStrokes, replayMismatches};
+    }
+
+    @Override
+    public String replayCaption() {
+        if (replay == null || replayShot == null) return null;
+        return "Replay: stroke " + replay.position() + " of " + replay.shots().size() + " - "
+                + game.players().get(replayShot.player()).name();
+    }
+
     private static String describe(ShotRecord r) {
         return switch (r.outcome()) {
             case HOLED -> "in the hole!";
@@ -347,6 +413,12 @@ public final class GameApp implements UiActions, UiView {
 
     private List<BallView> ballViews() {
         List<BallView> views = new ArrayList<>();
+        if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
+            double x = replayAnimator.x(), y = replayAnimator.y();
+            float[] c = PlayerColors.of(replayShot.player());
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, world.terrain().height(x, y)), c[0], c[1], c[2]));
+            return views;
+        }
         if (game == null) {
             double x = world.course().start().x(), y = world.course().start().y();
             views.add(BallView.white(x, y, world.terrain().height(x, y)));
@@ -376,6 +448,12 @@ public final class GameApp implements UiActions, UiView {
     /** The camera glides after the ball in play: the rolling one, else the next player's. */
     private void followBall() {
         if (game == null || rotating || panning) return;
+        if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
+            followTarget.set((float) replayAnimator.x(), (float) replayAnimator.y(),
+                    (float) world.terrain().height(replayAnimator.x(), replayAnimator.y()));
+            camera.setTarget(camera.target().lerp(followTarget, 0.12f));
+            return;
+        }
         int seat = game.currentPlayer();
         if (seat < 0) return;
         double x = animator != null ? animator.x() : game.player(seat).x();
@@ -481,6 +559,7 @@ public final class GameApp implements UiActions, UiView {
             case COURSES, NEW_GAME, SETTINGS, SCORECARD -> screens.show(game != null && !game.isOver()
                     && screens.screen() == Screen.SETTINGS ? Screen.PAUSED : Screen.MAIN_MENU);
             case HELP -> screens.closeHelp();
+            case REPLAY -> stopReplay();
             case ROUND_CARD -> {
                 if (round != null && round.isOver()) toMainMenu();
             }

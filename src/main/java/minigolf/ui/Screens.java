@@ -97,6 +97,14 @@ public final class Screens {
                 roundCard(view, w, h);
             }
             case HELP -> help(w, h);
+            case REPLAY -> {
+                ImGui.setNextWindowPos(w * 0.5f, 12, ImGuiCond.Always, 0.5f, 0f);
+                ImGui.begin("##replay", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize);
+                ImGui.textColored(1f, 0.85f, 0.3f, 1f, view.replayCaption() == null ? "Replay" : view.replayCaption());
+                ImGui.sameLine();
+                if (ImGui.button("Stop")) actions.stopReplay();
+                ImGui.end();
+            }
         }
         if (view.message() != null) {
             ImGui.setNextWindowPos(w * 0.5f, h - 16, ImGuiCond.Always, 0.5f, 1f);
@@ -405,6 +413,8 @@ public final class Screens {
             }
             ImGui.endTable();
         }
+        if (ImGui.button("Watch again")) actions.watchReplay();
+        ImGui.sameLine();
         if (ImGui.button("Play again")) show(Screen.NEW_GAME);
         ImGui.sameLine();
         if (ImGui.button("Main menu")) actions.toMainMenu();
@@ -490,6 +500,7 @@ public final class Screens {
                 }
             }
         }
+        if (ImGui.button("Watch hole " + (card.holesPlayed()) + " again", 220, 0)) actions.watchReplay();
         if (!card.over()) {
             if (ImGui.button("Next hole", 160, 0)) actions.nextHole();
             ImGui.sameLine();

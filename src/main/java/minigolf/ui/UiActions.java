@@ -38,6 +38,11 @@ public interface UiActions {
     /** After a hole's card: on to the next hole (or the final card). */
     void nextHole();
 
+    /** Plays the current hole's strokes again, exactly as played. */
+    void watchReplay();
+
+    void stopReplay();
+
     /** Sets and keeps the volumes. */
     void applyVolumes(minigolf.game.AudioSettings volumes);
 }

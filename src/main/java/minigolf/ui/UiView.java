@@ -46,6 +46,9 @@ public interface UiView {
     /** The round the next game plays, or null (the selected course). */
     minigolf.game.Round chosenRound();
 
+    /** "Replay: stroke 2 of 5 - Ann" while a replay runs, else null. */
+    String replayCaption();
+
     /** The volumes. */
     minigolf.game.AudioSettings volumes();
 
