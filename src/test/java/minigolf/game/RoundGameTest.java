@@ -126,4 +126,24 @@ class RoundGameTest {
         assertTrue(SavedRounds.isSavedRound(json));
         assertFalse(SavedRounds.isSavedRound("{\"kind\": \"minigolf-saved-game\"}"));
     }
+
+    @Test
+    void aSavedBundledRoundWithModelsLoadsBack() throws Exception {
+        Round r = RoundLoader.load(RoundFilesTest.rounds().resolve("meadowbrook-9.json"));
+        RoundGame rg = new RoundGame(r, SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 10);
+        for (int hole = 0; hole < 2; hole++) { // aces on holes 1 and 2, then on the windmill hole
+            double[] v = RoundFilesTest.HOLE_IN_ONE[hole];
+            assertEquals(Outcome.HOLED, rg.game().play(v[0], v[1]).outcome());
+            rg.finishHole();
+            rg.nextHole();
+        }
+        assertEquals("Windmill", rg.game().world().course().name());
+        Path file = dir.resolve("bundled.json");
+        SavedRounds.save(rg, file);
+        RoundGame back = SavedRounds.load(file);
+        assertEquals(r.name(), back.round().name());
+        assertEquals(rg.game().world().course(), back.game().world().course());
+        double[] v = RoundFilesTest.HOLE_IN_ONE[2];
+        assertEquals(Outcome.HOLED, back.game().play(v[0], v[1]).outcome(), "the windmill hole plays as before");
+    }
 }
