@@ -10,6 +10,7 @@ import java.util.Set;
 import java.util.stream.Stream;
 import minigolf.course.CourseException;
 import minigolf.course.CourseLoader;
+import minigolf.game.RoundLoader;
 import minigolf.game.SettingsStore;
 import minigolf.ui.UiView;
 
@@ -22,7 +23,31 @@ final class CourseFolders {
     private CourseFolders() {
     }
 
-    static List<UiView.CourseEntry> list(SettingsStore store) {
+    /** The rounds in {@code rounds/} beside the shipped courses and in {@code <config>/rounds}; rounds that do not load are left out. */
+    static List<UiView.RoundEntry> rounds(SettingsStore store) {
+        List<Path> dirs = new ArrayList<>();
+        for (Path d : shippedFolders()) dirs.add(d.resolve("rounds"));
+        dirs.add(store.directory().resolve("rounds"));
+        List<UiView.RoundEntry> out = new ArrayList<>();
+        Set<Path> seen = new LinkedHashSet<>();
+        for (Path dir : dirs) {
+            if (!Files.isDirectory(dir)) continue;
+            try (Stream<Path> files = Files.list(dir)) {
+                for (Path f : files.filter(p -> p.toString().endsWith(".json")).sorted().toList()) {
+                    try {
+                        if (seen.add(f.getFileName())) out.add(new UiView.RoundEntry(RoundLoader.load(f), f));
+                    } catch (CourseException e) {
+                        System.err.println("minigolf: round not offered: " + e.getMessage());
+                    }
+                }
+            } catch (IOException e) {
+                // an unreadable folder offers nothing
+            }
+        }
+        return out;
+    }
+
+    private static Set<Path> shippedFolders() {
         Set<Path> shipped = new LinkedHashSet<>();
         shipped.add(Path.of("courses").toAbsolutePath().normalize());
         try {
@@ -33,6 +58,11 @@ final class CourseFolders {
         } catch (Exception e) {
             // no code source (unusual class loader): the working directory's courses only
         }
+        return shipped;
+    }
+
+    static List<UiView.CourseEntry> list(SettingsStore store) {
+        Set<Path> shipped = shippedFolders();
         List<UiView.CourseEntry> out = new ArrayList<>();
         Set<Path> seen = new LinkedHashSet<>();
         for (Path dir : shipped) add(dir, false, out, seen);

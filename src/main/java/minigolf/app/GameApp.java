@@ -18,9 +18,15 @@ import minigolf.game.BallReadout;
 import minigolf.game.BotCatalog;
 import minigolf.game.BotTurn;
 import minigolf.game.CourseEdits;
+import minigolf.game.AudioSettings;
 import minigolf.game.Game;
+import minigolf.game.HighScores;
+import minigolf.game.HoleReplay;
 import minigolf.game.Player;
 import minigolf.game.PlayerState;
+import minigolf.game.Round;
+import minigolf.game.RoundGame;
+import minigolf.game.SavedRounds;
 import minigolf.game.SaveGameException;
 import minigolf.game.SavedGames;
 import minigolf.game.SettingsStore;
@@ -67,6 +73,8 @@ public final class GameApp implements UiActions, UiView {
     }
 
     private static final double AIM_PICK_PIXELS = 48;
+    /** Frames a headless run (--frames) shows the card between holes before it plays the next. */
+    static final int ROUND_CARD_FRAMES = 30;
 
     private final Options options;
     private final SettingsStore store;
@@ -74,6 +82,17 @@ public final class GameApp implements UiActions, UiView {
     private World world;
     private Path coursePath;
     private Game game;
+    /** The round being played (null for a single course); {@link #game} is its current hole's game. */
+    private RoundGame round;
+    /** Scores kept between games (null when the file is broken: it is then left alone). */
+    private HighScores highScores;
+    private AudioSettings audio;
+    /** Silent until the window is open, and where there is no audio device. */
+    private Sounds sounds;
+    /** The round the next game plays (set by {@link #playRound} or the menu). */
+    private Round roundToPlay;
+    /** Frames the between-holes card has been shown (the headless run moves on by itself). */
+    private int cardFrames;
     private StrokeAnimator animator;
     private BotTurn botTurn;
     private String message;
@@ -83,6 +102,7 @@ public final class GameApp implements UiActions, UiView {
     private final Screens screens = new Screens(this);
     private final Thumbnails thumbnails = new Thumbnails();
     private List<CourseEntry> courses;
+    private List<RoundEntry> rounds;
 
     private Window window;
     private SceneRenderer renderer;
@@ -98,6 +118,14 @@ public final class GameApp implements UiActions, UiView {
     private double lastX, lastY;
     private double[] aimVelocity;
     private final Vector3f followTarget = new Vector3f();
+    /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
+    private boolean turnToHole;
+    // Watching the hole again ("Watch again"): the replay, its rolling stroke and where to go back to.
+    private HoleReplay replay;
+    private StrokeAnimator replayAnimator;
+    private minigolf.game.ShotRecord replayShot;
+    private Screen replayReturn;
+    private int replayedStrokes, replayMismatches;
 
     public GameApp(World world, Options options) {
         this.options = options;
@@ -109,6 +137,18 @@ public final class GameApp implements UiActions, UiView {
             // Shown until dismissed (a timed message would expire before the window exists) and on stderr.
             notice = "Settings ignored, the defaults are used: " + problem[0];
             System.err.println("minigolf: settings ignored, the defaults are used: " + problem[0]);
+        }
+        try {
+            audio = AudioSettings.load(AudioSettings.file(store.directory()));
+        } catch (SaveGameException e) {
+            audio = AudioSettings.DEFAULTS;
+            say("volumes ignored: " + e.getMessage());
+        }
+        try {
+            highScores = HighScores.load(HighScores.file(store.directory()));
+        } catch (SaveGameException e) {
+            highScores = null;
+            say("high scores ignored: " + e.getMessage());
         }
         this.world = world;
         this.coursePath = options.coursePath();
@@ -125,11 +165,15 @@ public final class GameApp implements UiActions, UiView {
             window.setVsync(settings.vsync() && options.frames() <= 0);
             installInput();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
-            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale)) {
+            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale); Sounds sound = Sounds.open(audio)) {
+                sounds = sound;
                 imgui = ui;
                 buildScene();
                 try {
-                    if (options.startPlayers() != null) startGame(options.startPlayers());
+                    if (options.startPlayers() != null) {
+                        if (roundToPlay != null) startRound(roundToPlay, options.startPlayers());
+                        else startGame(options.startPlayers());
+                    }
                     loop();
                 } finally {
                     if (botTurn != null) botTurn.cancel();
@@ -139,6 +183,21 @@ public final class GameApp implements UiActions, UiView {
             }
         }
         return game;
+    }
+
+    /** Plays this round instead of a single course (before {@link #run()}: with the options' players it starts at once). */
+    public void playRound(Round r) {
+        roundToPlay = r;
+    }
+
+    /** Opens the help screen (what F1 does). */
+    public void openHelp() {
+        screens.openHelp();
+    }
+
+    /** The round being played, or null. */
+    public RoundGame roundGame() {
+        return round;
     }
 
     /** Sets what runs at the start of every pass of the render loop (for tests: resize, minimise, close). */
@@ -164,7 +223,9 @@ public final class GameApp implements UiActions, UiView {
             if (rebuildScene) buildScene();
             drawFrame(fw, fh, (float) (now - start));
             frame++;
-            overFrames = screens.screen() == Screen.SCORECARD ? overFrames + 1 : 0;
+            boolean finalCard = screens.screen() == Screen.SCORECARD
+                    || (screens.screen() == Screen.ROUND_CARD && round != null && round.isOver());
+            overFrames = finalCard ? overFrames + 1 : 0;
             // ImGui sizes a new window in its first frames: stop once the scorecard has been drawn.
             boolean over = options.exitWhenOver() && overFrames >= 3;
             if ((options.frames() > 0 && frame >= options.frames()) || over) {
@@ -196,6 +257,15 @@ public final class GameApp implements UiActions, UiView {
     private void update(double elapsed, double now) {
         if (message != null && now > messageUntil) message = null;
         Screen screen = screens.screen();
+        if (screen == Screen.REPLAY) {
+            updateReplay(elapsed);
+            return;
+        }
+        if (screen == Screen.ROUND_CARD && round != null && !round.isOver() && options.frames() > 0
+                && ++cardFrames >= ROUND_CARD_FRAMES) {
+            nextHole(); // a headless run moves on by itself; a player presses "Next hole"
+            return;
+        }
         boolean running = screen == Screen.PLAYING || screen == Screen.TEST_BOT;
         if (game == null || !running) return;
         if (animator != null) {
@@ -203,10 +273,17 @@ public final class GameApp implements UiActions, UiView {
             if (animator.isFinished()) {
                 ShotRecord r = game.completeShot();
                 animator = null;
+                turnToHole = true;
                 Player p = game.players().get(r.player());
                 say(p.name() + ": " + describe(r));
                 if (game.isOver()) {
-                    screens.show(Screen.SCORECARD);
+                    if (round != null) {
+                        recordScores(round.finishHole());
+                        cardFrames = 0;
+                        screens.show(Screen.ROUND_CARD);
+                    } else {
+                        screens.show(Screen.SCORECARD);
+                    }
                     return;
                 }
             }
@@ -238,6 +315,61 @@ public final class GameApp implements UiActions, UiView {
             double[] v = script.poll();
             hit(v[0], v[1]);
         }
+    }
+
+    private void updateReplay(double elapsed) {
+        if (replayAnimator != null) {
+            replayAnimator.advance(elapsed, options.timeScale());
+            if (!replayAnimator.isFinished()) return;
+            replayedStrokes++;
+            if (!HoleReplay.sameEnd(replayShot, replayAnimator.stroke())) replayMismatches++;
+            replayAnimator = null;
+        }
+        if (replay.hasNext()) {
+            replayShot = replay.shots().get(replay.position());
+            replayAnimator = new StrokeAnimator(replay.nextStroke(strokeSounds(false)), game.settings().dt());
+            if (sounds != null) {
+                double max = world.physics().maxSpeed(), speed = Math.hypot(replayShot.vx(), replayShot.vy());
+                sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
+            }
+        } else {
+            stopReplay();
+            say(replayMismatches == 0 ? "replay over: every stroke ended exactly where it did in play"
+                    : replayMismatches + " replayed strokes ended elsewhere than in play");
+        }
+    }
+
+    @Override
+    public void watchReplay() {
+        if (game == null || game.history().isEmpty() || game.isShotInFlight() || screens.screen() == Screen.REPLAY) return;
+        cancelBot();
+        botTurn = null;
+        replay = HoleReplay.of(game);
+        replayAnimator = null;
+        replayedStrokes = 0;
+        replayMismatches = 0;
+        replayReturn = screens.screen();
+        screens.show(Screen.REPLAY);
+    }
+
+    @Override
+    public void stopReplay() {
+        if (screens.screen() != Screen.REPLAY) return;
+        replay = null;
+        replayAnimator = null;
+        screens.show(replayReturn);
+    }
+
+    /** Strokes replayed by the last "Watch again" and how many ended elsewhere than in play (for tests). */
+    public int[] replayCounts() {
+        return new int[]{replayedStrokes, replayMismatches};
+    }
+
+    @Override
+    public String replayCaption() {
+        if (replay == null || replayShot == null) return null;
+        return "Replay: stroke " + replay.position() + " of " + replay.shots().size() + " - "
+                + game.players().get(replayShot.player()).name();
     }
 
     private static String describe(ShotRecord r) {
@@ -287,6 +419,12 @@ public final class GameApp implements UiActions, UiView {
 
     private List<BallView> ballViews() {
         List<BallView> views = new ArrayList<>();
+        if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
+            double x = replayAnimator.x(), y = replayAnimator.y();
+            float[] c = PlayerColors.of(replayShot.player());
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, world.terrain().height(x, y)), c[0], c[1], c[2]));
+            return views;
+        }
         if (game == null) {
             double x = world.course().start().x(), y = world.course().start().y();
             views.add(BallView.white(x, y, world.terrain().height(x, y)));
@@ -316,6 +454,12 @@ public final class GameApp implements UiActions, UiView {
     /** The camera glides after the ball in play: the rolling one, else the next player's. */
     private void followBall() {
         if (game == null || rotating || panning) return;
+        if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
+            followTarget.set((float) replayAnimator.x(), (float) replayAnimator.y(),
+                    (float) world.terrain().height(replayAnimator.x(), replayAnimator.y()));
+            camera.setTarget(camera.target().lerp(followTarget, 0.12f));
+            return;
+        }
         int seat = game.currentPlayer();
         if (seat < 0) return;
         double x = animator != null ? animator.x() : game.player(seat).x();
@@ -324,6 +468,17 @@ public final class GameApp implements UiActions, UiView {
         Vector3f t = camera.target();
         t.lerp(followTarget, 0.12f);
         camera.setTarget(t);
+        if (turnToHole && animator == null) {
+            // Once the balls are at rest, swing round behind the next ball, looking at the hole.
+            double hx = world.hole().position().x() - x, hy = world.hole().position().y() - y;
+            if (Math.hypot(hx, hy) < 1e-6) {
+                turnToHole = false;
+                return;
+            }
+            double want = Math.atan2(-hy, -hx), delta = Math.IEEEremainder(want - camera.yaw(), 2 * Math.PI);
+            camera.rotate((float) (delta * 0.1), 0);
+            if (Math.abs(delta) < 0.005) turnToHole = false;
+        }
     }
 
     // ---- Input --------------------------------------------------------------------------------
@@ -335,6 +490,10 @@ public final class GameApp implements UiActions, UiView {
             if (action != GLFW_PRESS || (imgui != null && imgui.wantsKeyboard())) return;
             switch (key) {
                 case GLFW_KEY_ESCAPE -> escape();
+                case GLFW_KEY_F1 -> {
+                    if (screens.screen() == Screen.HELP) screens.closeHelp();
+                    else screens.openHelp();
+                }
                 case GLFW_KEY_F11 -> window.toggleFullscreen();
                 case GLFW_KEY_R -> camera.reset();
                 case GLFW_KEY_H -> renderer.terrainPass().setColorMode(renderer.terrainPass().colorMode().next());
@@ -364,6 +523,7 @@ public final class GameApp implements UiActions, UiView {
                     if (v != null && Math.hypot(v[0], v[1]) > 0.02) hit(v[0], v[1]);
                 } else {
                     rotating = down;
+                    if (down) turnToHole = false; // the player's own view wins
                 }
             }
             if (button == GLFW_MOUSE_BUTTON_RIGHT) {
@@ -404,6 +564,11 @@ public final class GameApp implements UiActions, UiView {
             case TEST_BOT -> toMainMenu();
             case COURSES, NEW_GAME, SETTINGS, SCORECARD -> screens.show(game != null && !game.isOver()
                     && screens.screen() == Screen.SETTINGS ? Screen.PAUSED : Screen.MAIN_MENU);
+            case HELP -> screens.closeHelp();
+            case REPLAY -> stopReplay();
+            case ROUND_CARD -> {
+                if (round != null && round.isOver()) toMainMenu();
+            }
             case MAIN_MENU -> {
             }
         }
@@ -452,14 +617,124 @@ public final class GameApp implements UiActions, UiView {
 
     // ---- UiActions ----------------------------------------------------------------------------
 
+    /** The sounds of a stroke's events: hits, landings, water, the cup (and applause for a hole in one). */
+    private minigolf.physics.TrajectoryListener strokeSounds(boolean firstStroke) {
+        return new minigolf.physics.TrajectoryListener() {
+            @Override
+            public void onStep(double t, double x, double y, double vx, double vy) {
+            }
+
+            @Override
+            public void onEvent(minigolf.physics.StrokeEvent e) {
+                if (sounds == null) return;
+                switch (e.type()) {
+                    case COLLISION -> sounds.play(SoundSynth.Sound.KNOCK, e.speedBefore() / 3, 0.9 + 0.1 * Math.min(2, e.speedBefore()));
+                    case LAND, BOUNCE -> sounds.play(SoundSynth.Sound.THUD, e.speedBefore() / 3, 1);
+                    case WATER -> sounds.play(SoundSynth.Sound.SPLASH, 0.8, 1);
+                    case HOLED -> {
+                        sounds.play(SoundSynth.Sound.CUP, 0.9, 1);
+                        if (firstStroke) sounds.play(SoundSynth.Sound.APPLAUSE, 0.8, 1);
+                    }
+                    default -> {
+                    }
+                }
+            }
+        };
+    }
+
+    @Override
+    public AudioSettings volumes() {
+        return audio;
+    }
+
+    @Override
+    public void applyVolumes(AudioSettings v) {
+        audio = v;
+        if (sounds != null) sounds.setVolumes(v);
+        try {
+            v.save(AudioSettings.file(store.directory()));
+        } catch (SaveGameException e) {
+            say("volumes not saved: " + e.getMessage());
+        }
+    }
+
     @Override
     public void startGame(List<Player> players) {
+        if (roundToPlay != null) {
+            startRound(roundToPlay, players);
+            return;
+        }
+        round = null;
         cancelBot();
         animator = null;
         game = new Game(world, settings.simulation(), players, settings.strokeLimit());
         camera.reset();
         screens.show(Screen.PLAYING);
         say(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
+    }
+
+    private void startRound(Round r, List<Player> players) {
+        cancelBot();
+        botTurn = null;
+        animator = null;
+        round = new RoundGame(r, settings.simulation(), players, settings.strokeLimit());
+        showHole();
+        say(r.name() + ", hole 1 of " + r.size() + " (par " + r.hole(0).par() + "): " + players.get(0).name() + " tees off.");
+    }
+
+    /** Shows the round's current hole: its course, a fresh camera, the HUD. */
+    private void showHole() {
+        game = round.game();
+        world = game.world();
+        coursePath = null;
+        buildScene();
+        screens.show(Screen.PLAYING);
+    }
+
+    @Override
+    public void nextHole() {
+        if (round == null) return;
+        if (round.isHoleOver()) recordScores(round.finishHole());
+        if (!round.nextHole()) {
+            screens.show(Screen.ROUND_CARD);
+            return;
+        }
+        cancelBot();
+        botTurn = null;
+        animator = null;
+        showHole();
+        Round.Hole h = round.hole();
+        say("Hole " + (round.holeIndex() + 1) + " of " + round.round().size() + ": " + world.course().name() + ", par " + h.par());
+    }
+
+    /** Personal bests for the hole just finished, and the table once the round is over; saved at once. */
+    private void recordScores(int[] holeScores) {
+        if (highScores == null) return;
+        String name = round.round().name();
+        List<HighScores.Achievement> news = new ArrayList<>(highScores.recordHole(name, round.holeIndex(), round.players(), holeScores));
+        if (round.isOver()) {
+            news.addAll(highScores.recordRound(name, round.scorecard(), round.players(), java.time.LocalDate.now()));
+        }
+        try {
+            highScores.save(HighScores.file(store.directory()));
+        } catch (SaveGameException e) {
+            say("scores not saved: " + e.getMessage());
+            return;
+        }
+        if (!news.isEmpty()) {
+            say(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+        }
+    }
+
+    @Override
+    public HighScores highScores() {
+        return highScores;
+    }
+
+    @Override
+    public void chooseRound(Round r) {
+        roundToPlay = r;
+        screens.show(Screen.NEW_GAME);
     }
 
     @Override
@@ -470,7 +745,10 @@ public final class GameApp implements UiActions, UiView {
             say(problem);
             return;
         }
-        animator = new StrokeAnimator(game.startShot(vx, vy), game.settings().dt());
+        double max = world.physics().maxSpeed(), speed = Math.hypot(vx, vy);
+        boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
+        animator = new StrokeAnimator(game.startShot(vx, vy, strokeSounds(firstStroke)), game.settings().dt());
+        if (sounds != null) sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
     }
 
     @Override
@@ -478,6 +756,8 @@ public final class GameApp implements UiActions, UiView {
         try {
             world = World.load(file);
             coursePath = file;
+            roundToPlay = null;
+            round = null;
             game = null;
             animator = null;
             rebuildScene = true;
@@ -505,9 +785,10 @@ public final class GameApp implements UiActions, UiView {
         if (game == null) return;
         try {
             Files.createDirectories(store.savesDirectory());
-            Path file = store.savesDirectory().resolve("game-"
+            Path file = store.savesDirectory().resolve((round != null ? "round-" : "game-")
                     + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".json");
-            SavedGames.save(game, file);
+            if (round != null) SavedRounds.save(round, file);
+            else SavedGames.save(game, file);
             say("saved to " + file);
         } catch (IOException | SaveGameException e) {
             say("not saved: " + e.getMessage());
@@ -517,9 +798,23 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public void loadGame(Path file) {
         try {
+            if (Files.isRegularFile(file) && SavedRounds.isSavedRound(Files.readString(file))) {
+                RoundGame loaded = SavedRounds.load(file);
+                cancelBot();
+                botTurn = null;
+                round = loaded;
+                roundToPlay = loaded.round();
+                showHole();
+                game = round.game();
+                animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
+                if (game.isOver()) screens.show(Screen.ROUND_CARD);
+                say("loaded " + file.getFileName() + ": " + round.round().name() + ", hole " + (round.holeIndex() + 1));
+                return;
+            }
             SavedGames.Loaded loaded = SavedGames.load(file);
             cancelBot();
             botTurn = null;
+            round = null;
             world = loaded.world();
             buildScene();
             game = loaded.resume();
@@ -528,6 +823,8 @@ public final class GameApp implements UiActions, UiView {
             say("loaded " + file.getFileName());
         } catch (SaveGameException e) {
             say(e.getMessage());
+        } catch (IOException e) {
+            say("cannot read " + file + ": " + e.getMessage());
         }
     }
 
@@ -557,6 +854,7 @@ public final class GameApp implements UiActions, UiView {
         botTurn = null;
         animator = null;
         game = null;
+        round = null;
         screens.show(Screen.MAIN_MENU);
     }
 
@@ -585,6 +883,22 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public Game game() {
         return game;
+    }
+
+    @Override
+    public RoundGame round() {
+        return round;
+    }
+
+    @Override
+    public Round chosenRound() {
+        return roundToPlay;
+    }
+
+    @Override
+    public List<RoundEntry> rounds() {
+        if (rounds == null) rounds = CourseFolders.rounds(store);
+        return rounds;
     }
 
     /** Exposed for tests: the screen shown now. */

@@ -5,7 +5,11 @@ import java.util.List;
 import java.util.concurrent.Callable;
 import minigolf.app.GameApp;
 import minigolf.app.GameLauncher;
+import minigolf.course.CourseException;
+import minigolf.game.BotCatalog;
 import minigolf.game.Game;
+import minigolf.game.Round;
+import minigolf.game.RoundLoader;
 import minigolf.game.Player;
 import minigolf.game.SettingsStore;
 import minigolf.physics.World;
@@ -31,8 +35,13 @@ final class PlayCommand implements Callable<Integer> {
     @Option(names = "--frames", paramLabel = "N", description = "Runs the game N frames, then exits (default: ${DEFAULT-VALUE}, until the window is closed).")
     int frames;
 
+    @Option(names = "--round", paramLabel = "ROUND.json",
+            description = "Plays a round (a round file, docs/course-format.md) instead of one course (default: none).")
+    Path round;
+
     @Option(names = "--players", paramLabel = "NAME", split = ",",
-            description = "Starts a game at once with these human players (1 to 4), e.g. --players Ann,Bob (default: none, the main menu opens).")
+            description = {"Starts a game at once with these players (1 to 4), e.g. --players Ann,Bob;",
+                    "Bot:NAME seats a bot (e.g. Bot:planner) (default: none, the main menu opens)."})
     List<String> players;
 
     @Option(names = "--shots", paramLabel = "VX:VY", split = ",",
@@ -49,7 +58,17 @@ final class PlayCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        World world = course == null ? GameLauncher.loadBundled(GameLauncher.DEFAULT_COURSE) : CourseArgument.load(course);
+        if (round != null && course != null) throw new UserError("give either a COURSE or --round, not both");
+        Round theRound = null;
+        if (round != null) {
+            try {
+                theRound = RoundLoader.load(round);
+            } catch (CourseException e) {
+                throw new UserError(e.getMessage());
+            }
+        }
+        World world = theRound != null ? theRound.hole(0).world()
+                : course == null ? GameLauncher.loadBundled(GameLauncher.DEFAULT_COURSE) : CourseArgument.load(course);
         if (frames < 0) throw new UserError("--frames: must be >= 0, got " + frames);
         if (screenshot != null && frames == 0) throw new UserError("--screenshot needs --frames N (N >= 1)");
         if (timing && frames < 8) throw new UserError("--timing needs --frames N (N >= 8)");
@@ -60,7 +79,7 @@ final class PlayCommand implements Callable<Integer> {
                 throw new UserError("--players: 1 to " + Game.MAX_PLAYERS + " names, got " + players.size());
             }
             try {
-                seats = players.stream().map(n -> Player.human(n.trim())).toList();
+                seats = seats(players);
             } catch (IllegalArgumentException e) {
                 throw new UserError("--players: " + e.getMessage());
             }
@@ -68,16 +87,38 @@ final class PlayCommand implements Callable<Integer> {
         List<double[]> script = shots == null ? List.of() : shots.stream().map(PlayCommand::parseShot).toList();
         if (!script.isEmpty() && seats == null) throw new UserError("--shots needs --players");
         GameApp.Options options = new GameApp.Options(course, screenshot, frames, seats, script, timeScale,
-                SettingsStore.forUser(), true, false);
+                SettingsStore.forUser(), true, theRound != null);
         GameApp app = new GameApp(world, options);
+        if (theRound != null) app.playRound(theRound);
         FrameClock clock = timing ? new FrameClock(frames / 4) : null;
         if (clock != null) app.onLoopPass((pass, window) -> clock.pass(pass, window));
         Game game = app.run();
         java.io.PrintWriter out = spec.commandLine().getOut();
         if (clock != null) out.println(clock.json(world.course().name()));
+        else if (frames > 0 && app.roundGame() != null) out.print(app.roundGame().scorecard().toText());
         else if (frames > 0 && game != null) out.print(game.scorecard().toText());
         out.flush();
         return 0;
+    }
+
+    /** "Ann" is a human; "Bot:planner" the bot planner, named "Bot (planner)" ("Bot 2 (planner)" for the second). */
+    static List<Player> seats(List<String> specs) {
+        List<Player> out = new java.util.ArrayList<>();
+        int bots = 0;
+        for (String spec : specs) {
+            String n = spec.trim();
+            if (n.regionMatches(true, 0, "bot:", 0, 4)) {
+                String bot = n.substring(4).trim();
+                if (BotCatalog.planner(bot) == null) {
+                    throw new IllegalArgumentException("no bot named '" + bot + "' (bots: " + String.join(", ", BotCatalog.names()) + ")");
+                }
+                bots++;
+                out.add(Player.bot("Bot" + (bots > 1 ? " " + bots : "") + " (" + bot + ")", bot));
+            } else {
+                out.add(Player.human(n));
+            }
+        }
+        return out;
     }
 
     private static double[] parseShot(String s) {

@@ -15,7 +15,11 @@ public final class Limits {
     public static final long MODEL_FILE_BYTES = 8L << 20;
     /** A saved game, which embeds its course. */
     public static final long SAVE_FILE_BYTES = COURSE_FILE_BYTES + (1L << 20);
-    /** The settings file. */
+    /** A saved round, which embeds the courses of all its holes (up to 18 small holes fit easily). */
+    public static final long ROUND_SAVE_FILE_BYTES = 24L << 20;
+    /** The high-score table (ten scores per round and each player's bests). */
+    public static final long SCORES_FILE_BYTES = 1L << 20;
+    /** The settings file (and the volumes file beside it). */
     public static final long SETTINGS_FILE_BYTES = 64L << 10;
     /** Nesting of JSON arrays and objects (a course needs 5 levels). */
     public static final int JSON_DEPTH = 32;

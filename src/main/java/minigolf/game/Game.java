@@ -147,11 +147,16 @@ public final class Game {
      * @throws IllegalArgumentException if the speed exceeds the course's maximum speed
      */
     public Stroke startShot(double vx, double vy) {
+        return startShot(vx, vy, null);
+    }
+
+    /** As {@link #startShot(double, double)}, with a listener for the stroke's events (the game's sounds). */
+    public Stroke startShot(double vx, double vy, minigolf.physics.TrajectoryListener listener) {
         if (stroke != null) throw new IllegalStateException("a stroke is still rolling");
         int who = currentPlayer();
         if (who < 0) throw new IllegalStateException("the game is over");
         PlayerState s = states.get(who);
-        Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, null);
+        Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, listener);
         stroke = started;
         strokePlayer = who;
         strokeVx = vx;

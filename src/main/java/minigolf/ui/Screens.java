@@ -51,8 +51,11 @@ public final class Screens {
     private final ImInt frameLimit = new ImInt(60);
     private final ImInt strokeLimit = new ImInt(Game.DEFAULT_STROKE_LIMIT);
     private final float[] mouseSpeed = {1f};
+    private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
     private final ImDouble[] course = new ImDouble[9];
     private final ImInt testBot = new ImInt(0);
+    /** The HUD's physics readout (position, velocity, acceleration, slope, friction): off unless asked for. */
+    private final ImBoolean details = new ImBoolean(false);
     private String formError;
 
     public Screens(UiActions actions) {
@@ -89,6 +92,19 @@ public final class Screens {
             }
             case SCORECARD -> scorecard(view, w, h);
             case TEST_BOT -> hud(view, w, h, false);
+            case ROUND_CARD -> {
+                hud(view, w, h, false);
+                roundCard(view, w, h);
+            }
+            case HELP -> help(w, h);
+            case REPLAY -> {
+                ImGui.setNextWindowPos(w * 0.5f, 12, ImGuiCond.Always, 0.5f, 0f);
+                ImGui.begin("##replay", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize);
+                ImGui.textColored(1f, 0.85f, 0.3f, 1f, view.replayCaption() == null ? "Replay" : view.replayCaption());
+                ImGui.sameLine();
+                if (ImGui.button("Stop")) actions.stopReplay();
+                ImGui.end();
+            }
         }
         if (view.notice() != null) {
             ImGui.setNextWindowPos(w * 0.5f, 16, ImGuiCond.Always, 0.5f, 0f);
@@ -114,11 +130,12 @@ public final class Screens {
     private void mainMenu(UiView view, float w, float h) {
         centre(w, h);
         ImGui.begin("Minigolf", PANEL);
-        ImGui.text("Course: " + view.world().course().name());
+        ImGui.text(view.chosenRound() != null ? "Round: " + view.chosenRound().name() + " (" + view.chosenRound().size()
+                + " holes, par " + view.chosenRound().par() + ")" : "Course: " + view.world().course().name());
         ImGui.separator();
         float bw = 300, bh = 0;
         if (ImGui.button("Play", bw, bh)) show(Screen.NEW_GAME);
-        if (ImGui.button("Select course", bw, bh)) show(Screen.COURSES);
+        if (ImGui.button("Rounds and practice holes", bw, bh)) show(Screen.COURSES);
         List<String> botNames = BotCatalog.names();
         if (ImGui.button("Test bot", bw, bh) && !botNames.isEmpty()) {
             actions.testBot(botNames.get(Math.min(testBot.get(), botNames.size() - 1)));
@@ -132,6 +149,7 @@ public final class Screens {
             ImGui.endMenu();
         }
         if (ImGui.button("Settings", bw, bh)) openSettings(view, Screen.MAIN_MENU);
+        if (ImGui.button("Help (F1)", bw, bh)) openHelp();
         if (ImGui.button("Quit", bw, bh)) actions.quit();
         ImGui.end();
     }
@@ -140,6 +158,15 @@ public final class Screens {
         centre(w, h);
         ImGui.setNextWindowSize(Math.min(w - 40, 760), Math.min(h - 40, 560));
         ImGui.begin("Select course", ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoResize);
+        ImGui.textColored(1f, 0.85f, 0.3f, 1f, "Rounds");
+        for (UiView.RoundEntry r : view.rounds()) {
+            String label = String.format(Locale.ROOT, "%s  (%d holes, par %d)##%s", r.round().name(), r.round().size(),
+                    r.round().par(), r.file());
+            if (ImGui.button(label, 420, 0)) actions.chooseRound(r.round());
+        }
+        if (view.rounds().isEmpty()) ImGui.text("(no rounds found)");
+        ImGui.separator();
+        ImGui.textColored(1f, 0.85f, 0.3f, 1f, "Practice (single holes)");
         int column = 0;
         for (UiView.CourseEntry c : view.courses()) {
             ImGui.beginGroup();
@@ -161,7 +188,8 @@ public final class Screens {
 
     private void newGame(UiView view, float w, float h) {
         centre(w, h);
-        ImGui.begin("New game: " + view.world().course().name(), PANEL);
+        ImGui.begin("New game: " + (view.chosenRound() != null ? view.chosenRound().name() : view.world().course().name())
+                + "###newgame", PANEL);
         ImGui.sliderInt("Players", playerCount.getData(), 1, Game.MAX_PLAYERS);
         List<String> botNames = BotCatalog.names();
         for (int i = 0; i < playerCount.get(); i++) {
@@ -211,6 +239,9 @@ public final class Screens {
         frameLimit.set(s.frameLimit());
         strokeLimit.set(s.strokeLimit());
         mouseSpeed[0] = (float) s.mouseSpeed();
+        masterVolume[0] = (float) view.volumes().master();
+        effectsVolume[0] = (float) view.volumes().effects();
+        ambienceVolume[0] = (float) view.volumes().ambience();
         CourseEdits e = CourseEdits.of(view.world().course());
         double[] v = {e.gravity(), e.kineticFriction(), e.staticFriction(), e.maxSpeed(), e.startX(), e.startY(),
                 e.holeX(), e.holeY(), e.holeRadius()};
@@ -229,6 +260,9 @@ public final class Screens {
         ImGui.inputInt("Frame limit (0 = none)", frameLimit);
         ImGui.inputInt("Stroke limit", strokeLimit);
         ImGui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
+        ImGui.sliderFloat("Volume", masterVolume, 0f, 1f);
+        ImGui.sliderFloat("Effects", effectsVolume, 0f, 1f);
+        ImGui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
         ImGui.separator();
         ImGui.text("This course (" + view.world().course().name() + "): applies to the next game");
         String[] labels = {"Gravity (m/s^2)", "Kinetic friction", "Static friction", "Max speed (m/s)", "Start x",
@@ -244,6 +278,7 @@ public final class Screens {
                 CourseEdits e = new CourseEdits(course[0].get(), course[1].get(), course[2].get(), course[3].get(),
                         course[4].get(), course[5].get(), course[6].get(), course[7].get(), course[8].get());
                 actions.applySettings(s, e);
+                actions.applyVolumes(new minigolf.game.AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
                 formError = null;
                 show(settingsReturn);
             } catch (IllegalArgumentException e) {
@@ -261,6 +296,11 @@ public final class Screens {
         Game g = view.game();
         ImGui.setNextWindowPos(12, 12, ImGuiCond.Always);
         ImGui.begin("##hud", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+        minigolf.game.RoundGame rg = view.round();
+        if (rg != null) {
+            ImGui.textColored(0.6f, 0.9f, 1f, 1f, String.format(Locale.ROOT, "%s  -  hole %d of %d  -  par %d",
+                    rg.round().name(), rg.holeIndex() + 1, rg.round().size(), rg.hole().par()));
+        }
         if (g != null) {
             int cur = g.currentPlayer();
             if (cur >= 0) {
@@ -272,12 +312,19 @@ public final class Screens {
                 float[] c = PlayerColors.of(i);
                 ImGui.textColored(c[0], c[1], c[2], 1f, String.format(Locale.ROOT, "%-12s", g.players().get(i).name()));
                 ImGui.sameLine();
-                ImGui.text(String.format(Locale.ROOT, "strokes %d%s%s", s.total(),
+                ImGui.text(String.format(Locale.ROOT, "strokes %d%s%s%s", s.total(),
+                        view.round() != null ? " (par " + view.round().hole().par() + ")" : "",
                         s.penalties() > 0 ? " (" + s.penalties() + " penalty)" : "",
                         s.status() == minigolf.game.PlayerStatus.PLAYING ? "" : ", " + s.status().jsonName()));
             }
         }
-        BallReadout r = view.readout();
+        double aim = view.aimSpeed();
+        if (aim >= 0 && g != null) {
+            double max = view.world().physics().maxSpeed();
+            ImGui.progressBar((float) (aim / max), 260, 0, String.format(Locale.ROOT, "power %.0f%%", 100 * aim / max));
+        }
+        if (g != null) ImGui.checkbox("details", details);
+        BallReadout r = details.get() ? view.readout() : null;
         if (r != null) {
             ImGui.separator();
             ImGui.text(String.format(Locale.ROOT, "position  (%.3f, %.3f, %.3f) m", r.x(), r.y(), r.z()));
@@ -374,9 +421,156 @@ public final class Screens {
             }
             ImGui.endTable();
         }
+        if (ImGui.button("Watch again")) actions.watchReplay();
+        ImGui.sameLine();
         if (ImGui.button("Play again")) show(Screen.NEW_GAME);
         ImGui.sameLine();
         if (ImGui.button("Main menu")) actions.toMainMenu();
+        ImGui.end();
+    }
+
+    private void roundCard(UiView view, float w, float h) {
+        minigolf.game.RoundGame rg = view.round();
+        if (rg == null) return;
+        minigolf.game.RoundScorecard card = rg.scorecard();
+        int holes = card.pars().length;
+        centre(w, h);
+        ImGui.begin((card.over() ? "Final card: " : "Card: ") + card.roundName() + "###roundcard", PANEL);
+        if (ImGui.beginTable("##card", holes + 3, ImGuiTableFlags.Borders | ImGuiTableFlags.RowBg | ImGuiTableFlags.SizingFixedFit)) {
+            ImGui.tableSetupColumn("Hole");
+            for (int i = 0; i < holes; i++) ImGui.tableSetupColumn(String.valueOf(i + 1));
+            ImGui.tableSetupColumn("Total");
+            ImGui.tableSetupColumn("To par");
+            ImGui.tableHeadersRow();
+            ImGui.tableNextRow();
+            ImGui.tableSetColumnIndex(0);
+            ImGui.text("Par");
+            for (int i = 0; i < holes; i++) {
+                ImGui.tableSetColumnIndex(i + 1);
+                ImGui.text(String.valueOf(card.pars()[i]));
+            }
+            ImGui.tableSetColumnIndex(holes + 1);
+            ImGui.text(String.valueOf(card.totalPar()));
+            for (int s = 0; s < card.rows().size(); s++) {
+                minigolf.game.RoundScorecard.Row row = card.rows().get(s);
+                ImGui.tableNextRow();
+                ImGui.tableSetColumnIndex(0);
+                float[] c = PlayerColors.of(s);
+                ImGui.textColored(c[0], c[1], c[2], 1f, row.name());
+                for (int i = 0; i < row.holes().length; i++) {
+                    ImGui.tableSetColumnIndex(i + 1);
+                    int score = row.holes()[i], par = card.pars()[i];
+                    if (score == 1) ImGui.textColored(1f, 0.85f, 0.2f, 1f, "1");
+                    else if (score < par) ImGui.textColored(0.5f, 1f, 0.5f, 1f, String.valueOf(score));
+                    else if (score > par) ImGui.textColored(1f, 0.6f, 0.5f, 1f, String.valueOf(score));
+                    else ImGui.text(String.valueOf(score));
+                }
+                ImGui.tableSetColumnIndex(holes + 1);
+                ImGui.text(String.valueOf(row.total()));
+                ImGui.tableSetColumnIndex(holes + 2);
+                ImGui.text(minigolf.game.RoundScorecard.formatToPar(card.toPar(s)));
+            }
+            ImGui.endTable();
+        }
+        List<Integer> winners = card.winners();
+        if (!winners.isEmpty()) {
+            List<String> names = winners.stream().map(s -> card.rows().get(s).name()).toList();
+            ImGui.textColored(1f, 0.85f, 0.3f, 1f, (names.size() == 1 ? "Winner: " : "Tied for the win: ") + String.join(", ", names));
+        }
+        minigolf.game.HighScores scores = view.highScores();
+        if (scores != null) {
+            ImGui.separator();
+            for (int s = 0; s < card.rows().size(); s++) {
+                String n = card.rows().get(s).name();
+                Integer best = scores.personalBest(card.roundName(), n);
+                int hole = Math.max(0, card.holesPlayed() - 1);
+                Integer holeBest = card.holesPlayed() > 0 ? scores.personalBest(card.roundName(), hole, n) : null;
+                ImGui.text(n + ": best round " + (best == null ? "-" : best) + (holeBest == null ? ""
+                        : ", best on hole " + (hole + 1) + ": " + holeBest));
+            }
+            if (card.over()) {
+                ImGui.separator();
+                ImGui.textColored(1f, 0.85f, 0.3f, 1f, "High scores: " + card.roundName());
+                if (ImGui.beginTable("##high", 4, ImGuiTableFlags.RowBg | ImGuiTableFlags.SizingFixedFit)) {
+                    int place = 1;
+                    for (minigolf.game.HighScores.Entry e : scores.table(card.roundName())) {
+                        ImGui.tableNextRow();
+                        ImGui.tableSetColumnIndex(0);
+                        ImGui.text("#" + place++);
+                        ImGui.tableSetColumnIndex(1);
+                        ImGui.text(e.name());
+                        ImGui.tableSetColumnIndex(2);
+                        ImGui.text(e.score() + " (" + minigolf.game.RoundScorecard.formatToPar(e.score() - card.totalPar()) + ")");
+                        ImGui.tableSetColumnIndex(3);
+                        ImGui.text(e.date().toString());
+                    }
+                    ImGui.endTable();
+                }
+            }
+        }
+        if (ImGui.button("Watch hole " + (card.holesPlayed()) + " again", 220, 0)) actions.watchReplay();
+        if (!card.over()) {
+            if (ImGui.button("Next hole", 160, 0)) actions.nextHole();
+            ImGui.sameLine();
+            if (ImGui.button("Save and quit", 160, 0)) {
+                actions.saveGame();
+                actions.toMainMenu();
+            }
+        } else {
+            if (ImGui.button("Play again", 160, 0)) show(Screen.NEW_GAME);
+            ImGui.sameLine();
+            if (ImGui.button("Main menu", 160, 0)) actions.toMainMenu();
+        }
+        ImGui.end();
+    }
+
+    private Screen helpReturn = Screen.MAIN_MENU;
+
+    /** Opens the help screen; ESC or "Back" returns to where it was opened. */
+    public void openHelp() {
+        if (screen != Screen.HELP) helpReturn = screen;
+        show(Screen.HELP);
+    }
+
+    /** Where the help screen goes back to. */
+    public void closeHelp() {
+        show(helpReturn);
+    }
+
+    static final String[][] CONTROLS = {
+            {"Aim and hit", "press on your ball, drag back away from where it should go, release"},
+            {"Cancel an aim", "right click while dragging"},
+            {"Power", "the longer the drag, the harder the putt (the bar shows it)"},
+            {"Turn the camera", "drag with the left button away from the ball"},
+            {"Move the camera", "drag with the right button"},
+            {"Zoom", "mouse wheel"},
+            {"Reset the camera", "R"},
+            {"Skip the rolling ball", "SPACE"},
+            {"Height colours", "H"},
+            {"Pause / back", "ESC"},
+            {"Full screen", "F11"},
+            {"This help", "F1"},
+    };
+
+    private void help(float w, float h) {
+        centre(w, h);
+        ImGui.begin("Help###help", PANEL);
+        ImGui.textColored(1f, 0.85f, 0.3f, 1f, "How to play");
+        ImGui.text("Get the ball in the cup in as few strokes as you can. Par is what a good player needs.");
+        ImGui.text("Water or out of bounds: one penalty stroke, the ball goes back to where the stroke began.");
+        ImGui.text("A ball that rolls slowly enough over the cup drops in.");
+        ImGui.separator();
+        if (ImGui.beginTable("##controls", 2, ImGuiTableFlags.RowBg | ImGuiTableFlags.SizingFixedFit)) {
+            for (String[] c : CONTROLS) {
+                ImGui.tableNextRow();
+                ImGui.tableSetColumnIndex(0);
+                ImGui.textColored(0.6f, 0.9f, 1f, 1f, c[0]);
+                ImGui.tableSetColumnIndex(1);
+                ImGui.text(c[1]);
+            }
+            ImGui.endTable();
+        }
+        if (ImGui.button("Back", 160, 0)) closeHelp();
         ImGui.end();
     }
 }

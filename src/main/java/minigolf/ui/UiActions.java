@@ -35,4 +35,18 @@ public interface UiActions {
     /** Hides the {@link UiView#notice()}. */
     default void dismissNotice() {
     }
+
+    /** Plays a round: the new-game dialog opens for it. */
+    void chooseRound(minigolf.game.Round round);
+
+    /** After a hole's card: on to the next hole (or the final card). */
+    void nextHole();
+
+    /** Plays the current hole's strokes again, exactly as played. */
+    void watchReplay();
+
+    void stopReplay();
+
+    /** Sets and keeps the volumes. */
+    void applyVolumes(minigolf.game.AudioSettings volumes);
 }

@@ -47,4 +47,25 @@ public interface UiView {
 
     record CourseEntry(String name, Path file, boolean own) {
     }
+
+    /** The round being played, or null (a single course). */
+    minigolf.game.RoundGame round();
+
+    /** The round the next game plays, or null (the selected course). */
+    minigolf.game.Round chosenRound();
+
+    /** "Replay: stroke 2 of 5 - Ann" while a replay runs, else null. */
+    String replayCaption();
+
+    /** The volumes. */
+    minigolf.game.AudioSettings volumes();
+
+    /** Scores kept between games, or null when the score file could not be read. */
+    minigolf.game.HighScores highScores();
+
+    /** The rounds to choose from (loaded, so they can be played). */
+    List<RoundEntry> rounds();
+
+    record RoundEntry(minigolf.game.Round round, Path file) {
+    }
 }
