@@ -1,5 +1,9 @@
 package minigolf.bot;
 
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
@@ -16,6 +20,8 @@ import minigolf.physics.World;
  * <p>Not thread-safe: one bot run, one thread (the token may be cancelled from any thread).
  */
 public final class CountingSimulator {
+    /** Inside one simulated shot, the token is checked every this many steps (a slow shot stays cancellable). */
+    static final int STEPS_PER_CHECK = 256;
     /** Progress is reported every this many simulations. */
     public static final int PROGRESS_INTERVAL = 32;
 
@@ -37,6 +43,10 @@ public final class CountingSimulator {
         Shot best;
         ShotResult bestResult;
         double bestScore = Double.POSITIVE_INFINITY;
+        /** Every real-world result simulated from (fromX, fromY) this stroke, by the shot played. */
+        final Map<Shot, ShotResult> results = new HashMap<>();
+        /** Errors a bot recovered from (see SearchBot): none on a correct bot. */
+        final List<String> errors = new ArrayList<>();
 
         Account(long budget, CancellationToken token, BotProgress progress) {
             this.budget = budget;
@@ -50,13 +60,15 @@ public final class CountingSimulator {
     private final Account account;
     /** Variants simulate another world (e.g. a probe); their shots are not candidates for bestShot. */
     private final boolean primary;
+    /** The simulator of the real world (not a variant): all its results are real, for {@link #knownResult}. */
+    private final boolean real;
 
     /**
      * @param budget the most simulations allowed in total ({@code Long.MAX_VALUE}: unlimited)
      */
     public CountingSimulator(World world, SimulationSettings settings, long budget, CancellationToken token,
                              BotProgress progress) {
-        this(world, new Simulator(world, settings), new Account(budget, token, progress), true);
+        this(world, new Simulator(world, settings), new Account(budget, token, progress), true, true);
         if (budget < 0) throw new IllegalArgumentException("budget must be >= 0, got " + budget);
     }
 
@@ -65,11 +77,12 @@ public final class CountingSimulator {
         this(world, SimulationSettings.DEFAULT, Long.MAX_VALUE, CancellationToken.none(), BotProgress.NONE);
     }
 
-    private CountingSimulator(World world, Simulator simulator, Account account, boolean primary) {
+    private CountingSimulator(World world, Simulator simulator, Account account, boolean primary, boolean real) {
         this.world = world;
         this.simulator = simulator;
         this.account = account;
         this.primary = primary;
+        this.real = real;
     }
 
     /**
@@ -78,7 +91,7 @@ public final class CountingSimulator {
      * non-holed results are the real world's (the same course with a stricter hole rule).
      */
     public CountingSimulator variant(World other, boolean candidates) {
-        return new CountingSimulator(other, new Simulator(other, simulator.settings()), account, candidates);
+        return new CountingSimulator(other, new Simulator(other, simulator.settings()), account, candidates, false);
     }
 
     public World world() {
@@ -132,6 +145,32 @@ public final class CountingSimulator {
         account.best = null;
         account.bestResult = null;
         account.bestScore = Double.POSITIVE_INFINITY;
+        account.results.clear();
+    }
+
+    /**
+     * What {@code shot} did from the position given to {@link #beginShot}, if it was simulated
+     * there this stroke in the real world, or in a candidate variant that did not hole it (null
+     * otherwise): the engine is deterministic, so a bot can check where its chosen shot ends
+     * without simulating it again.
+     */
+    public ShotResult knownResult(Shot shot) {
+        return account.results.get(shot);
+    }
+
+    /** Every real-world result from the position given to {@link #beginShot}, by shot (read-only view). */
+    public Map<Shot, ShotResult> knownResults() {
+        return java.util.Collections.unmodifiableMap(account.results);
+    }
+
+    /** Records an error a bot recovered from (its message); {@link #errors()} lists them. */
+    public void recordError(String message) {
+        account.errors.add(message);
+    }
+
+    /** The errors bots recovered from in this game: empty unless a bot has a bug. */
+    public List<String> errors() {
+        return List.copyOf(account.errors);
     }
 
     /** The best-scored shot simulated from the position given to {@link #beginShot}, or null. */
@@ -150,8 +189,8 @@ public final class CountingSimulator {
     /**
      * Simulates {@code shot} (scaled down to the course's maxSpeed if faster) from (x, y).
      *
-     * @throws BotCancelledException    if the token was cancelled
-     * @throws BudgetExhaustedException if the budget is spent
+     * @throws BotCancelledException    if the token was cancelled (also during the shot)
+     * @throws BudgetExhaustedException if the budget or the time limit is spent (also during the shot)
      */
     public ShotResult simulate(double x, double y, Shot shot, TrajectoryListener listener) {
         account.token.throwIfCancelled();
@@ -159,7 +198,11 @@ public final class CountingSimulator {
         Shot limited = limit(shot);
         account.used++;
         if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
-        ShotResult result = play(simulator, x, y, limited, listener);
+        ShotResult result = play(simulator, x, y, limited, new Watchdog(account.token, listener));
+        // A candidate variant's results are the real world's except where it holes.
+        if (primary && (real || result.outcome() != Outcome.HOLED) && x == account.fromX && y == account.fromY) {
+            account.results.put(limited, result);
+        }
         if (primary && account.score != null && x == account.fromX && y == account.fromY) {
             double s = account.score.score(result);
             if (s < account.bestScore) {
@@ -190,5 +233,38 @@ public final class CountingSimulator {
     /** Whether an outcome ends the search for this shot: the ball is in. */
     public static boolean holed(ShotResult result) {
         return result.outcome() == Outcome.HOLED;
+    }
+
+    /**
+     * Passes every step on to the bot's own listener (if any) and checks the token every
+     * {@link #STEPS_PER_CHECK} steps, so that a shot that rolls or bounces for a long time of
+     * simulated time cannot hold a cancel or the time limit up.
+     */
+    private static final class Watchdog implements TrajectoryListener {
+        private final CancellationToken token;
+        private final TrajectoryListener inner;
+        private int steps;
+
+        Watchdog(CancellationToken token, TrajectoryListener inner) {
+            this.token = token;
+            this.inner = inner;
+        }
+
+        @Override
+        public void onStep(double t, double x, double y, double vx, double vy) {
+            if (inner != null) inner.onStep(t, x, y, vx, vy);
+            if (++steps % STEPS_PER_CHECK == 0) token.throwIfCancelled();
+        }
+
+        @Override
+        public void onState(double t, double x, double y, double z, double vx, double vy, double vz) {
+            if (inner != null) inner.onState(t, x, y, z, vx, vy, vz);
+            if (++steps % STEPS_PER_CHECK == 0) token.throwIfCancelled();
+        }
+
+        @Override
+        public void onEvent(minigolf.physics.StrokeEvent event) {
+            if (inner != null) inner.onEvent(event);
+        }
     }
 }

@@ -21,15 +21,22 @@ public final class Playthrough {
 
     /**
      * @param strokes shots played plus penalty strokes
+     * @param timedOut whether the game stopped because the token's time limit ran out
+     * @param botErrors errors the bot recovered from (see {@link SearchBot}): empty unless it has a bug
      */
-    public record Result(boolean holed, int strokes, long simulations, long wallNanos, List<PlayedShot> shots) {
+    public record Result(boolean holed, int strokes, long simulations, long wallNanos, List<PlayedShot> shots,
+                         boolean timedOut, List<String> botErrors) {
+        public Result(boolean holed, int strokes, long simulations, long wallNanos, List<PlayedShot> shots) {
+            this(holed, strokes, simulations, wallNanos, shots, false, List.of());
+        }
     }
 
     private Playthrough() {
     }
 
     /**
-     * Plays until holed, until {@code maxStrokes} shots are played, or until the budget is spent
+     * Plays until holed, until {@code maxStrokes} shots are played, or until the budget or the
+     * token's time limit ({@link CancellationToken#withTimeLimit}, for the whole game) is spent
      * (the stroke during which it ran out is still played with the bot's best shot).
      */
     public static Result play(Bot bot, World world, SimulationSettings settings, int maxStrokes, long budget,
@@ -57,8 +64,9 @@ public final class Playthrough {
                 x = result.endX();
                 y = result.endY();
             }
-            if (counting.remaining() <= 0) break;
+            if (counting.remaining() <= 0 || token.timeUp()) break;
         }
-        return new Result(holed, strokes, counting.count(), System.nanoTime() - started, List.copyOf(played));
+        return new Result(holed, strokes, counting.count(), System.nanoTime() - started, List.copyOf(played),
+                !holed && token.timeUp(), counting.errors());
     }
 }

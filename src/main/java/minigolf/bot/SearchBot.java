@@ -6,21 +6,36 @@ import minigolf.physics.World;
 
 /**
  * The shared frame of every bot: it opens the best-shot memory, runs the bot's search and, when
- * the budget runs out mid-search, returns the best shot seen (or, with nothing simulated at all,
- * the physics guess straight at the hole).
+ * the budget or the time limit runs out mid-search, returns the best shot seen (or, with nothing
+ * simulated at all, the physics guess straight at the hole). A bot always answers: should its
+ * search fail with any other exception (a bug), the error is recorded in the simulator
+ * ({@link CountingSimulator#errors()}, which the tests check is empty) and the best shot so far is
+ * played; only a cancel leaves {@link #nextShot}.
  */
 public abstract class SearchBot implements Bot {
     @Override
     public final Shot nextShot(BotRequest request) {
         CountingSimulator sim = request.simulator();
-        sim.checkCancelled();
-        sim.beginShot(request.ballX(), request.ballY(), scoreFor(request));
+        if (request.token().isCancelled()) throw new BotCancelledException();
         try {
+            sim.beginShot(request.ballX(), request.ballY(), null);
+            sim.beginShot(request.ballX(), request.ballY(), scoreFor(request));
             return sim.limit(search(request));
         } catch (BudgetExhaustedException e) {
-            Shot best = sim.bestShot();
-            return best != null ? best : sim.limit(directGuess(request.world(), request.ballX(), request.ballY()));
+            return fallback(request);
+        } catch (BotCancelledException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            sim.recordError(name() + ": " + e);
+            if (request.token().isCancelled()) throw new BotCancelledException();
+            return fallback(request);
         }
+    }
+
+    private static Shot fallback(BotRequest request) {
+        CountingSimulator sim = request.simulator();
+        Shot best = sim.bestShot();
+        return best != null ? best : sim.limit(directGuess(request.world(), request.ballX(), request.ballY()));
     }
 
     /** Finds the shot; may throw BudgetExhaustedException (handled) or BotCancelledException (passed on). */
@@ -47,11 +62,7 @@ public abstract class SearchBot implements Bot {
         double hx = world.hole().position().x(), hy = world.hole().position().y();
         double dx = hx - x, dy = hy - y;
         double distance = Math.hypot(dx, dy);
-        double g = world.physics().gravity();
-        double mu = world.friction().kinetic(x, y);
-        double rise = world.terrain().height(hx, hy) - world.terrain().height(x, y);
-        double speedSquared = 2 * g * (mu * distance + rise);
-        double speed = Math.min(Math.sqrt(Math.max(speedSquared, 0.01)), world.physics().maxSpeed());
+        double speed = Math.min(SpeedGuess.speed(world, x, y, distance, hx, hy, 0.01), world.physics().maxSpeed());
         double angle = Math.atan2(dy, dx);
         return Shot.polar(angle, speed);
     }

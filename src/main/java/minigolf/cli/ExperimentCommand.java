@@ -71,6 +71,10 @@ final class ExperimentCommand implements Callable<Integer> {
                     + "default: none, required there).")
     Integer shards;
 
+    @Option(names = "--time-limit", paramLabel = "SECONDS",
+            description = "Wall time per game in seconds (default: ${DEFAULT-VALUE}): the bot then plays its best shot so far and the game stops.")
+    double timeLimit = BotArguments.DEFAULT_TIME_LIMIT;
+
     @Override
     public Integer call() throws InterruptedException {
         try {
@@ -85,6 +89,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (seeds < 1) throw new UserError("--seeds: must be at least 1, got " + seeds);
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
+        BotArguments.timeLimit(timeLimit);
         int workers = threads != null ? threads : defaultThreads();
         if (workers < 1) throw new UserError("--threads: must be at least 1, got " + workers);
         if (shards != null && shards < 1) throw new UserError("--shards: must be at least 1, got " + shards);
@@ -97,7 +102,7 @@ final class ExperimentCommand implements Callable<Integer> {
         loadSuite(suite, courses, files);
         Manifest manifest = Manifest.of(spec.root().version()[0],
                 new Manifest.Options(bots, seeds, budget, maxStrokes), files).forShard(shard);
-        Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers);
+        Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers, timeLimit);
         Path folder = shard == null ? out : out.resolve(shard.folderName());
         PrintWriter err = spec.commandLine().getErr();
         refuseMixedFolders(shard);

@@ -37,14 +37,19 @@ final class SolveCommand implements Callable<Integer> {
     @Option(names = "--budget", paramLabel = "N", description = "Most simulations for the whole game (default: ${DEFAULT-VALUE}).")
     long budget = 1_000_000;
 
+    @Option(names = "--time-limit", paramLabel = "SECONDS",
+            description = "Wall time for the whole game (default 60): the bot then plays its best shot so far and the game stops.")
+    double timeLimit = BotArguments.DEFAULT_TIME_LIMIT;
+
     @Override
     public Integer call() {
         Bot chosen = BotArguments.bot(bot);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
+        BotArguments.timeLimit(timeLimit);
         World world = CourseArgument.load(course);
         Playthrough.Result result = Playthrough.play(chosen, world, SimulationSettings.DEFAULT, maxStrokes, budget,
-                seed, CancellationToken.none(), BotProgress.NONE);
+                seed, CancellationToken.withTimeLimit(timeLimit), BotProgress.NONE);
         spec.commandLine().getOut().println(Json.write(toJson(chosen.name(), world.course().name(), result)));
         return 0;
     }
@@ -57,6 +62,7 @@ final class SolveCommand implements Callable<Integer> {
         out.put("strokes", result.strokes());
         out.put("simulations", result.simulations());
         out.put("wallMs", result.wallNanos() / 1e6);
+        out.put("timedOut", result.timedOut());
         ArrayNode shots = out.putArray("shots");
         for (Playthrough.PlayedShot s : result.shots()) {
             ObjectNode shot = shots.addObject();

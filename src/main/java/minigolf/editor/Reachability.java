@@ -1,7 +1,7 @@
 package minigolf.editor;
 
-import java.util.Arrays;
-import java.util.PriorityQueue;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.map.GridPathSearch;
 import minigolf.collision.CollisionScene;
 import minigolf.collision.Hit;
 import minigolf.physics.World;
@@ -12,7 +12,7 @@ import minigolf.physics.World;
  * deleted, inside the bounds and dry at its centre, and no obstacle covers its centre; a move
  * between two cells is blocked when the ball's sweep from centre to centre hits an obstacle (so a
  * thin fence between two cells blocks them). Slopes and friction are ignored: this finds courses
- * that can never be holed, not how hard a course is.
+ * that can never be holed, not how hard a course is. The search is the bots' {@link GridPathSearch}.
  */
 public final class Reachability {
     private Reachability() {
@@ -30,54 +30,40 @@ public final class Reachability {
         Hit hit = new Hit();
         double[] scratch = new double[3];
         double r = world.physics().ballRadius();
-        double[] g = new double[cols * rows];
-        Arrays.fill(g, Double.POSITIVE_INFINITY);
-        int[] from = new int[cols * rows];
-        boolean[] closed = new boolean[cols * rows];
-        int start = sj * cols + si, goal = gj * cols + gi;
-        PriorityQueue<double[]> queue = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
-        g[start] = 0;
-        from[start] = -1;
-        queue.add(new double[]{0, start});
-        while (!queue.isEmpty()) {
-            int cur = (int) queue.poll()[1];
-            if (closed[cur]) continue;
-            if (cur == goal) return trace(from, cur, cols);
-            closed[cur] = true;
-            int ci = cur % cols, cj = cur / cols;
-            double cx = centerX(c, ci), cy = centerY(c, cj);
-            for (int dj = -1; dj <= 1; dj++) {
-                for (int di = -1; di <= 1; di++) {
-                    if (di == 0 && dj == 0) continue;
-                    int ni = ci + di, nj = cj + dj;
-                    if (ni < 0 || nj < 0 || ni >= cols || nj >= rows) continue;
-                    int n = nj * cols + ni;
-                    if (closed[n]) continue;
-                    if (open[n] == 0) open[n] = passable(c, world, scene, ni, nj, r) ? (byte) 1 : (byte) 2;
-                    if (open[n] == 2 && n != goal) continue;
-                    // Diagonal moves may not cut the corner of a blocked or deleted cell.
-                    if (di != 0 && dj != 0) {
-                        int a = cj * cols + ni, b = nj * cols + ci;
-                        if (open[a] == 0) open[a] = passable(c, world, scene, ni, cj, r) ? (byte) 1 : (byte) 2;
-                        if (open[b] == 0) open[b] = passable(c, world, scene, ci, nj, r) ? (byte) 1 : (byte) 2;
-                        if (open[a] == 2 || open[b] == 2) continue;
-                    }
-                    double nx = centerX(c, ni), ny = centerY(c, nj);
-                    if (scene != null && scene.anyNear(Math.min(cx, nx) - r, Math.min(cy, ny) - r,
-                            Math.max(cx, nx) + r, Math.max(cy, ny) + r)) {
-                        double z0 = world.terrain().height(cx, cy) + r, z1 = world.terrain().height(nx, ny) + r;
-                        if (scene.sweep(cx, cy, z0, nx, ny, z1, hit, scratch)) continue;
-                    }
-                    double cost = g[cur] + Math.hypot(di, dj);
-                    if (cost < g[n]) {
-                        g[n] = cost;
-                        from[n] = cur;
-                        queue.add(new double[]{cost + Math.hypot(ni - gi, nj - gj), n});
-                    }
-                }
+        int goal = gj * cols + gi;
+        GridPathSearch.Graph graph = new GridPathSearch.Graph() {
+            /** Whether cell (i, j) can be crossed, worked out on first use. */
+            boolean blocked(int i, int j) {
+                int k = j * cols + i;
+                if (open[k] == 0) open[k] = passable(c, world, scene, i, j, r) ? (byte) 1 : (byte) 2;
+                return open[k] == 2;
             }
-        }
-        return null;
+
+            @Override
+            public double stepCost(int ci, int cj, int di, int dj) {
+                int ni = ci + di, nj = cj + dj;
+                if (blocked(ni, nj) && nj * cols + ni != goal) return Double.POSITIVE_INFINITY;
+                // Diagonal moves may not cut the corner of a blocked or deleted cell.
+                if (di != 0 && dj != 0 && (blocked(ni, cj) || blocked(ci, nj))) return Double.POSITIVE_INFINITY;
+                double cx = centerX(c, ci), cy = centerY(c, cj), nx = centerX(c, ni), ny = centerY(c, nj);
+                if (scene != null && scene.anyNear(Math.min(cx, nx) - r, Math.min(cy, ny) - r,
+                        Math.max(cx, nx) + r, Math.max(cy, ny) + r)) {
+                    double z0 = world.terrain().height(cx, cy) + r, z1 = world.terrain().height(nx, ny) + r;
+                    if (scene.sweep(cx, cy, z0, nx, ny, z1, hit, scratch)) return Double.POSITIVE_INFINITY;
+                }
+                return Math.hypot(di, dj);
+            }
+
+            @Override
+            public double heuristic(int i, int j) {
+                return Math.hypot(i - gi, j - gj);
+            }
+        };
+        int[] cells = GridPathSearch.path(cols, rows, sj * cols + si, goal, graph, true, CancellationToken.none());
+        if (cells == null) return null;
+        int[][] path = new int[cells.length][];
+        for (int m = 0; m < cells.length; m++) path[m] = new int[] {cells[m] % cols, cells[m] / cols};
+        return path;
     }
 
     private static boolean passable(EditableCourse c, World world, CollisionScene scene, int i, int j, double r) {
@@ -95,13 +81,5 @@ public final class Reachability {
 
     static double centerY(EditableCourse c, int j) {
         return c.originY + (j + 0.5) * c.spacing;
-    }
-
-    private static int[][] trace(int[] from, int end, int cols) {
-        int n = 0;
-        for (int k = end; k != -1; k = from[k]) n++;
-        int[][] path = new int[n][];
-        for (int k = end, m = n - 1; k != -1; k = from[k], m--) path[m] = new int[]{k % cols, k / cols};
-        return path;
     }
 }

@@ -25,6 +25,8 @@ import minigolf.physics.World;
 public final class BotCatalog {
     /** Simulations a bot may spend on one stroke in the game. */
     public static final long BUDGET_PER_STROKE = 20_000;
+    /** Wall time a bot may think about one stroke in the game; then it plays its best shot so far. */
+    public static final double TIME_LIMIT_PER_STROKE = 20;
     private static final Map<String, Supplier<ShotPlanner>> PLANNERS = new LinkedHashMap<>();
 
     static {
@@ -67,7 +69,10 @@ public final class BotCatalog {
         return f == null ? null : f.get();
     }
 
-    /** Adapts a bot: its simulations are counted against {@link #BUDGET_PER_STROKE} and reported as progress. */
+    /**
+     * Adapts a bot: its simulations are counted against {@link #BUDGET_PER_STROKE}, its thinking
+     * limited to {@link #TIME_LIMIT_PER_STROKE}, and both reported as progress.
+     */
     public static ShotPlanner fromBot(Bot bot) {
         return new ShotPlanner() {
             public String name() {
@@ -76,10 +81,13 @@ public final class BotCatalog {
 
             public double[] plan(World world, SimulationSettings settings, double x, double y, int strokes, long seed,
                                  Control control) {
-                CancellationToken token = new CancellationToken();
+                CancellationToken token = CancellationToken.withTimeLimit(TIME_LIMIT_PER_STROKE);
                 control.whenCancelled(token::cancel);
+                long started = System.nanoTime();
+                // The bar shows whichever runs out first: the simulations or the time.
                 CountingSimulator sim = new CountingSimulator(world, settings, BUDGET_PER_STROKE, token,
-                        (used, budget, phase) -> control.progress((double) used / budget,
+                        (used, budget, phase) -> control.progress(Math.min(1, Math.max((double) used / budget,
+                                        (System.nanoTime() - started) / 1e9 / TIME_LIMIT_PER_STROKE)),
                                 phase + ": " + used + " simulations"));
                 Shot shot = sim.limit(bot.nextShot(new BotRequest(sim, x, y, strokes, seed)));
                 return new double[]{shot.vx(), shot.vy()};

@@ -173,4 +173,57 @@ class CountingSimulatorTest {
         assertSame(BotCancelledException.class, thrown.get().getClass());
         return Math.max(0, stoppedAt.get() - cancelledAt) / 1e6;
     }
+
+    @Test
+    void aCancelStopsAShotInTheMiddle() {
+        // A 4.4 m/s putt along the flat course rolls 9.87 m in 4.49 s: about 270 steps of 1/60 s.
+        int[] whole = {0};
+        ShotResult rolled = new Simulator(flat, SimulationSettings.DEFAULT).simulate(-4.95, 0, 4.4, 0,
+                (t, x, y, vx, vy) -> whole[0]++);
+        assertEquals(minigolf.physics.Outcome.STOPPED, rolled.outcome());
+        assertTrue(whole[0] > CountingSimulator.STEPS_PER_CHECK + 5, "steps " + whole[0]);
+        // Cancelled at step 10: the shot stops at the next check (step 256), not at its end.
+        CancellationToken token = new CancellationToken();
+        CountingSimulator sim = new CountingSimulator(flat, SimulationSettings.DEFAULT, 100, token, BotProgress.NONE);
+        int[] steps = {0};
+        minigolf.physics.TrajectoryListener cancelAtTen = (t, x, y, vx, vy) -> {
+            if (++steps[0] == 10) token.cancel();
+        };
+        assertThrows(BotCancelledException.class, () -> sim.simulate(-4.95, 0, Shot.of(4.4, 0), cancelAtTen));
+        assertEquals(CountingSimulator.STEPS_PER_CHECK, steps[0]);
+    }
+
+    @Test
+    void theTimeLimitEndsTheSearchLikeTheBudget() {
+        CancellationToken token = CancellationToken.withTimeLimit(1e-9);
+        assertTrue(token.timeUp());
+        assertTrue(!token.isCancelled());
+        CountingSimulator sim = new CountingSimulator(flat, SimulationSettings.DEFAULT, 100, token, BotProgress.NONE);
+        BudgetExhaustedException e = assertThrows(BudgetExhaustedException.class, () -> sim.simulate(-3.5, 0, Shot.of(1, 0)));
+        assertTrue(e.getMessage().contains("time limit"), e.getMessage());
+        assertEquals(0, sim.count());
+        assertThrows(IllegalArgumentException.class, () -> CancellationToken.withTimeLimit(0));
+        assertThrows(IllegalArgumentException.class, () -> CancellationToken.withTimeLimit(Double.NaN));
+        assertTrue(Double.isNaN(CancellationToken.none().timeLimitSeconds()));
+        assertTrue(!CancellationToken.none().timeUp());
+    }
+
+    @Test
+    void remembersWhatEachShotFromTheBallDid() {
+        CountingSimulator sim = new CountingSimulator(flat);
+        sim.beginShot(-3.5, 0, r -> 0);
+        ShotResult r = sim.simulate(-3.5, 0, Shot.of(2, 0));
+        sim.simulate(0, 0, Shot.of(3, 0));
+        sim.variant(flat, false).simulate(-3.5, 0, Shot.of(1, 0));
+        assertSame(r, sim.knownResult(Shot.of(2, 0)));
+        // Only shots from the ball, in the real world (not a probe world's).
+        assertEquals(1, sim.knownResults().size());
+        // A candidate variant's results are the real world's where it does not hole: kept.
+        ShotResult short1 = sim.variant(flat, true).simulate(-3.5, 0, Shot.of(1, 0));
+        assertSame(short1, sim.knownResult(Shot.of(1, 0)));
+        sim.variant(flat, true).simulate(-3.5, 0, Shot.of(Math.sqrt(2 * 9.81 * 0.1 * 7), 0));
+        assertNull(sim.knownResult(Shot.of(Math.sqrt(2 * 9.81 * 0.1 * 7), 0)), "a shot the variant holes is not kept");
+        sim.beginShot(0, 0, r2 -> 0);
+        assertNull(sim.knownResult(Shot.of(2, 0)));
+    }
 }

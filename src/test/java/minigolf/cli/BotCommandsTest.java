@@ -33,7 +33,7 @@ class BotCommandsTest {
         CliRun r = run("solve", BENCH.resolve("two-putt.json").toString(), "--bot", "planner", "--seed", "4");
         assertEquals(0, r.code(), r.err());
         JsonNode json = new ObjectMapper().readTree(r.out());
-        assertEquals(List.of("bot", "course", "holed", "strokes", "simulations", "wallMs", "shots"), fields(json));
+        assertEquals(List.of("bot", "course", "holed", "strokes", "simulations", "wallMs", "timedOut", "shots"), fields(json));
         assertEquals("planner", json.get("bot").asText());
         assertEquals("Two-putt (no hole-in-one)", json.get("course").asText());
         assertTrue(json.get("holed").asBoolean());
@@ -55,6 +55,25 @@ class BotCommandsTest {
         JsonNode json = new ObjectMapper().readTree(r.out());
         assertFalse(json.get("holed").asBoolean());
         assertTrue(json.get("simulations").asLong() <= 3);
+    }
+
+    @Test
+    void aTimeLimitThatRunsOutEndsTheGameWithTheBestShotSoFar(@TempDir Path dir) throws IOException {
+        // Over before the bot starts: the physics guess (into the pond on the line), then the game stops.
+        CliRun r = run("solve", BENCH.resolve("pond.json").toString(), "--bot", "graph", "--time-limit", "1e-9");
+        assertEquals(0, r.code(), r.err());
+        JsonNode json = new ObjectMapper().readTree(r.out());
+        assertTrue(json.get("timedOut").asBoolean());
+        assertFalse(json.get("holed").asBoolean());
+        assertEquals(0, json.get("simulations").asLong());
+        assertEquals(1, json.get("shots").size());
+        assertEquals("water", json.get("shots").get(0).get("outcome").asText());
+        CliRun zero = run("solve", BENCH.resolve("flat-7m.json").toString(), "--time-limit", "0");
+        assertEquals(2, zero.code());
+        assertEquals("minigolf: --time-limit: must be a number of seconds > 0 and at most 1000000, got 0.0", zero.err().trim());
+        CliRun negative = run("experiment", "--suite", BENCH.toString(), "--out", dir.toString(), "--time-limit", "-1");
+        assertEquals(2, negative.code());
+        assertTrue(negative.err().startsWith("minigolf: --time-limit: must be"), negative.err());
     }
 
     @Test

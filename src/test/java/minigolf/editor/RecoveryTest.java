@@ -71,6 +71,7 @@ class RecoveryTest {
 
     /** {@code minigolf edit COURSE --frames N} with a recovery file waiting keeps it and says so. */
     @Test
+    @minigolf.render.NeedsDisplay
     void aScriptedEditKeepsTheRecoveryFileAndSaysSo() throws Exception {
         Path config = dir.resolve("config");
         Recovery earlier = new Recovery(config);

@@ -35,13 +35,22 @@ public final class Experiment {
     private final long budget;
     private final int maxStrokes;
     private final int threads;
+    /** Wall-time limit per game in seconds (NaN: none). */
+    private final double timeLimit;
 
     public Experiment(List<SuiteCourse> courses, List<String> bots, int seeds, long budget, int maxStrokes, int threads) {
+        this(courses, bots, seeds, budget, maxStrokes, threads, Double.NaN);
+    }
+
+    /** With a wall-time limit of {@code timeLimitSeconds} per game (NaN: none). */
+    public Experiment(List<SuiteCourse> courses, List<String> bots, int seeds, long budget, int maxStrokes, int threads,
+                      double timeLimitSeconds) {
         for (SuiteCourse c : courses) worlds.put(c.name(), c.world());
         this.plan = new RunPlan(courses.stream().map(SuiteCourse::name).toList(), bots, seeds);
         this.budget = budget;
         this.maxStrokes = maxStrokes;
         this.threads = threads;
+        this.timeLimit = timeLimitSeconds;
     }
 
     public RunPlan plan() {
@@ -94,7 +103,8 @@ public final class Experiment {
         Bot bot = Bots.create(run.bot());
         if (bot == null) throw new IllegalArgumentException("unknown bot " + run.bot());
         Playthrough.Result result = Playthrough.play(bot, worlds.get(run.course()), SimulationSettings.DEFAULT, maxStrokes,
-                budget, run.seed(), CancellationToken.none(), BotProgress.NONE);
+                budget, run.seed(), Double.isNaN(timeLimit) ? CancellationToken.none() : CancellationToken.withTimeLimit(timeLimit),
+                BotProgress.NONE);
         boolean holeInOne = result.holed() && result.shots().size() == 1
                 && result.shots().get(0).result().outcome() == Outcome.HOLED;
         return new RunRecord(run.course(), run.bot(), run.seed(), result.holed(), result.strokes(), holeInOne,

@@ -46,7 +46,7 @@ public final class GuidedBot extends SearchBot {
         if (points.isEmpty()) points = List.of(new double[] {hole.x(), hole.y()});
         SplittableRandom random = new SplittableRandom(request.seed());
         Shot seed = directGuess(request.world(), bx, by);
-        double seedDistance = hole.distance();
+        double holeDistance = hole.distance();
         Shot farthest = null;
         for (int k = 0; k < points.size(); k++) {
             double[] p = points.get(k);
@@ -54,12 +54,10 @@ public final class GuidedBot extends SearchBot {
             Target target = last ? hole : Target.point(bx, by, p[0], p[1], 0.3);
             if (k == 0) {
                 seed = Shot.polar(target.angle(), directGuess(request.world(), bx, by).speed()
-                        * Math.sqrt(target.distance() / Math.max(seedDistance, 1e-6)));
+                        * Math.sqrt(target.distance() / Math.max(holeDistance, 1e-6)));
             } else {
-                // The previous solution, turned to the new point and sped up for the longer way.
-                double scale = Math.sqrt(target.distance() / Math.max(seedDistance, 1e-6));
-                double turn = Math.IEEEremainder(target.angle() - Math.atan2(p[1] - by, p[0] - bx), 2 * Math.PI);
-                seed = Shot.polar(Math.atan2(seed.vy(), seed.vx()) + turn, seed.speed() * scale);
+                double[] previous = points.get(k - 1);
+                seed = nextSeed(seed, bx, by, previous[0], previous[1], target.x(), target.y());
             }
             sim.phase((last ? "hole" : "point " + (k + 1)) + " (" + name() + ")");
             Shot solution = solver == Solver.NEWTON
@@ -69,10 +67,24 @@ public final class GuidedBot extends SearchBot {
             if (last) return solution;
             farthest = solution;
             seed = solution;
-            seedDistance = target.distance();
         }
         if (farthest != null) return farthest;
         Shot best = sim.bestShot();
         return best != null ? best : directGuess(request.world(), bx, by);
+    }
+
+    /**
+     * The seed for the next critical point from the shot that reached the previous one: turned by
+     * the angle between the two points as seen from the ball, and sped up by the square root of
+     * the ratio of their distances (on flat ground the roll grows with the speed squared).
+     */
+    static Shot nextSeed(Shot reachedPrevious, double ballX, double ballY, double previousX, double previousY,
+                         double nextX, double nextY) {
+        double previousAngle = Math.atan2(previousY - ballY, previousX - ballX);
+        double nextAngle = Math.atan2(nextY - ballY, nextX - ballX);
+        double turn = Math.IEEEremainder(nextAngle - previousAngle, 2 * Math.PI);
+        double scale = Math.sqrt(Math.hypot(nextX - ballX, nextY - ballY)
+                / Math.max(Math.hypot(previousX - ballX, previousY - ballY), 1e-6));
+        return Shot.polar(Math.atan2(reachedPrevious.vy(), reachedPrevious.vx()) + turn, reachedPrevious.speed() * scale);
     }
 }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import minigolf.bot.CancellationToken;
+import minigolf.bot.SpeedGuess;
 import minigolf.bot.map.CourseGrid;
 import minigolf.physics.World;
 
@@ -106,9 +107,6 @@ final class StrokePlan {
 
     /** How far a maximum-speed shot rolls from (x0, y0) towards a point at the height of (x1, y1). */
     double reach(double x0, double y0, double x1, double y1) {
-        double v = world.physics().maxSpeed();
-        double mu = Math.max(world.friction().kinetic(x0, y0), 1e-3);
-        double drop = world.terrain().height(x0, y0) - world.terrain().height(x1, y1);
-        return v * v / (2 * world.physics().gravity() * mu) + drop / mu;
+        return SpeedGuess.maxRoll(world, x0, y0, x1, y1);
     }
 }

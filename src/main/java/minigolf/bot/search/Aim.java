@@ -2,6 +2,7 @@ package minigolf.bot.search;
 
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
+import minigolf.bot.SpeedGuess;
 import minigolf.physics.ShotResult;
 
 /**
@@ -19,12 +20,9 @@ public final class Aim {
 
     /** The shot that reached the target, or the one that came nearest (lost balls last). */
     public static Aimed at(CountingSimulator sim, Target target, int maxShots) {
-        double g = sim.world().physics().gravity();
-        double mu = sim.world().friction().kinetic(target.ballX(), target.ballY());
-        double rise = sim.world().terrain().height(target.x(), target.y())
-                - sim.world().terrain().height(target.ballX(), target.ballY());
         double angle = target.angle();
-        double speed = Math.sqrt(Math.max(2 * g * (mu * target.distance() + rise), 0.01));
+        double speed = SpeedGuess.speed(sim.world(), target.ballX(), target.ballY(), target.distance(), target.x(),
+                target.y(), 0.01);
         Shot best = null;
         double bestCost = Double.POSITIVE_INFINITY;
         for (int i = 0; i < maxShots; i++) {

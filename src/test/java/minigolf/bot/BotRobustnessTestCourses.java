@@ -1,0 +1,14 @@
+package minigolf.bot;
+
+import minigolf.physics.World;
+
+/** The robustness tests' hand-made courses, for tests in other packages. */
+public final class BotRobustnessTestCourses {
+    private BotRobustnessTestCourses() {
+    }
+
+    /** Flat, the hole inside a closed square of walls 2 m across. */
+    public static World walledIn() {
+        return BotRobustnessTest.course("walled in", "0", 0.1, 0.2, 5, 0.02135, BotRobustnessTest.BOX_ROUND_HOLE);
+    }
+}
