@@ -38,7 +38,7 @@ final class SolveCommand implements Callable<Integer> {
     long budget = 1_000_000;
 
     @Option(names = "--time-limit", paramLabel = "SECONDS",
-            description = "Wall time for the whole game (default 60): the bot then plays its best shot so far and the game stops.")
+            description = "Wall time for the whole game in seconds (default: ${DEFAULT-VALUE}): the bot then plays its best shot so far and the game stops.")
     double timeLimit = BotArguments.DEFAULT_TIME_LIMIT;
 
     @Override
