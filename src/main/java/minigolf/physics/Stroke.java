@@ -36,8 +36,14 @@ public final class Stroke {
     private static final int LOCATE_ITERATIONS = 50;
     /** Most contacts, launches and landings handled within one step; a ball wedged harder than that stops. */
     static final int MAX_PIECES = 16;
-    /** A ball leaving a surface slower than this (a hop under 1 mm: v^2 / 2g) stays on it. */
-    static final double HOP_SPEED = Math.sqrt(2 * 9.81 * 0.001);
+    /** A ball leaving a surface lower than this (m) stays on it: it hops slower than sqrt(2 g HOP_HEIGHT). */
+    static final double HOP_HEIGHT = 0.001;
+    /** The rest rule's speed (m/s): a ball whose speed passes through a minimum this low stops there. */
+    public static final double REST_SPEED = 0.001;
+    /** How far down the slope the rest rule probes the ground at a crease (m). */
+    public static final double CREASE_PROBE = 0.001;
+    /** How long before it would turn (s) a ball on ground steeper than mu_k has the rest rule decided. */
+    static final double TURN_HORIZON = 1.0 / 15;
     /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
     static final double LIFT_TOLERANCE = 1e-6;
     /** A ball stops this far short of its contact point along its path, so it never ends a step touching. */
@@ -49,6 +55,8 @@ public final class Stroke {
     private final FrictionField friction;
     private final PlayArea area;
     private final double gravity;
+    /** A hop under HOP_HEIGHT with this course's gravity. */
+    private final double hopSpeed;
     private final boolean complete;
     private final Integrator integrator;
     private final double dt;
@@ -75,6 +83,7 @@ public final class Stroke {
     // The third dimension: z is the contact point's height (h while rolling), vz its rate of change.
     private double z, vz;
     private boolean flying;
+    private Turn turn = Turn.UNDECIDED;
     /** Set by a piece of a step (a contact, a launch, a landing) when the rest of the step is to be integrated. */
     private boolean resume;
     private double pieceTime;
@@ -127,6 +136,7 @@ public final class Stroke {
         this.friction = world.friction();
         this.area = world.playArea();
         this.gravity = physics.gravity();
+        this.hopSpeed = Math.sqrt(2 * gravity * HOP_HEIGHT);
         this.complete = physics.model() == PhysicsModel.COMPLETE;
         this.integrator = settings.integrator();
         this.dt = settings.dt();
@@ -217,15 +227,21 @@ public final class Stroke {
         double a1x = ax, a1y = ay;
         if (speed > 0) {
             double decelerationAlongV = -(a1x * vx + a1y * vy) / speed;
-            if (decelerationAlongV > 0 && speed <= decelerationAlongV * tau && comesToRest(speed)) {
-                finishStep(speed / decelerationAlongV, StepKind.STOP, a1x, a1y, speed);
-                return pieceTime;
+            double slope = Math.sqrt(hx * hx + hy * hy);
+            if (decelerationAlongV > 0) {
+                double stop = stopWithin(tau, speed, decelerationAlongV, slope);
+                if (stop >= 0) {
+                    finishStep(stop, StepKind.STOP, a1x, a1y, speed);
+                    return pieceTime;
+                }
+            } else {
+                turn = Turn.UNDECIDED;
             }
             // A slow, braking ball: the friction direction would flip inside the integrator's
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
             // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
             // in a step. Such steps treat friction implicitly (see subStep).
-            double maxChange = gravity * (Math.sqrt(hx * hx + hy * hy) + muK) * tau;
+            double maxChange = gravity * (slope + muK) * tau;
             if (decelerationAlongV > 0 && speed <= maxChange) {
                 finishStep(tau, StepKind.SLOW, a1x, a1y, speed);
                 return pieceTime;
@@ -235,6 +251,36 @@ public final class Stroke {
         return pieceTime;
     }
 
+    /**
+     * The rest rule (docs/course-format.md) for a braking ball: the time within the coming tau
+     * at which it stops, or -1. On ground no steeper than mu_k its speed reaches 0 (at constant
+     * deceleration, after speed / deceleration). On steeper ground it turns round, and stops only
+     * if its lowest speed on the way is at most {@link #REST_SPEED}. That is decided once, from the
+     * tangent plane's closed form, when the ball comes within {@link #TURN_HORIZON} of turning
+     * (whatever the step, so the decision does not depend on it): nearer the turn the
+     * integrator's sideways speed loses its accuracy (it falls like (t0 - t)^0.4).
+     */
+    private double stopWithin(double tau, double speed, double deceleration, double slope) {
+        if (slope <= muK) {
+            turn = Turn.UNDECIDED;
+            return speed <= deceleration * tau ? speed / deceleration : -1;
+        }
+        if (speed > gravity * (slope + muK) * Math.max(TURN_HORIZON, 2 * tau) + REST_SPEED) {
+            turn = Turn.UNDECIDED;
+            return -1;
+        }
+        if (turn == Turn.UNDECIDED) {
+            boolean stops = TurningPoint.minimumSpeed(vx, vy, hx, hy, muK) <= REST_SPEED;
+            turn = stops ? Turn.STOPS : Turn.ROLLS_BACK;
+        }
+        // Deciding to stop, it stops at the turn, where its speed is at most REST_SPEED.
+        if (turn != Turn.STOPS || speed > deceleration * tau + REST_SPEED) return -1;
+        return Math.min(speed / deceleration, tau);
+    }
+
+    /** The rest rule's decision for a ball approaching its turn on ground steeper than mu_k. */
+    private enum Turn { UNDECIDED, STOPS, ROLLS_BACK }
+
     /** Runs the stroke to its end. */
     public ShotResult run() {
         while (outcome == null) step();
@@ -242,21 +288,16 @@ public final class Stroke {
     }
 
     /**
-     * Whether the continuous model really brings the braking ball to v = 0. Where the slope is
-     * steeper than mu_k, gravity turns a ball with any sideways motion round before it stops, and
-     * it rolls back down; only a ball moving straight up the slope stops (then mu_s decides).
+     * Whether the ground holds a ball at rest: static (or kinetic) friction is at least the slope,
+     * or, at a crease where the slope jumps (a V-shaped valley's floor, a cone's tip), the ground
+     * one probe further down the slope is no lower than friction allows.
      */
-    private boolean comesToRest(double speed) {
-        double slopeSquared = hx * hx + hy * hy;
-        if (slopeSquared <= muK * muK) return true;
-        double cross = vx * hy - vy * hx;
-        double dot = vx * hx + vy * hy;
-        return dot > 0 && Math.abs(cross) <= 1e-9 * speed * Math.sqrt(slopeSquared);
-    }
-
     private boolean staysAtRest() {
         double slope = Math.sqrt(hx * hx + hy * hy);
-        return friction.staticFriction(x, y) > slope || muK >= slope;
+        double mu = Math.max(friction.staticFriction(x, y), muK);
+        if (mu >= slope) return true;
+        double d = CREASE_PROBE / slope;
+        return terrain.height(x - hx * d, y - hy * d) >= h - mu * CREASE_PROBE;
     }
 
     private boolean isInHole(double px, double py) {
@@ -383,13 +424,86 @@ public final class Stroke {
             resume = true;
             return;
         }
+        if (!stopping && !dissipates(kind, a1x, a1y)) return;
         notifyListener();
     }
 
-    /** Whether a ball thrown from the step's start along the ground would be above the ground at its end. */
+    /** E = |v|^2/2 + g h per unit mass; the complete model counts the vertical speed grad h . v too. */
+    private double energy(double ux, double uy, double height, double gx, double gy) {
+        double along = complete ? gx * ux + gy * uy : 0;
+        return 0.5 * (ux * ux + uy * uy + along * along) + gravity * height;
+    }
+
+    /** Half the least friction work over a chord of this length from the step's start. */
+    private double halfFrictionWork(double chord) {
+        double work = pMuK * gravity * chord;
+        return 0.5 * (complete ? work / Math.sqrt(1 + phx * phx + phy * phy) : work);
+    }
+
+    /**
+     * Energy never grows (docs/course-format.md, rule 3): the committed step must have lost at
+     * least half the least friction work over its chord. Smooth ground never comes near that; a
+     * step across a crease (a V-shaped valley's floor, a cone's tip), where the start's slope
+     * pumps energy in, does. Then the speed is cut to what the energy allows, or, where even the
+     * end's height is out of reach, the step is cut where the energy runs out and the ball is
+     * momentarily at rest there. Returns false when it has rewritten the step (and notified).
+     */
+    private boolean dissipates(StepKind kind, double a1x, double a1y) {
+        double e0 = energy(pvx, pvy, ph, phx, phy);
+        double allowed = e0 - halfFrictionWork(Math.hypot(x - px, y - py));
+        double slack = 1e-9 * (Math.abs(e0) + 1);
+        double e1 = energy(vx, vy, h, hx, hy);
+        if (e1 <= allowed + slack) return true;
+        double kinetic = e1 - gravity * h;
+        double room = allowed - gravity * h;
+        if (room > 0 && kinetic > 0) {
+            double keep = Math.sqrt(room / kinetic);
+            vx *= keep;
+            vy *= keep;
+            notifyListener();
+            return false;
+        }
+        // The end is higher than the energy reaches: go back and stop where it runs out.
+        double spent = pieceTime;
+        x = px;
+        y = py;
+        vx = pvx;
+        vy = pvy;
+        h = ph;
+        hx = phx;
+        hy = phy;
+        muK = pMuK;
+        t = pt;
+        double reach = 0, beyond = spent;
+        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
+            double mid = 0.5 * (reach + beyond);
+            subStep(mid, kind, a1x, a1y);
+            double need = gravity * terrain.height(nx, ny) + halfFrictionWork(Math.hypot(nx - x, ny - y));
+            if (need <= e0) reach = mid; else beyond = mid;
+        }
+        subStep(reach, kind, a1x, a1y);
+        x = nx;
+        y = ny;
+        vx = 0;
+        vy = 0;
+        t = pt + reach;
+        pieceTime = reach;
+        sampleCurrent();
+        z = h;
+        notifyListener();
+        resume = reach < spent;
+        return false;
+    }
+
+    /**
+     * Whether the ground curved away under the ball faster than gravity can bend its path: the
+     * ground at the step's end lies further below the tangent plane at its start than gravity's
+     * pull along the ground's normal takes a ball in the same time (g tau^2 / 2, measured
+     * vertically, on any slope). A uniform slope, however steep, never launches the ball.
+     */
     private boolean takesOff(double tau) {
-        double free = ph + (phx * pvx + phy * pvy) * tau - 0.5 * gravity * tau * tau;
-        return h < free - LIFT_TOLERANCE;
+        double belowTangent = ph + phx * (x - px) + phy * (y - py) - h;
+        return belowTangent > 0.5 * gravity * tau * tau + LIFT_TOLERANCE;
     }
 
     /** Sweeps the rolling ball from (x, y) to (nx, ny); true with {@link #hit} set on a contact. */
@@ -424,7 +538,7 @@ public final class Stroke {
         }
         double norm = Math.sqrt(1 + hx * hx + hy * hy);
         double away = (wz - hx * vx - hy * vy) / norm; // speed off the ground along its normal
-        if (away > HOP_SPEED) {
+        if (away > hopSpeed) {
             vz = wz;
             flying = true;
             event(StrokeEvent.Type.COLLISION, before, Math.sqrt(vx * vx + vy * vy + wz * wz));
@@ -519,7 +633,7 @@ public final class Stroke {
         double after = Math.sqrt(vx * vx + vy * vy + vz * vz);
         event(StrokeEvent.Type.COLLISION, before, after);
         // Come to rest on top of an obstacle: the ball is unplayable there, which counts as out.
-        if (hit.nz > 0.5 && -vn * hit.restitution < HOP_SPEED && after < HOP_SPEED / hit.nz) {
+        if (hit.nz > 0.5 && -vn * hit.restitution < hopSpeed && after < hopSpeed / hit.nz) {
             finish(Outcome.OUT, x, y, z);
         }
     }
@@ -568,7 +682,7 @@ public final class Stroke {
             tz *= keep;
         }
         double up = e * vn;
-        if (up < HOP_SPEED) {
+        if (up < hopSpeed) {
             flying = false;
             vx = tx;
             vy = ty;

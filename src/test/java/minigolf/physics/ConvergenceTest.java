@@ -92,15 +92,32 @@ class ConvergenceTest {
 
     @Test
     void aBallPushedUpASlopeSteeperThanKineticFrictionTurnsBackAsInTheContinuousModel() {
-        // On the lake at r = 3.33 the slope is 0.083 > mu_k 0.08: with a little sideways motion the
-        // ball never reaches v = 0; it turns round and rolls back into the water at every step size.
+        // On the lake at r = 3.33 the slope is 0.083 > mu_k 0.08. Heading 11 degrees off straight
+        // up, the ball's speed never falls below the rest rule's 1 mm/s as it turns: it rolls back
+        // into the water at every step size.
         World lake = TestWorlds.world(TestWorlds.lake(), 0.08, 0.2, 5);
         for (double dt : new double[] {1.0 / 60, 1e-3, 1e-5}) {
             ShotResult r = new Simulator(lake, SimulationSettings.DEFAULT.withDt(dt))
-                    .simulate(-3, 0, -1.053636851465158, 0.02728162072030483);
+                    .simulate(-3, 0, -1.053636851465158, 0.2);
             assertEquals(Outcome.WATER, r.outcome(), "dt " + dt);
             assertEquals(Math.sqrt(-8 * Math.log(0.9)), Math.hypot(r.endX(), r.endY()), 1e-6);
         }
+    }
+
+    @Test
+    void aBallTurningAlmostStraightUpASlopeSteeperThanKineticFrictionStopsAtEveryStep() {
+        // 1.5 degrees off straight up the same slope: its speed at the turn is far below 1 mm/s,
+        // so it rests there (static friction 0.2 holds it), at the same point for every step size.
+        World lake = TestWorlds.world(TestWorlds.lake(), 0.08, 0.2, 5);
+        double[] reference = null;
+        for (double dt : new double[] {1e-5, 1e-3, 1.0 / 60}) {
+            ShotResult r = new Simulator(lake, SimulationSettings.DEFAULT.withDt(dt))
+                    .simulate(-3, 0, -1.053636851465158, 0.02728162072030483);
+            assertEquals(Outcome.STOPPED, r.outcome(), "dt " + dt);
+            if (reference == null) reference = new double[] {r.endX(), r.endY()};
+            assertEquals(0, Math.hypot(r.endX() - reference[0], r.endY() - reference[1]), 1e-5, "dt " + dt);
+        }
+        assertEquals(3.3322, Math.hypot(reference[0], reference[1]), 1e-4);
     }
 
     @Test
