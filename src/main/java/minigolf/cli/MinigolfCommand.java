@@ -41,7 +41,8 @@ public final class MinigolfCommand implements Callable<Integer> {
         });
         commandLine.setExecutionExceptionHandler((exception, cmd, parseResult) -> {
             if (exception instanceof UserError || exception instanceof CourseException
-                    || exception instanceof NoOpenGlException) { // a fact about the machine: one line, exit 2
+                    || exception instanceof NoOpenGlException // a fact about the machine: one line, exit 2
+                    || exception instanceof minigolf.physics.NonFiniteMotionException) { // about the course
                 err.println("minigolf: " + exception.getMessage());
                 err.flush();
                 return 2;

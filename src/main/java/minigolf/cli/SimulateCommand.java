@@ -80,6 +80,8 @@ final class SimulateCommand implements Callable<Integer> {
             result = simulator.simulate(x0, y0, velocity[0], velocity[1], vz, rows);
         } catch (IllegalArgumentException e) {
             throw new UserError("--velocity: " + e.getMessage());
+        } catch (minigolf.physics.NonFiniteMotionException e) {
+            throw new UserError(course + ": " + e.getMessage());
         }
         if (csv != null) {
             try {

@@ -42,6 +42,10 @@ public final class Stroke {
     public static final double REST_SPEED = 0.001;
     /** How far down the slope the rest rule probes the ground at a crease (m). */
     public static final double CREASE_PROBE = 0.001;
+    /** Events of one kind this close (m, per axis) to the last recorded one are merged into it. */
+    static final double SAME_PLACE = 0.001;
+    /** ... and this close in time (s). */
+    static final double SAME_TIME = 0.01;
     /** How long before it would turn (s) a ball on ground steeper than mu_k has the rest rule decided. */
     static final double TURN_HORIZON = 1.0 / 15;
     /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
@@ -297,7 +301,22 @@ public final class Stroke {
         double mu = Math.max(friction.staticFriction(x, y), muK);
         if (mu >= slope) return true;
         double d = CREASE_PROBE / slope;
-        return terrain.height(x - hx * d, y - hy * d) >= h - mu * CREASE_PROBE;
+        double ex = x - hx * d, ey = y - hy * d;
+        if (terrain.height(ex, ey) >= h - mu * CREASE_PROBE) return true;
+        return leansOnObstacle(ex, ey);
+    }
+
+    /**
+     * Whether a ball at rest, pulled down the slope towards (ex, ey), leans on an obstacle there
+     * (within the crease probe): the obstacle takes the push, and it rests against it. Without
+     * this a ball rolling from rest into a wall is cut at the wall every step and never finishes.
+     */
+    private boolean leansOnObstacle(double ex, double ey) {
+        if (scene == null || !scene.anyNear(Math.min(x, ex), Math.min(y, ey), Math.max(x, ex), Math.max(y, ey))) {
+            return false;
+        }
+        double r = ballRadius;
+        return scene.sweep(x, y, h + r, ex, ey, terrain.height(ex, ey) + r, hit, scratch);
     }
 
     private boolean isInHole(double px, double py) {
@@ -346,6 +365,7 @@ public final class Stroke {
 
     private void commitStep(double tau, StepKind kind, double a1x, double a1y, double speed0) {
         subStep(tau, kind, a1x, a1y);
+        if (!Double.isFinite(nx + ny + nvx + nvy)) throw NonFiniteMotionException.motion(x, y);
         // A stop step ends at rest, and so does a slow step in which friction held the ball.
         boolean stopping = kind == StepKind.STOP || (kind == StepKind.SLOW && nvx == 0 && nvy == 0);
         double endTau = tau;
@@ -496,14 +516,16 @@ public final class Stroke {
     }
 
     /**
-     * Whether the ground curved away under the ball faster than gravity can bend its path: the
-     * ground at the step's end lies further below the tangent plane at its start than gravity's
-     * pull along the ground's normal takes a ball in the same time (g tau^2 / 2, measured
-     * vertically, on any slope). A uniform slope, however steep, never launches the ball.
+     * Whether the ground curved away under the ball faster than gravity can bend its path: a ball
+     * thrown from the step's start along the ground, (v, grad h . v), would be above the ground
+     * after the step under gravity alone (its horizontal velocity kept). In the continuous model
+     * that is v^T H v &lt; -g. A uniform slope, however steep, never launches the ball, nor does any
+     * ground launch a ball at rest (the classic model's own acceleration down a steep slope, g
+     * times the slope, is not a speed the ball has).
      */
     private boolean takesOff(double tau) {
-        double belowTangent = ph + phx * (x - px) + phy * (y - py) - h;
-        return belowTangent > 0.5 * gravity * tau * tau + LIFT_TOLERANCE;
+        double free = ph + (phx * pvx + phy * pvy) * tau - 0.5 * gravity * tau * tau;
+        return terrain.height(px + pvx * tau, py + pvy * tau) < free - LIFT_TOLERANCE;
     }
 
     /** Sweeps the rolling ball from (x, y) to (nx, ny); true with {@link #hit} set on a contact. */
@@ -563,6 +585,7 @@ public final class Stroke {
             return 0;
         }
         flightSub(tau);
+        if (!Double.isFinite(fx + fy + fz + fvx + fvy + fvz)) throw NonFiniteMotionException.motion(x, y);
         double endTau = tau;
         boolean lands = false;
         if (fz < groundAt(fx, fy)) {
@@ -742,8 +765,20 @@ public final class Stroke {
     private void event(StrokeEvent.Type type, double speedBefore, double speedAfter) {
         if (events == null && listener == null) return;
         StrokeEvent e = new StrokeEvent(t, type, x, y, z, speedBefore, speedAfter);
-        if (events != null) events.add(e);
+        if (events != null && !repeats(e)) events.add(e);
         if (listener != null) listener.onEvent(e);
+    }
+
+    /**
+     * Whether e repeats the last recorded event: the same kind within {@link #SAME_PLACE} and
+     * {@link #SAME_TIME} of it (a ball rattling in a corner; a ball's lowest bounce takes 29 ms).
+     * Such events are merged into the first, so the list stays short.
+     */
+    private boolean repeats(StrokeEvent e) {
+        if (events.isEmpty()) return false;
+        StrokeEvent last = events.get(events.size() - 1);
+        return last.type() == e.type() && e.t() - last.t() <= SAME_TIME && Math.abs(last.x() - e.x()) <= SAME_PLACE
+                && Math.abs(last.y() - e.y()) <= SAME_PLACE && Math.abs(last.z() - e.z()) <= SAME_PLACE;
     }
 
     /** Writes the state after a sub-step of length tau from the current state into n*. */
@@ -898,6 +933,7 @@ public final class Stroke {
         h = sample[0];
         hx = sample[1];
         hy = sample[2];
+        if (!Double.isFinite(h + hx + hy)) throw NonFiniteMotionException.terrain(x, y);
         muK = friction.kinetic(x, y);
     }
 

@@ -1,0 +1,94 @@
+package minigolf.physics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * Every shot ends (issue 11): on terrains a designer can make that once trapped the ball (an
+ * editor ridge at 47 degrees, brush pits up to 80 degrees, a V-shaped valley, a cone's tip, grid
+ * steps; courses/hostile, made by tools/generate_hostile_terrains.py), thousands of seeded shots
+ * from random points all end long before the time limit, with short event lists.
+ */
+class HostileTerrainTest {
+    /** Steps of 1/60 s: 100 s of simulated time, a sixth of the guard. */
+    private static final int MAX_STEPS = 6000;
+    private static final int MAX_EVENTS = 40;
+
+    @ParameterizedTest
+    @ValueSource(strings = {"ridge", "pits", "v-valley", "cone", "terraces"})
+    void everySeededShotEndsSoonWithAShortEventList(String name) throws Exception {
+        World world = World.load(Path.of("courses/hostile/" + name + ".json"));
+        SplittableRandom random = new SplittableRandom(name.hashCode());
+        double maxSpeed = world.physics().maxSpeed();
+        int shots = 0, stopped = 0;
+        long steps = 0;
+        while (shots < 700) {
+            double x = random.nextDouble(-4.9, 4.9), y = random.nextDouble(-4.9, 4.9);
+            if (world.terrain().height(x, y) < 0) continue;
+            double angle = random.nextDouble(2 * Math.PI), speed = random.nextDouble(0.05, 1) * maxSpeed;
+            double vz = random.nextInt(4) == 0 ? random.nextDouble(0, 0.5) * speed : 0;
+            double horizontal = Math.sqrt(speed * speed - vz * vz);
+            ShotResult r = new Stroke(world, SimulationSettings.DEFAULT, x, y, horizontal * Math.cos(angle),
+                    horizontal * Math.sin(angle), vz, null, true).run();
+            String shot = name + " shot " + shots + " from (" + x + ", " + y + ") at (" + horizontal * Math.cos(angle)
+                    + ", " + horizontal * Math.sin(angle) + ", " + vz + ")";
+            assertNotEquals(Outcome.TIMEOUT, r.outcome(), shot);
+            assertTrue(r.steps() <= MAX_STEPS, shot + ": " + r.steps() + " steps");
+            assertTrue(r.events().size() <= MAX_EVENTS, shot + ": " + r.events().size() + " events");
+            assertTrue(Double.isFinite(r.endX() + r.endY() + r.endZ() + r.time()), shot);
+            if (r.outcome() == Outcome.STOPPED) stopped++;
+            steps += r.steps();
+            shots++;
+        }
+        assertTrue(stopped > 100, name + ": only " + stopped + " shots came to rest on the course");
+        assertTrue(steps / shots < 1500, name + ": " + steps / shots + " steps a shot on average");
+    }
+
+    @Test
+    void theEditorRidgeReallyIsSteeperThan45DegreesAndThePitsReach80() throws Exception {
+        assertTrue(steepest("ridge") > Math.tan(Math.toRadians(46)), "ridge " + steepest("ridge"));
+        assertTrue(steepest("pits") > Math.tan(Math.toRadians(79)), "pits " + steepest("pits"));
+        assertTrue(steepest("terraces") > Math.tan(Math.toRadians(78)), "terraces " + steepest("terraces"));
+    }
+
+    @Test
+    void aBallDroppedIntoAVValleyComesToRestOnItsFloor() throws Exception {
+        World valley = World.load(Path.of("courses/hostile/v-valley.json"));
+        ShotResult r = TestWorlds.rk4(valley).simulate(-2, 1, 0, 0);
+        assertEquals(Outcome.STOPPED, r.outcome());
+        // The crease holds the ball within the probe's reach: |x| <= 1 mm (1 + mu_s) / 2.
+        assertEquals(0, r.endX(), 0.6e-3);
+        assertEquals(1, r.endY(), 1e-9);
+        assertTrue(r.steps() < 2000, r.steps() + " steps");
+    }
+
+    @Test
+    void aBallAtRestOnASlopeSteeperThan45DegreesSlidesDownInsteadOfHoppingInPlace() throws Exception {
+        // Before: a ball at rest on the pit's 70-degree wall launched and landed every step for 600 s.
+        World pits = World.load(Path.of("courses/hostile/pits.json"));
+        ShotResult r = new Stroke(pits, SimulationSettings.DEFAULT, 1.3, -1, 0, 0, 0, null, true).run();
+        assertEquals(Outcome.STOPPED, r.outcome());
+        assertTrue(Math.hypot(r.endX() - 1, r.endY() + 1) < 0.1, "rests near the pit's floor: " + r.endX() + ", " + r.endY());
+        assertTrue(r.events().size() <= 2, "no launches: " + r.events());
+    }
+
+    private static double steepest(String name) throws Exception {
+        World world = World.load(Path.of("courses/hostile/" + name + ".json"));
+        double[] sample = new double[3];
+        double max = 0;
+        for (double x = -5; x <= 5; x += 0.01) {
+            for (double y = -5; y <= 5; y += 0.05) {
+                world.terrain().sample(x, y, sample);
+                max = Math.max(max, Math.hypot(sample[1], sample[2]));
+            }
+        }
+        return max;
+    }
+}
