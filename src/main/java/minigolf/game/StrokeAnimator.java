@@ -1,5 +1,6 @@
 package minigolf.game;
 
+import minigolf.physics.NonFiniteMotionException;
 import minigolf.physics.Stroke;
 
 /**
@@ -43,7 +44,13 @@ public final class StrokeAnimator {
             prevY = curY;
             prevVx = curVx;
             prevVy = curVy;
-            stroke.step();
+            try {
+                stroke.step();
+            } catch (NonFiniteMotionException e) {
+                // A course whose terrain is not finite somewhere between the loader's samples.
+                System.err.println("minigolf: " + e.getMessage() + "; the ball is out of play");
+                stroke.endOutOfPlay();
+            }
             curX = stroke.isFinished() ? stroke.result().endX() : stroke.x();
             curY = stroke.isFinished() ? stroke.result().endY() : stroke.y();
             curVx = stroke.vx();

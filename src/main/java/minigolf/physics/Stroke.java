@@ -285,6 +285,15 @@ public final class Stroke {
     /** The rest rule's decision for a ball approaching its turn on ground steeper than mu_k. */
     private enum Turn { UNDECIDED, STOPS, ROLLS_BACK }
 
+    /**
+     * Ends the stroke as out of play where the ball is: for the game, when a step has thrown
+     * {@link NonFiniteMotionException} (the ball reached terrain that is not finite), so the
+     * player gets the ball back with a penalty instead of a crash.
+     */
+    public void endOutOfPlay() {
+        if (outcome == null) finish(Outcome.OUT, x, y, z);
+    }
+
     /** Runs the stroke to its end. */
     public ShotResult run() {
         while (outcome == null) step();

@@ -44,6 +44,22 @@ class CommandLineTest {
     }
 
     @Test
+    void simulateOnTerrainThatIsNotFiniteOrFrictionThatOverflowsExitsTwoWithOneLine(@TempDir Path dir) throws IOException {
+        String flat = java.nio.file.Files.readString(Path.of(course("flat.json")));
+        Path nan = dir.resolve("nan.json"), huge = dir.resolve("huge.json");
+        java.nio.file.Files.writeString(nan, flat.replace("\"height\": \"0.1\"", "\"height\": \"sqrt(abs(x - 0.1) - 0.01) + 1\""));
+        java.nio.file.Files.writeString(huge, flat.replaceAll("\"kineticFriction\": [0-9.]+", "\"kineticFriction\": 1e308")
+                .replaceAll("\"staticFriction\": [0-9.]+", "\"staticFriction\": 1e308"));
+        for (Path file : new Path[] {nan, huge}) {
+            CliRun r = run("simulate", file.toString(), "--velocity", "4,0");
+            assertEquals(2, r.code(), r.out() + r.err());
+            assertEquals("", r.out(), "no JSON with NaN or Infinity");
+            assertEquals(1, r.err().strip().lines().count(), r.err());
+            assertTrue(r.err().startsWith("minigolf: " + file + ": "), r.err());
+        }
+    }
+
+    @Test
     void simulateOnTheLakeAimedAtTheCentreEndsInWater() throws IOException {
         CliRun r = run("simulate", course("lake.json"), "--velocity", "3,0");
         assertEquals(0, r.code(), r.err());

@@ -51,4 +51,25 @@ class StrokeAnimatorTest {
         assertEquals(StrokeAnimator.MAX_STEPS_PER_FRAME, a.advance(10, 1));
         assertEquals(2, a.advance(2 * SIM.dt() + 1e-9, 1), "the backlog was dropped");
     }
+
+    @Test
+    void aBallReachingTerrainThatIsNotFiniteIsOutOfPlayInsteadOfACrash() throws Exception {
+        // sqrt of a negative number for |x - 0.1| < 0.01: between the loader's 33 x 33 samples.
+        String json = new String(java.nio.file.Files.readAllBytes(java.nio.file.Path.of("courses/flat.json")))
+                .replace("\"height\": \"0.1\"", "\"height\": \"sqrt(abs(x - 0.1) - 0.01) + 1\"");
+        minigolf.physics.World world = minigolf.physics.World.parse(json, "nan.json");
+        StrokeAnimator a = new StrokeAnimator(new Stroke(world, SIM, -3, 0, 4, 0, null), SIM.dt());
+        java.io.PrintStream stderr = System.err;
+        java.io.ByteArrayOutputStream said = new java.io.ByteArrayOutputStream();
+        System.setErr(new java.io.PrintStream(said, true));
+        try {
+            for (int frame = 0; frame < 600 && !a.isFinished(); frame++) a.advance(1 / 60.0, 1);
+        } finally {
+            System.setErr(stderr);
+        }
+        assertTrue(a.isFinished());
+        assertEquals(minigolf.physics.Outcome.OUT, a.stroke().result().outcome());
+        assertTrue(Double.isFinite(a.x()) && Double.isFinite(a.y()));
+        assertTrue(said.toString().contains("not finite") || said.toString().contains("overflows"), said.toString());
+    }
 }
