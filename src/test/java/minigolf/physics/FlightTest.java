@@ -11,6 +11,7 @@ import minigolf.course.Obstacle;
 import minigolf.course.PhysicsModel;
 import minigolf.course.Vec2;
 import minigolf.terrain.Terrain;
+import minigolf.course.PhysicsSettings;
 import org.junit.jupiter.api.Test;
 
 /** Chips, drag, bounces, take-offs: closed forms and invariants. */
@@ -66,6 +67,22 @@ class FlightTest {
             assertEquals(0.1, r.endZ(), 1e-12);
             assertEquals(StrokeEvent.Type.LAND, r.events().get(r.events().size() - 2).type());
         }
+    }
+
+    @Test
+    void onTheMoonABallKeepsBouncingUntilItsHopIsUnderAMillimetreOfMoonGravity() {
+        // e = 0.5, no drag, vz 1 m/s: bounces leave at 0.5, 0.25, 0.125, 0.0625 m/s. A 1 mm hop is
+        // 0.057 m/s at g = 1.62 (the course's gravity), so all four fly; with Earth's 0.14 m/s
+        // threshold the ball would settle after two.
+        World earth = flat(0, 0.5);
+        PhysicsSettings p = earth.physics();
+        World moon = new World(earth.course().withPhysics(new PhysicsSettings(1.62, p.kineticFriction(),
+                p.staticFriction(), p.maxSpeed(), p.model(), p.ballRadius(), p.ballMass(), 0, p.airDensity(), 0.5)),
+                earth.terrain());
+        ShotResult r = TestWorlds.rk4(moon).simulate(1, 2, 0, 0, 1, null);
+        assertEquals(4, r.events().stream().filter(e -> e.type() == StrokeEvent.Type.BOUNCE).count(), r.events().toString());
+        assertEquals(2, TestWorlds.rk4(earth).simulate(1, 2, 0, 0, 1, null).events().stream()
+                .filter(e -> e.type() == StrokeEvent.Type.BOUNCE).count());
     }
 
     @Test
