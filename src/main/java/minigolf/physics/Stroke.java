@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import java.util.ArrayList;
 import java.util.List;
 import minigolf.collision.CollisionScene;
 import minigolf.collision.Hit;
@@ -15,14 +14,12 @@ import minigolf.terrain.Terrain;
  * 60 Hz to animate it; bots and the command line run it to the end through {@link Simulator}:
  * both use exactly this code.
  *
- * <p>Equations (see docs/course-format.md): classic a = -g grad h - mu_k g v/|v|; complete
- * a = -g grad h/D - mu_k g/sqrt(D) * v/sqrt(|v|^2 + (grad h . v)^2) with D = 1 + |grad h|^2.
- *
- * <p>Stopping is exact: when the ball would stop within the coming step (|v| &lt;= a_par dt,
- * a_par the deceleration along v) the step is finished analytically at constant acceleration
- * and v is set to 0. At rest the ball stays if mu_s &gt; |grad h| (or kinetic friction alone
- * holds it), else it starts rolling down the slope. Water entry and leaving the bounds are
- * located inside the step by bisection on the integrator's own sub-step.
+ * <p>The pieces: {@link RollingStep} integrates the rolling equations (Euler, RK2, RK4, the
+ * analytic stop, the slow implicit step), {@link FlightStep} a flying ball, {@link RestRule}
+ * decides when the ball stops and whether it stays, {@link EventLog} keeps the events. This class
+ * owns the state and strings them together: hazards (water, bounds) located inside a step by
+ * bisection, zone edges, the hole rules, obstacle contacts, take-off and landing, and the rule that
+ * no rolling step gains energy.
  *
  * <p>Obstacles and flight (docs/physics.md): the state is 3-D, (x, y, z) being the ball's contact
  * point. Each step's path (a chord from start to end) is swept with the ball's sphere against the
@@ -38,16 +35,6 @@ public final class Stroke {
     static final int MAX_PIECES = 16;
     /** A ball leaving a surface lower than this (m) stays on it: it hops slower than sqrt(2 g HOP_HEIGHT). */
     static final double HOP_HEIGHT = 0.001;
-    /** The rest rule's speed (m/s): a ball whose speed passes through a minimum this low stops there. */
-    public static final double REST_SPEED = 0.001;
-    /** How far down the slope the rest rule probes the ground at a crease (m). */
-    public static final double CREASE_PROBE = 0.001;
-    /** Events of one kind this close (m, per axis) to the last recorded one are merged into it. */
-    static final double SAME_PLACE = 0.001;
-    /** ... and this close in time (s). */
-    static final double SAME_TIME = 0.01;
-    /** How long before it would turn (s) a ball on ground steeper than mu_k has the rest rule decided. */
-    static final double TURN_HORIZON = 1.0 / 15;
     /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
     static final double LIFT_TOLERANCE = 1e-6;
     /** A ball stops this far short of its contact point along its path, so it never ends a step touching. */
@@ -62,7 +49,9 @@ public final class Stroke {
     /** A hop under HOP_HEIGHT with this course's gravity. */
     private final double hopSpeed;
     private final boolean complete;
-    private final Integrator integrator;
+    private final RollingStep rolling;
+    private final FlightStep flight;
+    private final RestRule rest;
     private final double dt;
     private final double maxTime;
     private final double holeX;
@@ -74,9 +63,8 @@ public final class Stroke {
     private final boolean zoned;
     private final CollisionScene scene;
     private final double ballRadius;
-    private final double drag;
     private final Double groundRestitution;
-    private final List<StrokeEvent> events;
+    private final EventLog events;
     private final Hit hit = new Hit();
     private final double[] scratch = new double[3];
 
@@ -87,7 +75,6 @@ public final class Stroke {
     // The third dimension: z is the contact point's height (h while rolling), vz its rate of change.
     private double z, vz;
     private boolean flying;
-    private Turn turn = Turn.UNDECIDED;
     /** Set by a piece of a step (a contact, a launch, a landing) when the rest of the step is to be integrated. */
     private boolean resume;
     private double pieceTime;
@@ -100,11 +87,8 @@ public final class Stroke {
     // Flight scratch: the state a flight sub-step produced.
     private double fx, fy, fz, fvx, fvy, fvz;
 
-    // Scratch: the last acceleration and the state a sub-step produced.
+    // Scratch: the terrain sample and the state a sub-step produced.
     private final double[] sample = new double[3];
-    private double ax, ay;
-    /** While not NaN, the kinetic friction every stage uses (a step that ends at a zone's edge). */
-    private double frozenMuK = Double.NaN;
     private double nx, ny, nvx, nvy;
 
     /**
@@ -142,7 +126,9 @@ public final class Stroke {
         this.gravity = physics.gravity();
         this.hopSpeed = Math.sqrt(2 * gravity * HOP_HEIGHT);
         this.complete = physics.model() == PhysicsModel.COMPLETE;
-        this.integrator = settings.integrator();
+        this.rolling = new RollingStep(terrain, friction, gravity, complete, settings.integrator());
+        this.flight = new FlightStep(terrain, gravity, physics.dragFactor());
+        this.rest = new RestRule(world);
         this.dt = settings.dt();
         this.maxTime = settings.maxTime();
         Hole hole = world.hole();
@@ -155,9 +141,8 @@ public final class Stroke {
         this.zoned = friction.hasZones();
         this.scene = world.obstacles();
         this.ballRadius = physics.ballRadius();
-        this.drag = physics.dragFactor();
         this.groundRestitution = physics.groundRestitution();
-        this.events = recordEvents ? new ArrayList<>() : null;
+        this.events = recordEvents ? new EventLog() : null;
         this.x = x0;
         this.y = y0;
         this.vx = vx0;
@@ -182,7 +167,7 @@ public final class Stroke {
     /** The result; only valid once {@link #isFinished()}. */
     public ShotResult result() {
         if (outcome == null) throw new IllegalStateException("the stroke has not finished");
-        return new ShotResult(outcome, endX, endY, t, steps, endZ, events == null ? List.of() : events);
+        return new ShotResult(outcome, endX, endY, t, steps, endZ, events == null ? List.of() : events.list());
     }
 
     public double x() { return x; }
@@ -222,24 +207,24 @@ public final class Stroke {
             return 0;
         }
         double speed = Math.sqrt(vx * vx + vy * vy);
-        if (speed == 0 && staysAtRest()) {
+        if (speed == 0 && rest.holds(x, y, h, hx, hy, muK)) {
             finish(isInHole(x, y) ? Outcome.HOLED : Outcome.STOPPED, x, y, z);
             return 0;
         }
         pieceTime = tau;
-        acceleration(hx, hy, muK, vx, vy);
-        double a1x = ax, a1y = ay;
+        rolling.acceleration(hx, hy, muK, vx, vy);
+        double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
             double decelerationAlongV = -(a1x * vx + a1y * vy) / speed;
             double slope = Math.sqrt(hx * hx + hy * hy);
             if (decelerationAlongV > 0) {
-                double stop = stopWithin(tau, speed, decelerationAlongV, slope);
+                double stop = rest.stopWithin(tau, speed, decelerationAlongV, slope, vx, vy, hx, hy, muK);
                 if (stop >= 0) {
-                    finishStep(stop, StepKind.STOP, a1x, a1y, speed);
+                    finishStep(stop, RollingStep.Kind.STOP, a1x, a1y, speed);
                     return pieceTime;
                 }
             } else {
-                turn = Turn.UNDECIDED;
+                rest.forget();
             }
             // A slow, braking ball: the friction direction would flip inside the integrator's
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
@@ -247,43 +232,13 @@ public final class Stroke {
             // in a step. Such steps treat friction implicitly (see subStep).
             double maxChange = gravity * (slope + muK) * tau;
             if (decelerationAlongV > 0 && speed <= maxChange) {
-                finishStep(tau, StepKind.SLOW, a1x, a1y, speed);
+                finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
                 return pieceTime;
             }
         }
-        finishStep(tau, StepKind.INTEGRATOR, a1x, a1y, speed);
+        finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
         return pieceTime;
     }
-
-    /**
-     * The rest rule (docs/course-format.md) for a braking ball: the time within the coming tau
-     * at which it stops, or -1. On ground no steeper than mu_k its speed reaches 0 (at constant
-     * deceleration, after speed / deceleration). On steeper ground it turns round, and stops only
-     * if its lowest speed on the way is at most {@link #REST_SPEED}. That is decided once, from the
-     * tangent plane's closed form, when the ball comes within {@link #TURN_HORIZON} of turning
-     * (whatever the step, so the decision does not depend on it): nearer the turn the
-     * integrator's sideways speed loses its accuracy (it falls like (t0 - t)^0.4).
-     */
-    private double stopWithin(double tau, double speed, double deceleration, double slope) {
-        if (slope <= muK) {
-            turn = Turn.UNDECIDED;
-            return speed <= deceleration * tau ? speed / deceleration : -1;
-        }
-        if (speed > gravity * (slope + muK) * Math.max(TURN_HORIZON, 2 * tau) + REST_SPEED) {
-            turn = Turn.UNDECIDED;
-            return -1;
-        }
-        if (turn == Turn.UNDECIDED) {
-            boolean stops = TurningPoint.minimumSpeed(vx, vy, hx, hy, muK) <= REST_SPEED;
-            turn = stops ? Turn.STOPS : Turn.ROLLS_BACK;
-        }
-        // Deciding to stop, it stops at the turn, where its speed is at most REST_SPEED.
-        if (turn != Turn.STOPS || speed > deceleration * tau + REST_SPEED) return -1;
-        return Math.min(speed / deceleration, tau);
-    }
-
-    /** The rest rule's decision for a ball approaching its turn on ground steeper than mu_k. */
-    private enum Turn { UNDECIDED, STOPS, ROLLS_BACK }
 
     /**
      * Ends the stroke as out of play where the ball is: for the game, when a step has thrown
@@ -300,56 +255,18 @@ public final class Stroke {
         return result();
     }
 
-    /**
-     * Whether the ground holds a ball at rest: static (or kinetic) friction is at least the slope,
-     * or, at a crease where the slope jumps (a V-shaped valley's floor, a cone's tip), the ground
-     * one probe further down the slope is no lower than friction allows.
-     */
-    private boolean staysAtRest() {
-        double slope = Math.sqrt(hx * hx + hy * hy);
-        double mu = Math.max(friction.staticFriction(x, y), muK);
-        if (mu >= slope) return true;
-        double d = CREASE_PROBE / slope;
-        double ex = x - hx * d, ey = y - hy * d;
-        if (terrain.height(ex, ey) >= h - mu * CREASE_PROBE) return true;
-        return leansOnObstacle(ex, ey);
-    }
-
-    /**
-     * Whether a ball at rest, pulled down the slope towards (ex, ey), leans on an obstacle there
-     * (within the crease probe): the obstacle takes the push, and it rests against it. Without
-     * this a ball rolling from rest into a wall is cut at the wall every step and never finishes.
-     */
-    private boolean leansOnObstacle(double ex, double ey) {
-        if (scene == null || !scene.anyNear(Math.min(x, ex), Math.min(y, ey), Math.max(x, ex), Math.max(y, ey))) {
-            return false;
-        }
-        double r = ballRadius;
-        return scene.sweep(x, y, h + r, ex, ey, terrain.height(ex, ey) + r, hit, scratch);
-    }
-
     private boolean isInHole(double px, double py) {
         double dx = px - holeX, dy = py - holeY;
         return dx * dx + dy * dy <= holeRadius * holeRadius;
     }
 
-    /** How a step advances the ball. */
-    private enum StepKind {
-        /** The chosen integrator (Euler, RK2, RK4). */
-        INTEGRATOR,
-        /** The analytic last piece of motion at constant acceleration; it ends with v = 0. */
-        STOP,
-        /** A slow braking ball: gravity explicit, friction implicit (never flips, never chatters). */
-        SLOW
-    }
-
     /** Completes a step of length tau of the given kind, with events, and commits it. */
-    private void finishStep(double tau, StepKind kind, double a1x, double a1y, double speed0) {
+    private void finishStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         try {
-            if (zoned && kind == StepKind.INTEGRATOR) tau = stopAtZoneEdge(tau, a1x, a1y);
+            if (zoned && kind == RollingStep.Kind.INTEGRATOR) tau = stopAtZoneEdge(tau, a1x, a1y);
             commitStep(tau, kind, a1x, a1y, speed0);
         } finally {
-            frozenMuK = Double.NaN;
+            rolling.frozenMuK = Double.NaN;
         }
     }
 
@@ -360,23 +277,23 @@ public final class Stroke {
      */
     private double stopAtZoneEdge(double tau, double a1x, double a1y) {
         int zone = friction.zoneAt(x, y);
-        subStep(tau, StepKind.INTEGRATOR, a1x, a1y);
+        subStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
         if (friction.zoneAt(nx, ny) == zone) return tau;
-        frozenMuK = muK;
+        rolling.frozenMuK = muK;
         double inside = 0, beyond = tau;
         for (int k = 0; k < LOCATE_ITERATIONS; k++) {
             double mid = 0.5 * (inside + beyond);
-            subStep(mid, StepKind.INTEGRATOR, a1x, a1y);
+            subStep(mid, RollingStep.Kind.INTEGRATOR, a1x, a1y);
             if (friction.zoneAt(nx, ny) == zone) inside = mid; else beyond = mid;
         }
         return beyond;
     }
 
-    private void commitStep(double tau, StepKind kind, double a1x, double a1y, double speed0) {
+    private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         subStep(tau, kind, a1x, a1y);
         if (!Double.isFinite(nx + ny + nvx + nvy)) throw NonFiniteMotionException.motion(x, y);
         // A stop step ends at rest, and so does a slow step in which friction held the ball.
-        boolean stopping = kind == StepKind.STOP || (kind == StepKind.SLOW && nvx == 0 && nvy == 0);
+        boolean stopping = kind == RollingStep.Kind.STOP || (kind == RollingStep.Kind.SLOW && nvx == 0 && nvy == 0);
         double endTau = tau;
         Outcome event = hazardAt(nx, ny);
         if (event != null) {
@@ -433,7 +350,7 @@ public final class Stroke {
             resume = true;
             return;
         }
-        if (kind == StepKind.INTEGRATOR && takesOff(endTau)) {
+        if (kind == RollingStep.Kind.INTEGRATOR && takesOff(endTau)) {
             // The ground fell away faster than gravity can pull the ball down: it flew this step.
             x = px;
             y = py;
@@ -477,7 +394,7 @@ public final class Stroke {
      * end's height is out of reach, the step is cut where the energy runs out and the ball is
      * momentarily at rest there. Returns false when it has rewritten the step (and notified).
      */
-    private boolean dissipates(StepKind kind, double a1x, double a1y) {
+    private boolean dissipates(RollingStep.Kind kind, double a1x, double a1y) {
         double e0 = energy(pvx, pvy, ph, phx, phy);
         double allowed = e0 - halfFrictionWork(Math.hypot(x - px, y - py));
         double slack = 1e-9 * (Math.abs(e0) + 1);
@@ -597,8 +514,9 @@ public final class Stroke {
         if (!Double.isFinite(fx + fy + fz + fvx + fvy + fvz)) throw NonFiniteMotionException.motion(x, y);
         double endTau = tau;
         boolean lands = false;
-        if (fz < groundAt(fx, fy)) {
-            endTau = locateLanding(tau);
+        if (fz < flight.groundAt(fx, fy)) {
+            flight.from(x, y, z, vx, vy, vz);
+            endTau = flight.locateLanding(tau);
             flightSub(endTau);
             lands = true;
         }
@@ -635,22 +553,6 @@ public final class Stroke {
         }
         if (outcome == null) notifyListener();
         return endTau;
-    }
-
-    /** The surface a flying ball comes down on: the terrain, or the water's surface (z = 0) above it. */
-    private double groundAt(double px, double py) {
-        return Math.max(terrain.height(px, py), 0);
-    }
-
-    /** The first sub-step length at which the ball is below the ground, found by bisection. */
-    private double locateLanding(double tau) {
-        double above = 0, below = tau;
-        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
-            double mid = 0.5 * (above + below);
-            flightSub(mid);
-            if (fz < groundAt(fx, fy)) below = mid; else above = mid;
-        }
-        return below;
     }
 
     private void bounceOffObstacleInFlight() {
@@ -735,36 +637,16 @@ public final class Stroke {
         return Math.max(0, Math.min(1, 0.510 - 0.0375 * v + 0.000903 * v * v));
     }
 
-    /** RK4 flight sub-step of length tau from the current state into f*: gravity and quadratic drag. */
+    /** A flight sub-step of length tau from the current state into f*. */
     private void flightSub(double tau) {
-        double half = 0.5 * tau;
-        flightAcceleration(vx, vy, vz);
-        double k1x = ax, k1y = ay, k1z = azScratch;
-        double v2x = vx + half * k1x, v2y = vy + half * k1y, v2z = vz + half * k1z;
-        flightAcceleration(v2x, v2y, v2z);
-        double k2x = ax, k2y = ay, k2z = azScratch;
-        double v3x = vx + half * k2x, v3y = vy + half * k2y, v3z = vz + half * k2z;
-        flightAcceleration(v3x, v3y, v3z);
-        double k3x = ax, k3y = ay, k3z = azScratch;
-        double v4x = vx + tau * k3x, v4y = vy + tau * k3y, v4z = vz + tau * k3z;
-        flightAcceleration(v4x, v4y, v4z);
-        double sixth = tau / 6;
-        fx = x + sixth * (vx + 2 * v2x + 2 * v3x + v4x);
-        fy = y + sixth * (vy + 2 * v2y + 2 * v3y + v4y);
-        fz = z + sixth * (vz + 2 * v2z + 2 * v3z + v4z);
-        fvx = vx + sixth * (k1x + 2 * k2x + 2 * k3x + ax);
-        fvy = vy + sixth * (k1y + 2 * k2y + 2 * k3y + ay);
-        fvz = vz + sixth * (k1z + 2 * k2z + 2 * k3z + azScratch);
-    }
-
-    private double azScratch;
-
-    /** a = -g z - k |v| v. */
-    private void flightAcceleration(double ux, double uy, double uz) {
-        double k = drag * Math.sqrt(ux * ux + uy * uy + uz * uz);
-        ax = -k * ux;
-        ay = -k * uy;
-        azScratch = -gravity - k * uz;
+        flight.from(x, y, z, vx, vy, vz);
+        flight.advance(tau);
+        fx = flight.fx;
+        fy = flight.fy;
+        fz = flight.fz;
+        fvx = flight.fvx;
+        fvy = flight.fvy;
+        fvz = flight.fvz;
     }
 
     private void notifyListener() {
@@ -774,99 +656,19 @@ public final class Stroke {
     private void event(StrokeEvent.Type type, double speedBefore, double speedAfter) {
         if (events == null && listener == null) return;
         StrokeEvent e = new StrokeEvent(t, type, x, y, z, speedBefore, speedAfter);
-        if (events != null && !repeats(e)) events.add(e);
+        if (events != null) events.add(e);
         if (listener != null) listener.onEvent(e);
     }
 
-    /**
-     * Whether e repeats the last recorded event: the same kind within {@link #SAME_PLACE} and
-     * {@link #SAME_TIME} of it (a ball rattling in a corner; a ball's lowest bounce takes 29 ms).
-     * Such events are merged into the first, so the list stays short.
-     */
-    private boolean repeats(StrokeEvent e) {
-        if (events.isEmpty()) return false;
-        StrokeEvent last = events.get(events.size() - 1);
-        return last.type() == e.type() && e.t() - last.t() <= SAME_TIME && Math.abs(last.x() - e.x()) <= SAME_PLACE
-                && Math.abs(last.y() - e.y()) <= SAME_PLACE && Math.abs(last.z() - e.z()) <= SAME_PLACE;
-    }
 
     /** Writes the state after a sub-step of length tau from the current state into n*. */
-    private void subStep(double tau, StepKind kind, double a1x, double a1y) {
-        if (kind == StepKind.STOP) {
-            nx = x + vx * tau + 0.5 * a1x * tau * tau;
-            ny = y + vy * tau + 0.5 * a1y * tau * tau;
-            nvx = vx + a1x * tau;
-            nvy = vy + a1y * tau;
-            return;
-        }
-        if (kind == StepKind.SLOW) {
-            slowSubStep(tau);
-            return;
-        }
-        switch (integrator) {
-            case EULER -> {
-                nx = x + tau * vx;
-                ny = y + tau * vy;
-                nvx = vx + tau * a1x;
-                nvy = vy + tau * a1y;
-            }
-            case RK2 -> {
-                double half = 0.5 * tau;
-                double mvx = vx + half * a1x, mvy = vy + half * a1y;
-                accelerationAt(x + half * vx, y + half * vy, mvx, mvy);
-                nx = x + tau * mvx;
-                ny = y + tau * mvy;
-                nvx = vx + tau * ax;
-                nvy = vy + tau * ay;
-            }
-            case RK4 -> {
-                double half = 0.5 * tau;
-                double v2x = vx + half * a1x, v2y = vy + half * a1y;
-                accelerationAt(x + half * vx, y + half * vy, v2x, v2y);
-                double a2x = ax, a2y = ay;
-                double v3x = vx + half * a2x, v3y = vy + half * a2y;
-                accelerationAt(x + half * v2x, y + half * v2y, v3x, v3y);
-                double a3x = ax, a3y = ay;
-                double v4x = vx + tau * a3x, v4y = vy + tau * a3y;
-                accelerationAt(x + tau * v3x, y + tau * v3y, v4x, v4y);
-                double sixth = tau / 6;
-                nx = x + sixth * (vx + 2 * v2x + 2 * v3x + v4x);
-                ny = y + sixth * (vy + 2 * v2y + 2 * v3y + v4y);
-                nvx = vx + sixth * (a1x + 2 * a2x + 2 * a3x + ax);
-                nvy = vy + sixth * (a1y + 2 * a2y + 2 * a3y + ay);
-            }
-        }
-    }
-
-    /**
-     * Semi-implicit step for a slow ball: w = v + tau G (gravity's part G of the acceleration),
-     * then friction of magnitude F along -v_end, which shortens w by tau F or stops the ball if
-     * |w| &lt;= tau F (Coulomb friction as physics engines treat it). Position by the trapezoid rule.
-     */
-    private void slowSubStep(double tau) {
-        double normalisation = complete ? 1 + hx * hx + hy * hy : 1;
-        double gx = -gravity * hx / normalisation, gy = -gravity * hy / normalisation;
-        double wx = vx + tau * gx, wy = vy + tau * gy;
-        double w = Math.sqrt(wx * wx + wy * wy);
-        double friction = muK * gravity;
-        if (complete) {
-            double along = w > 0 ? (hx * wx + hy * wy) / w : Math.sqrt(normalisation - 1);
-            friction /= Math.sqrt(normalisation) * Math.sqrt(1 + along * along);
-        }
-        if (w > tau * friction) {
-            double keep = 1 - tau * friction / w;
-            nvx = wx * keep;
-            nvy = wy * keep;
-        } else {
-            double pull = Math.sqrt(gx * gx + gy * gy);
-            // Friction stops the ball within the step, unless the slope is steeper than kinetic
-            // friction can hold: then the ball turns round and starts back down it.
-            double net = pull > friction ? 0.5 * tau * (pull - friction) / pull : 0;
-            nvx = gx * net;
-            nvy = gy * net;
-        }
-        nx = x + 0.5 * tau * (vx + nvx);
-        ny = y + 0.5 * tau * (vy + nvy);
+    private void subStep(double tau, RollingStep.Kind kind, double a1x, double a1y) {
+        rolling.from(x, y, vx, vy, hx, hy, muK);
+        rolling.advance(tau, kind, a1x, a1y);
+        nx = rolling.nx;
+        ny = rolling.ny;
+        nvx = rolling.nvx;
+        nvy = rolling.nvy;
     }
 
     private Outcome hazardAt(double px, double py) {
@@ -876,7 +678,7 @@ public final class Stroke {
     }
 
     /** The first sub-step length at which the ball is in a hazard, found by bisection. */
-    private double locateHazard(double tau, StepKind kind, double a1x, double a1y) {
+    private double locateHazard(double tau, RollingStep.Kind kind, double a1x, double a1y) {
         double safe = 0, hazard = tau;
         for (int k = 0; k < LOCATE_ITERATIONS; k++) {
             double mid = 0.5 * (safe + hazard);
@@ -946,33 +748,4 @@ public final class Stroke {
         muK = friction.kinetic(x, y);
     }
 
-    private void accelerationAt(double px, double py, double pvx, double pvy) {
-        terrain.sample(px, py, sample);
-        double mu = Double.isNaN(frozenMuK) ? friction.kinetic(px, py) : frozenMuK;
-        acceleration(sample[1], sample[2], mu, pvx, pvy);
-    }
-
-    /** The equations of motion: writes (ax, ay) for slope (gx, gy), friction mu and velocity v. */
-    private void acceleration(double gx, double gy, double mu, double pvx, double pvy) {
-        double speedSquared = pvx * pvx + pvy * pvy;
-        double normalisation = complete ? 1 + gx * gx + gy * gy : 1;
-        if (speedSquared == 0) {
-            // Starting from rest: the limit of the moving equations as v -> 0 along -grad h.
-            double slope = Math.sqrt(gx * gx + gy * gy);
-            double factor = slope > mu ? -gravity * (1 - mu / slope) / normalisation : 0;
-            ax = factor * gx;
-            ay = factor * gy;
-            return;
-        }
-        if (complete) {
-            double along = gx * pvx + gy * pvy;
-            double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
-            ax = -gravity * gx / normalisation - frictionScale * pvx;
-            ay = -gravity * gy / normalisation - frictionScale * pvy;
-        } else {
-            double frictionScale = mu * gravity / Math.sqrt(speedSquared);
-            ax = -gravity * gx - frictionScale * pvx;
-            ay = -gravity * gy - frictionScale * pvy;
-        }
-    }
 }

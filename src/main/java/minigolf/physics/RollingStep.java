@@ -1,0 +1,165 @@
+package minigolf.physics;
+
+import minigolf.terrain.Terrain;
+
+/**
+ * The rolling equations and one sub-step of them, from a start state into (nx, ny, nvx, nvy).
+ * Equations (docs/course-format.md): classic a = -g grad h - mu_k g v/|v|; complete
+ * a = -g grad h/D - mu_k g/sqrt(D) * v/sqrt(|v|^2 + (grad h . v)^2) with D = 1 + |grad h|^2.
+ * {@link Stroke} owns the ball's state; this class only integrates.
+ */
+final class RollingStep {
+    /** How a step advances the ball. */
+    enum Kind {
+        /** The chosen integrator (Euler, RK2, RK4). */
+        INTEGRATOR,
+        /** The analytic last piece of motion at constant acceleration; it ends with v = 0. */
+        STOP,
+        /** A slow braking ball: gravity explicit, friction implicit (never flips, never chatters). */
+        SLOW
+    }
+
+    private final Terrain terrain;
+    private final FrictionField friction;
+    private final double gravity;
+    private final boolean complete;
+    private final Integrator integrator;
+    private final double[] sample = new double[3];
+
+    // The start state of the sub-steps: position, velocity, slope and kinetic friction there.
+    private double x, y, vx, vy, hx, hy, muK;
+    /** While not NaN, the kinetic friction every stage uses (a step that ends at a zone's edge). */
+    double frozenMuK = Double.NaN;
+    /** The last acceleration computed. */
+    double ax, ay;
+    /** The state a sub-step produced. */
+    double nx, ny, nvx, nvy;
+
+    RollingStep(Terrain terrain, FrictionField friction, double gravity, boolean complete, Integrator integrator) {
+        this.terrain = terrain;
+        this.friction = friction;
+        this.gravity = gravity;
+        this.complete = complete;
+        this.integrator = integrator;
+    }
+
+    /** Sets the start state of the following sub-steps. */
+    void from(double x, double y, double vx, double vy, double hx, double hy, double muK) {
+        this.x = x;
+        this.y = y;
+        this.vx = vx;
+        this.vy = vy;
+        this.hx = hx;
+        this.hy = hy;
+        this.muK = muK;
+    }
+
+    /** Writes the state after a sub-step of length tau from the current state into n*. */
+    void advance(double tau, Kind kind, double a1x, double a1y) {
+        if (kind == Kind.STOP) {
+            nx = x + vx * tau + 0.5 * a1x * tau * tau;
+            ny = y + vy * tau + 0.5 * a1y * tau * tau;
+            nvx = vx + a1x * tau;
+            nvy = vy + a1y * tau;
+            return;
+        }
+        if (kind == Kind.SLOW) {
+            slowSubStep(tau);
+            return;
+        }
+        switch (integrator) {
+            case EULER -> {
+                nx = x + tau * vx;
+                ny = y + tau * vy;
+                nvx = vx + tau * a1x;
+                nvy = vy + tau * a1y;
+            }
+            case RK2 -> {
+                double half = 0.5 * tau;
+                double mvx = vx + half * a1x, mvy = vy + half * a1y;
+                accelerationAt(x + half * vx, y + half * vy, mvx, mvy);
+                nx = x + tau * mvx;
+                ny = y + tau * mvy;
+                nvx = vx + tau * ax;
+                nvy = vy + tau * ay;
+            }
+            case RK4 -> {
+                double half = 0.5 * tau;
+                double v2x = vx + half * a1x, v2y = vy + half * a1y;
+                accelerationAt(x + half * vx, y + half * vy, v2x, v2y);
+                double a2x = ax, a2y = ay;
+                double v3x = vx + half * a2x, v3y = vy + half * a2y;
+                accelerationAt(x + half * v2x, y + half * v2y, v3x, v3y);
+                double a3x = ax, a3y = ay;
+                double v4x = vx + tau * a3x, v4y = vy + tau * a3y;
+                accelerationAt(x + tau * v3x, y + tau * v3y, v4x, v4y);
+                double sixth = tau / 6;
+                nx = x + sixth * (vx + 2 * v2x + 2 * v3x + v4x);
+                ny = y + sixth * (vy + 2 * v2y + 2 * v3y + v4y);
+                nvx = vx + sixth * (a1x + 2 * a2x + 2 * a3x + ax);
+                nvy = vy + sixth * (a1y + 2 * a2y + 2 * a3y + ay);
+            }
+        }
+    }
+
+    /**
+     * Semi-implicit step for a slow ball: w = v + tau G (gravity's part G of the acceleration),
+     * then friction of magnitude F along -v_end, which shortens w by tau F or stops the ball if
+     * |w| &lt;= tau F (Coulomb friction as physics engines treat it). Position by the trapezoid rule.
+     */
+    private void slowSubStep(double tau) {
+        double normalisation = complete ? 1 + hx * hx + hy * hy : 1;
+        double gx = -gravity * hx / normalisation, gy = -gravity * hy / normalisation;
+        double wx = vx + tau * gx, wy = vy + tau * gy;
+        double w = Math.sqrt(wx * wx + wy * wy);
+        double friction = muK * gravity;
+        if (complete) {
+            double along = w > 0 ? (hx * wx + hy * wy) / w : Math.sqrt(normalisation - 1);
+            friction /= Math.sqrt(normalisation) * Math.sqrt(1 + along * along);
+        }
+        if (w > tau * friction) {
+            double keep = 1 - tau * friction / w;
+            nvx = wx * keep;
+            nvy = wy * keep;
+        } else {
+            double pull = Math.sqrt(gx * gx + gy * gy);
+            // Friction stops the ball within the step, unless the slope is steeper than kinetic
+            // friction can hold: then the ball turns round and starts back down it.
+            double net = pull > friction ? 0.5 * tau * (pull - friction) / pull : 0;
+            nvx = gx * net;
+            nvy = gy * net;
+        }
+        nx = x + 0.5 * tau * (vx + nvx);
+        ny = y + 0.5 * tau * (vy + nvy);
+    }
+
+    private void accelerationAt(double px, double py, double pvx, double pvy) {
+        terrain.sample(px, py, sample);
+        double mu = Double.isNaN(frozenMuK) ? friction.kinetic(px, py) : frozenMuK;
+        acceleration(sample[1], sample[2], mu, pvx, pvy);
+    }
+
+    /** The equations of motion: writes (ax, ay) for slope (gx, gy), friction mu and velocity v. */
+    void acceleration(double gx, double gy, double mu, double pvx, double pvy) {
+        double speedSquared = pvx * pvx + pvy * pvy;
+        double normalisation = complete ? 1 + gx * gx + gy * gy : 1;
+        if (speedSquared == 0) {
+            // Starting from rest: the limit of the moving equations as v -> 0 along -grad h.
+            double slope = Math.sqrt(gx * gx + gy * gy);
+            double factor = slope > mu ? -gravity * (1 - mu / slope) / normalisation : 0;
+            ax = factor * gx;
+            ay = factor * gy;
+            return;
+        }
+        if (complete) {
+            double along = gx * pvx + gy * pvy;
+            double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
+            ax = -gravity * gx / normalisation - frictionScale * pvx;
+            ay = -gravity * gy / normalisation - frictionScale * pvy;
+        } else {
+            double frictionScale = mu * gravity / Math.sqrt(speedSquared);
+            ax = -gravity * gx - frictionScale * pvx;
+            ay = -gravity * gy - frictionScale * pvy;
+        }
+    }
+}
