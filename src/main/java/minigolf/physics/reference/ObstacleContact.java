@@ -18,13 +18,18 @@ final class ObstacleContact {
     private final Terrain terrain;
     private final DormandPrince stepper;
     private final double radius;
+    /** Flying: the state is (x, y, z, ...) with z the ball's bottom; rolling: (x, y, ...) on the ground. */
+    private final boolean flying;
     private final Hit hit = new Hit();
-    private final double[] scratch = new double[3], a = new double[4], b = new double[4], sample = new double[3];
+    private final double[] scratch = new double[3], a = new double[6], b = new double[6], sample = new double[3];
 
     /** The last contact: the time just before touching, the contact normal and the restitution. */
     double time, nx, ny, nz, restitution;
+    /** The velocity a rolling ball flies off with when {@link #respond} returns false. */
+    final double[] flight = new double[3];
 
-    ObstacleContact(World world, DormandPrince stepper) {
+    ObstacleContact(World world, DormandPrince stepper, boolean flying) {
+        this.flying = flying;
         this.scene = world.obstacles();
         this.terrain = world.terrain();
         this.stepper = stepper;
@@ -77,7 +82,8 @@ final class ObstacleContact {
         double minY = Math.min(a[1], b[1]) - radius, maxY = Math.max(a[1], b[1]) + radius;
         if (!scene.anyNear(minX, minY, maxX, maxY)) return false;
         // The collision sphere's centre is the contact point lifted by the radius (docs/physics.md).
-        double za = terrain.height(a[0], a[1]) + radius, zb = terrain.height(b[0], b[1]) + radius;
+        double za = (flying ? a[2] : terrain.height(a[0], a[1])) + radius;
+        double zb = (flying ? b[2] : terrain.height(b[0], b[1])) + radius;
         if (!scene.sweep(a[0], a[1], za, b[0], b[1], zb, hit, scratch)) return false;
         nx = hit.nx;
         ny = hit.ny;
@@ -86,11 +92,24 @@ final class ObstacleContact {
         return true;
     }
 
+    /** The flying response: v' = v − (1 + e)(v·n)n on the velocity (v[at], v[at+1], v[at+2]); returns the normal speed after. */
+    double reflect(double[] v, int at) {
+        double vn = v[at] * nx + v[at + 1] * ny + v[at + 2] * nz;
+        if (vn < 0) {
+            double k = (1 + restitution) * vn;
+            v[at] -= k * nx;
+            v[at + 1] -= k * ny;
+            v[at + 2] -= k * nz;
+            return -restitution * vn;
+        }
+        return vn;
+    }
+
     /**
      * The rolling response at state y: the velocity along the ground (vx, vy, ∇h·v) is reflected
      * off the contact normal with the obstacle's restitution; if it then leaves the ground faster
-     * than a 1 mm hop the ball would fly (returns false: the reference does not fly), otherwise the
-     * part off the ground's plane is removed and y's velocity set to what is left.
+     * than a 1 mm hop the ball flies (returns false, the reflected velocity in {@link #flight}),
+     * otherwise the part off the ground's plane is removed and y's velocity set to what is left.
      */
     boolean respond(double[] y) {
         terrain.sample(y[0], y[1], sample);
@@ -106,7 +125,12 @@ final class ObstacleContact {
         double norm = Math.sqrt(1 + hx * hx + hy * hy);
         double gx = -hx / norm, gy = -hy / norm, gz = 1 / norm;
         double up = vx * gx + vy * gy + vz * gz;
-        if (up > hopSpeed) return false;
+        if (up > hopSpeed) {
+            flight[0] = vx;
+            flight[1] = vy;
+            flight[2] = vz;
+            return false;
+        }
         y[2] = vx - up * gx;
         y[3] = vy - up * gy;
         return true;

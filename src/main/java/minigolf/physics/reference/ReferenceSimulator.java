@@ -15,11 +15,11 @@ import minigolf.terrain.Terrain;
  * ({@code minigolf.physics.Stroke}); only the course's geometry and lookups (terrain, friction,
  * play area, the obstacles' swept-sphere test).
  *
- * <p>It does not fly: a shot that would leave the ground (a chip, the take-off criterion
- * vᵀHv &lt; −g, an obstacle bounce upwards faster than a 1 mm hop) is returned not covered, and so
- * is one that exceeds {@value #MAX_STEPS} accepted steps or {@value #MAX_CONTACTS} obstacle
- * contacts (a ball left leaning on a wall). Slow: about a thousand times the engine's work per
- * shot. Not thread-safe; one per thread.
+ * <p>A ball leaves the ground (a chip, the take-off criterion vᵀHv &lt; −g, an obstacle bounce
+ * upwards faster than a 1 mm hop) into {@link ReferenceFlight}. A shot that exceeds
+ * {@value #MAX_STEPS} accepted steps or {@value #MAX_CONTACTS} obstacle contacts (a ball left
+ * leaning on a wall) is returned not covered. Several times the engine's work per shot. Not
+ * thread-safe; one per thread.
  */
 public final class ReferenceSimulator {
     public static final double TOLERANCE = 1e-10;
@@ -45,6 +45,7 @@ public final class ReferenceSimulator {
     private final DormandPrince stepper;
     private final EventLocator events;
     private final ObstacleContact obstacles;
+    private final ReferenceFlight flight;
     private final double[] y = new double[4], a = new double[2], sample = new double[3];
     private double t;
     private long steps;
@@ -64,7 +65,8 @@ public final class ReferenceSimulator {
         this.equations = new RollingEquations(world, friction);
         this.stepper = new DormandPrince(new double[] {TOLERANCE, TOLERANCE, TOLERANCE, TOLERANCE});
         this.events = new EventLocator(world, stepper, equations, friction);
-        this.obstacles = new ObstacleContact(world, stepper);
+        this.obstacles = new ObstacleContact(world, stepper, false);
+        this.flight = new ReferenceFlight(world, maxTime);
     }
 
     public static String description() {
@@ -76,12 +78,8 @@ public final class ReferenceSimulator {
         return simulate(x0, y0, vx, vy, 0);
     }
 
-    /** A shot with a vertical component: one that flies (vz above the ground's rise along v) is not covered. */
+    /** A shot with a vertical component: it flies if vz is above the ground's rise along (vx, vy). */
     public ReferenceResult simulate(double x0, double y0, double vx, double vy, double vz) {
-        terrain.sample(x0, y0, sample);
-        if (vz > 0 && vz > sample[1] * vx + sample[2] * vy) {
-            return ReferenceResult.notCovered("flight (chip)", x0, y0, 0, 0);
-        }
         y[0] = x0;
         y[1] = y0;
         y[2] = vx;
@@ -90,13 +88,17 @@ public final class ReferenceSimulator {
         steps = 0;
         contacts = 0;
         friction.holdZone(friction.zoneAt(x0, y0));
-        if (vx == 0 && vy == 0) {
-            ReferenceResult rest = comeToRest();
-            if (rest != null) return rest;
+        terrain.sample(x0, y0, sample);
+        double rise = sample[1] * vx + sample[2] * vy;
+        ReferenceResult end = null;
+        if (vz > 0 && vz > rise) {
+            end = fly(x0, y0, sample[0], vx, vy, vz);
+        } else if (vx == 0 && vy == 0) {
+            end = comeToRest();
         } else if (equations.curvatureTimesSpeedSquared(x0, y0, vx, vy) < -equations.gravity()) {
-            return ReferenceResult.notCovered("flight (take-off)", x0, y0, 0, 0);
+            end = fly(x0, y0, sample[0], vx, vy, rise);
         }
-        return roll();
+        return end != null ? end : roll();
     }
 
     /** Integrates until the stroke ends. */
@@ -163,9 +165,11 @@ public final class ReferenceSimulator {
                     }
                     scanFrom = events.hi;
                     break;
-                case TAKE_OFF:
-                    events.stateAt(events.hi, y);
-                    return ReferenceResult.notCovered("flight (take-off)", y[0], y[1], events.hi, steps);
+                case TAKE_OFF: {
+                    restartAt(events.hi);
+                    terrain.sample(y[0], y[1], sample);
+                    return fly(y[0], y[1], sample[0], y[2], y[3], sample[1] * y[2] + sample[2] * y[3]);
+                }
                 default:
                     throw new AssertionError(events.type);
             }
@@ -175,11 +179,36 @@ public final class ReferenceSimulator {
             if (++contacts > MAX_CONTACTS) {
                 return ReferenceResult.notCovered("more than " + MAX_CONTACTS + " obstacle contacts", y[0], y[1], t, steps);
             }
-            if (!obstacles.respond(y)) return ReferenceResult.notCovered("flight (obstacle bounce)", y[0], y[1], t, steps);
+            if (!obstacles.respond(y)) {
+                return fly(y[0], y[1], terrain.height(y[0], y[1]), obstacles.flight[0], obstacles.flight[1], obstacles.flight[2]);
+            }
             return null;
         }
         stepper.accept(y);
         t = to;
+        return null;
+    }
+
+    /**
+     * A flight from the contact point (x, y, z); returns the stroke's end, or null with (t, y) where
+     * it settled into rolling.
+     */
+    private ReferenceResult fly(double x, double yy, double z, double vx, double vy, double vz) {
+        flight.steps = steps;
+        flight.contacts = contacts;
+        ReferenceResult end = flight.fly(x, yy, z, vx, vy, vz, t);
+        steps = flight.steps;
+        contacts = flight.contacts;
+        if (end != null) return end;
+        System.arraycopy(flight.rolling, 0, y, 0, 4);
+        t = flight.time;
+        friction.holdZone(friction.zoneAt(y[0], y[1]));
+        stepper.restart();
+        if (Math.hypot(y[2], y[3]) < TINY_SPEED) {
+            y[2] = 0;
+            y[3] = 0;
+            return comeToRest();
+        }
         return null;
     }
 
