@@ -58,6 +58,32 @@ final class ReferenceWorlds {
         return new World(course, terrain);
     }
 
+    /** A classic-model world with the flight settings given (drag coefficient, ground restitution or null for Penner's). */
+    static World flightWorld(Terrain terrain, double muK, double halfSize, double drag, Double restitution) {
+        PhysicsSettings physics = new PhysicsSettings(G, muK, 0.2, 5.0, PhysicsModel.CLASSIC,
+                PhysicsSettings.DEFAULT_BALL_RADIUS, PhysicsSettings.DEFAULT_BALL_MASS, drag,
+                PhysicsSettings.DEFAULT_AIR_DENSITY, restitution);
+        Course course = new Course(1, "test", new TerrainSpec.HeightExpression("test"),
+                new Bounds(-halfSize, -halfSize, halfSize, halfSize), physics, new Vec2(0, 0),
+                new Hole(new Vec2(halfSize - 0.5, halfSize - 0.5), 0.1, HoleRule.REST, null), List.of());
+        return new World(course, terrain);
+    }
+
+    /** h = c − a·x²/2: a crest along the y axis, curvature −a across it. */
+    static Terrain crest(double a, double c) {
+        return new Terrain() {
+            public double height(double x, double y) {
+                return c - 0.5 * a * x * x;
+            }
+
+            public void sample(double x, double y, double[] out) {
+                out[0] = c - 0.5 * a * x * x;
+                out[1] = -a * x;
+                out[2] = 0;
+            }
+        };
+    }
+
     static World world(Terrain terrain, double muK, double muS, double halfSize) {
         return world(terrain, muK, muS, halfSize, PhysicsModel.CLASSIC, List.of());
     }
