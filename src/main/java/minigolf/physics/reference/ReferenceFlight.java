@@ -35,7 +35,7 @@ final class ReferenceFlight implements DormandPrince.Rhs {
     long steps;
     int contacts;
 
-    ReferenceFlight(World world, double maxTime) {
+    ReferenceFlight(World world, double maxTime, double tol) {
         PhysicsSettings physics = world.physics();
         this.terrain = world.terrain();
         this.area = world.playArea();
@@ -46,7 +46,6 @@ final class ReferenceFlight implements DormandPrince.Rhs {
         this.hopSpeed = Math.sqrt(2 * g * 1e-3);
         this.restitution = physics.groundRestitution();
         this.maxTime = maxTime;
-        double tol = ReferenceSimulator.TOLERANCE;
         this.stepper = new DormandPrince(new double[] {tol, tol, tol, tol, tol, tol});
         this.obstacles = new ObstacleContact(world, stepper, true);
     }

@@ -57,16 +57,21 @@ public final class ReferenceSimulator {
 
     /** @param maxTime simulated seconds after which the stroke ends as {@code timeout}, as the engine's */
     public ReferenceSimulator(World world, double maxTime) {
+        this(world, maxTime, TOLERANCE);
+    }
+
+    /** With another error tolerance per step (tests check that the reference has converged). */
+    ReferenceSimulator(World world, double maxTime, double tolerance) {
         this.world = world;
         this.terrain = world.terrain();
         this.hole = world.hole();
         this.maxTime = maxTime;
         this.friction = new ReferenceFriction(world);
         this.equations = new RollingEquations(world, friction);
-        this.stepper = new DormandPrince(new double[] {TOLERANCE, TOLERANCE, TOLERANCE, TOLERANCE});
+        this.stepper = new DormandPrince(new double[] {tolerance, tolerance, tolerance, tolerance});
         this.events = new EventLocator(world, stepper, equations, friction);
         this.obstacles = new ObstacleContact(world, stepper, false);
-        this.flight = new ReferenceFlight(world, maxTime);
+        this.flight = new ReferenceFlight(world, maxTime, tolerance);
     }
 
     public static String description() {
