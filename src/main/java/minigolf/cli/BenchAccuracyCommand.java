@@ -119,6 +119,8 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         ObjectNode r = worst.putObject("reference");
         r.put("outcome", reference.outcome().jsonName());
         r.set("end", Json.array(reference.endX(), reference.endY()));
+        r.put("launches", reference.launches());
+        r.put("contacts", reference.contacts());
         return worst;
     }
 }

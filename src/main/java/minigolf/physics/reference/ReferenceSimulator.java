@@ -49,7 +49,7 @@ public final class ReferenceSimulator {
     private final double[] y = new double[4], a = new double[2], sample = new double[3];
     private double t;
     private long steps;
-    private int contacts;
+    private int contacts, launches;
 
     public ReferenceSimulator(World world) {
         this(world, SimulationSettings.DEFAULT_MAX_TIME);
@@ -92,6 +92,7 @@ public final class ReferenceSimulator {
         t = 0;
         steps = 0;
         contacts = 0;
+        launches = 0;
         friction.holdZone(friction.zoneAt(x0, y0));
         terrain.sample(x0, y0, sample);
         double rise = sample[1] * vx + sample[2] * vy;
@@ -103,7 +104,7 @@ public final class ReferenceSimulator {
         } else if (equations.curvatureTimesSpeedSquared(x0, y0, vx, vy) < -equations.gravity()) {
             end = fly(x0, y0, sample[0], vx, vy, rise);
         }
-        return end != null ? end : roll();
+        return (end != null ? end : roll()).withCounts(launches, contacts);
     }
 
     /** Integrates until the stroke ends. */
@@ -199,6 +200,7 @@ public final class ReferenceSimulator {
      * it settled into rolling.
      */
     private ReferenceResult fly(double x, double yy, double z, double vx, double vy, double vz) {
+        launches++;
         flight.steps = steps;
         flight.contacts = contacts;
         ReferenceResult end = flight.fly(x, yy, z, vx, vy, vz, t);
