@@ -31,8 +31,7 @@ class EngineAgreementTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"lake.json", "sine-hills.json", "sand.json", "grid-hills.json", "walled.json", "flat.json",
-            "plane.json"})
+    @ValueSource(strings = {"lake.json", "sine-hills.json", "sand.json", "walled.json", "flat.json", "plane.json"})
     void engineEndsWithinOneMillimetreOfTheReference(String name) throws CourseException {
         assertAgrees(course(name));
     }
@@ -45,6 +44,17 @@ class EngineAgreementTest {
     @Test
     void engineFollowsTheRestRuleOnSlopesNearMuK() throws CourseException {
         assertAgrees(course("sine-cross.json"));
+    }
+
+    /**
+     * Balls that run fast over the grid's last crest towards the bounds leave the ground there
+     * (vᵀHv &lt; −g, docs/physics.md "Taking off") and land outside; an engine that keeps them on the
+     * ground goes out 1–3 mm from where they land (9 of these 200 shots). Needs the engine's new
+     * take-off test.
+     */
+    @Test
+    void engineTakesOffWhereTheCurvatureCriterionSays() throws CourseException {
+        assertAgrees(course("grid-hills.json"));
     }
 
     /** The case: on h = 0.15x the shot (2, 1e-9) stops uphill, as (2, 0) does. */
