@@ -34,6 +34,11 @@ public final class RestRule {
         this.gravity = world.physics().gravity();
     }
 
+    /** Whether the ball is turning on ground steeper than mu_k and the rule sends it back down. */
+    boolean rollsBack() {
+        return turn == Turn.ROLLS_BACK;
+    }
+
     /** The ball is speeding up, or not braking: a later approach to a turn is decided afresh. */
     void forget() {
         turn = Turn.UNDECIDED;

@@ -108,6 +108,17 @@ final class RollingStep {
      * |w| &lt;= tau F (Coulomb friction as physics engines treat it). Position by the trapezoid rule.
      */
     private void slowSubStep(double tau) {
+        slowSubStep(tau, hx, hy);
+        terrain.sample(nx, ny, sample);
+        if (hx * sample[1] + hy * sample[2] < 0) {
+            // The slope turned over within the step: a valley's floor or a crease lies between.
+            // Gravity from the start alone would throw the ball up the far side (in a V-shaped
+            // valley, higher every step: energy from nowhere); the mean of both ends' slopes does not.
+            slowSubStep(tau, 0.5 * (hx + sample[1]), 0.5 * (hy + sample[2]));
+        }
+    }
+
+    private void slowSubStep(double tau, double hx, double hy) {
         double normalisation = complete ? 1 + hx * hx + hy * hy : 1;
         double gx = -gravity * hx / normalisation, gy = -gravity * hy / normalisation;
         double wx = vx + tau * gx, wy = vy + tau * gy;
@@ -121,16 +132,26 @@ final class RollingStep {
             double keep = 1 - tau * friction / w;
             nvx = wx * keep;
             nvy = wy * keep;
-        } else {
-            double pull = Math.sqrt(gx * gx + gy * gy);
-            // Friction stops the ball within the step, unless the slope is steeper than kinetic
-            // friction can hold: then the ball turns round and starts back down it.
-            double net = pull > friction ? 0.5 * tau * (pull - friction) / pull : 0;
-            nvx = gx * net;
-            nvy = gy * net;
+            nx = x + 0.5 * tau * (vx + nvx);
+            ny = y + 0.5 * tau * (vy + nvy);
+            return;
         }
-        nx = x + 0.5 * tau * (vx + nvx);
-        ny = y + 0.5 * tau * (vy + nvy);
+        // Friction stops the ball within the step, at about t0 = |v| / (friction + the pull against
+        // v), unless the slope is steeper than kinetic friction can hold: then the ball turns
+        // round there and rolls back down for the rest of the step, with the friction of a ball
+        // rolling straight down (mu_k g / D in the complete model). Whether a turning ball stops
+        // instead is the rest rule's decision, not this step's. The position follows the two
+        // straight pieces of velocity, so the ball never climbs higher than its speed can take it.
+        double speed = Math.sqrt(vx * vx + vy * vy);
+        double pull = Math.sqrt(gx * gx + gy * gy);
+        double against = speed > 0 ? friction - (gx * vx + gy * vy) / speed : friction;
+        double t0 = speed > 0 && against > 0 ? Math.min(tau, speed / against) : 0;
+        double downhill = muK * gravity / normalisation;
+        double net = pull > downhill ? (tau - t0) * (pull - downhill) / pull : 0;
+        nvx = gx * net;
+        nvy = gy * net;
+        nx = x + 0.5 * (vx * t0 + nvx * (tau - t0));
+        ny = y + 0.5 * (vy * t0 + nvy * (tau - t0));
     }
 
     private void accelerationAt(double px, double py, double pvx, double pvy) {

@@ -207,7 +207,11 @@ public final class Stroke {
             return 0;
         }
         double speed = Math.sqrt(vx * vx + vy * vy);
-        if (speed == 0 && rest.holds(x, y, h, hx, hy, muK)) {
+        // A ball the rest rule sends back down (it turned faster than REST_SPEED) is not at rest
+        // when an energy cut leaves it at v = 0 at its turn: it starts down again, once.
+        boolean sentBack = speed == 0 && rest.rollsBack();
+        if (sentBack) rest.forget();
+        if (speed == 0 && !sentBack && rest.holds(x, y, h, hx, hy, muK)) {
             finish(isInHole(x, y) ? Outcome.HOLED : Outcome.STOPPED, x, y, z);
             return 0;
         }
@@ -290,6 +294,13 @@ public final class Stroke {
     }
 
     private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
+        if (kind == RollingStep.Kind.INTEGRATOR && takesOff(tau)) {
+            // The ground falls away faster than gravity can pull the ball down: it flies this step,
+            // from where the ground begins to curve away too fast (found by bisection). Decided
+            // before water and the bounds, which a flying ball only meets where it comes down.
+            launchWithin(tau, a1x, a1y);
+            return;
+        }
         subStep(tau, kind, a1x, a1y);
         if (!Double.isFinite(nx + ny + nvx + nvy)) throw NonFiniteMotionException.motion(x, y);
         // A stop step ends at rest, and so does a slow step in which friction held the ball.
@@ -347,26 +358,6 @@ public final class Stroke {
         if (collided) {
             bounceOffObstacleWhileRolling();
             notifyListener();
-            resume = true;
-            return;
-        }
-        if (kind == RollingStep.Kind.INTEGRATOR && takesOff(endTau)) {
-            // The ground fell away faster than gravity can pull the ball down: it flew this step.
-            x = px;
-            y = py;
-            vx = pvx;
-            vy = pvy;
-            t = pt;
-            h = ph;
-            hx = phx;
-            hy = phy;
-            muK = pMuK;
-            steps = pSteps;
-            z = h;
-            vz = hx * vx + hy * vy;
-            flying = true;
-            event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
-            pieceTime = 0;
             resume = true;
             return;
         }
@@ -442,16 +433,73 @@ public final class Stroke {
     }
 
     /**
-     * Whether the ground curved away under the ball faster than gravity can bend its path: a ball
-     * thrown from the step's start along the ground, (v, grad h . v), would be above the ground
-     * after the step under gravity alone (its horizontal velocity kept). In the continuous model
+     * Whether the ground curves away under the ball faster than gravity can bend its path in the
+     * coming step: a ball thrown from here along the ground, (v, grad h . v), would be above the
+     * ground after tau under gravity alone (its horizontal velocity kept). In the continuous model
      * that is v^T H v &lt; -g. A uniform slope, however steep, never launches the ball, nor does any
      * ground launch a ball at rest (the classic model's own acceleration down a steep slope, g
      * times the slope, is not a speed the ball has).
      */
     private boolean takesOff(double tau) {
-        double free = ph + (phx * pvx + phy * pvy) * tau - 0.5 * gravity * tau * tau;
-        return terrain.height(px + pvx * tau, py + pvy * tau) < free - LIFT_TOLERANCE;
+        double free = h + (hx * vx + hy * vy) * tau - 0.5 * gravity * tau * tau;
+        return terrain.height(x + vx * tau, y + vy * tau) < free - LIFT_TOLERANCE;
+    }
+
+    /** Rolls until the moment of take-off within the coming tau, then launches the ball from there. */
+    private void launchWithin(double tau, double a1x, double a1y) {
+        double rolled = takeOffTime(tau, a1x, a1y);
+        if (rolled > 0) {
+            subStep(rolled, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+            x = nx;
+            y = ny;
+            vx = nvx;
+            vy = nvy;
+            t += rolled;
+            sampleCurrent();
+        }
+        z = h;
+        vz = hx * vx + hy * vy;
+        flying = true;
+        event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
+        pieceTime = rolled;
+        resume = true;
+    }
+
+    /**
+     * How long into a step of length tau that ends in the air the ball still rolls: the first
+     * moment from which a ball thrown along the ground would be above it a short probe later
+     * (tau / 8, with the tolerance scaled alike), by bisection on the rolling sub-step. Without
+     * it the ball would leave at the step's start, up to a step early (millimetres where it lands).
+     */
+    private double takeOffTime(double tau, double a1x, double a1y) {
+        double probe = tau / 8;
+        double tolerance = LIFT_TOLERANCE / 64;
+        double onGround = 0, flying = tau;
+        if (leaves(0, probe, tolerance, a1x, a1y)) return 0;
+        for (int k = 0; k < 30; k++) {
+            double mid = 0.5 * (onGround + flying);
+            if (leaves(mid, probe, tolerance, a1x, a1y)) flying = mid; else onGround = mid;
+        }
+        return onGround;
+    }
+
+    /** Whether a ball rolled for tau from the step's start, then thrown along the ground, is above it after probe. */
+    private boolean leaves(double tau, double probe, double tolerance, double a1x, double a1y) {
+        double sx = x, sy = y, svx = vx, svy = vy, shx = hx, shy = hy;
+        double sh = h;
+        if (tau > 0) {
+            subStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+            terrain.sample(nx, ny, sample);
+            sx = nx;
+            sy = ny;
+            svx = nvx;
+            svy = nvy;
+            sh = sample[0];
+            shx = sample[1];
+            shy = sample[2];
+        }
+        double free = sh + (shx * svx + shy * svy) * probe - 0.5 * gravity * probe * probe;
+        return terrain.height(sx + svx * probe, sy + svy * probe) < free - tolerance;
     }
 
     /** Sweeps the rolling ball from (x, y) to (nx, ny); true with {@link #hit} set on a contact. */

@@ -126,9 +126,18 @@ final class EventLocator {
             case CLOSEST:
                 return capture && (x - hole.position().x()) * vx + (yy - hole.position().y()) * vy >= 0;
             case TAKE_OFF:
-                return equations.curvatureTimesSpeedSquared(x, yy, vx, vy) < -g;
+                // The curvature is a central difference across 10 µm: at the play area's edge it
+                // would straddle the bounds (where a grid is extended flat) and launch a ball that
+                // is simply leaving; that ball is out where it crosses, flying or not.
+                return equations.curvatureTimesSpeedSquared(x, yy, vx, vy) < -g && insideAhead(x, yy, vx, vy);
             default:
                 throw new AssertionError(t);
         }
+    }
+
+    /** Whether the point 10 µm ahead along v (the curvature's reach) is still in play. */
+    private boolean insideAhead(double x, double y, double vx, double vy) {
+        double speed = Math.hypot(vx, vy);
+        return speed == 0 || area.contains(x + 1e-5 * vx / speed, y + 1e-5 * vy / speed);
     }
 }
