@@ -37,8 +37,10 @@ public final class Stroke {
     static final double HOP_HEIGHT = 0.001;
     /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
     static final double LIFT_TOLERANCE = 1e-6;
-    /** Chords a step's path is swept as, against the obstacles. */
+    /** Chords a step's path is swept as, against the obstacles, where it turns... */
     static final int PATH_PIECES = 4;
+    /** ... by more than this from its chord (m); a straighter path is swept as its chord. */
+    static final double STRAIGHT = 1e-6;
     /** A ball stops this far short of its contact point along its path, so it never ends a step touching. */
     static final double SKIN = 1e-7;
     /** Coulomb friction of a landing ball on turf; the tangential loss is at most 2/7 (the ball then rolls). */
@@ -523,12 +525,18 @@ public final class Stroke {
         // The curve strays from the chord by at most |v0 - v1| tau / 8 (a cubic's bound is smaller).
         double bulge = 0.125 * tau * (Math.abs(vx0 - vx1) + Math.abs(vy0 - vy1));
         if (!scene.anyNear(loX - bulge, loY - bulge, hiX + bulge, hiY + bulge)) return false;
-        for (int k = 1; k <= PATH_PIECES; k++) {
-            double s1 = (double) k / PATH_PIECES;
+        // A path that does not turn (the velocity changes only along the chord, as on flat ground)
+        // is its chord: one sweep. Sideways, the cubic strays by about |dv x chord| tau / 8.
+        double cx = x1 - x0, cy = y1 - y0, chord = Math.sqrt(cx * cx + cy * cy);
+        double sideways = chord > 0 ? Math.abs((vx0 - vx1) * cy - (vy0 - vy1) * cx) / chord : bulge;
+        double vertical = rolling ? 0 : Math.abs(vz0 - vz1) + Math.abs(z1 - z0 - 0.5 * (vz0 + vz1) * tau) / tau;
+        int pieces = 0.125 * tau * (sideways + vertical) < STRAIGHT ? 1 : PATH_PIECES;
+        for (int k = 1; k <= pieces; k++) {
+            double s1 = (double) k / pieces;
             double bx = hermite(s1, x0, vx0 * tau, x1, vx1 * tau);
             double by = hermite(s1, y0, vy0 * tau, y1, vy1 * tau);
             double bz = rolling ? terrain.height(bx, by) + r : hermite(s1, z0, vz0 * tau, z1, vz1 * tau);
-            if (k == PATH_PIECES) {
+            if (k == pieces) {
                 bx = x1;
                 by = y1;
                 bz = rolling ? terrain.height(x1, y1) + r : z1;
@@ -539,7 +547,7 @@ public final class Stroke {
                 contactX = ax + f * (bx - ax);
                 contactY = ay + f * (by - ay);
                 contactZ = az + f * (bz - az);
-                contactAt = (k - 1 + f) / PATH_PIECES;
+                contactAt = (k - 1 + f) / pieces;
                 return true;
             }
             ax = bx;
