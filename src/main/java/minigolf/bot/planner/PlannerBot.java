@@ -83,6 +83,9 @@ public final class PlannerBot extends SearchBot {
             if (k.world() == world && k.x() == px && k.y() == py) return k.shot();
         }
         Stroke stroke = new Stroke(solved, sim, probeFor(sim), maps, px, py, () -> planFor(world, request));
+        // The route it intends, for the game's and the editor's drawing; straight at the hole when cut off.
+        sim.showPlan(stroke.path.isEmpty() ? List.of(new double[] {px, py}, new double[] {stroke.holeX, stroke.holeY})
+                : stroke.path);
         Shot chosen = sim.limit(choose(request, stroke));
         // No stroke leads back (to a position played from, or lost): the engine is deterministic, so
         // where the chosen shot ends is known, usually without a new simulation.
