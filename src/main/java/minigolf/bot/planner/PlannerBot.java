@@ -112,6 +112,11 @@ public final class PlannerBot extends SearchBot {
             sim.phase("direct");
             Shot shot = new HoleInOne(stroke).holeInOne();
             if (shot != null) return shot;
+            if (request.strokesTaken() == 0) {
+                // The first stroke: search all round, densely, before settling for two.
+                shot = new DenseSweep(stroke).holeInOne();
+                if (shot != null) return shot;
+            }
             sim.phase("two strokes");
             TwoStrokes twoStrokes = new TwoStrokes(stroke);
             shot = twoStrokes.twoStrokes();
