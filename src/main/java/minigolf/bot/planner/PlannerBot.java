@@ -16,7 +16,8 @@ import minigolf.physics.ShotResult;
 import minigolf.physics.World;
 
 /**
- * Our bot, the game's default (docs/bots.md). Per stroke:
+ * Our bot, the game's default (docs/bots.md); {@code planner-aces} adds {@link DenseSweep} on the
+ * first stroke. Per stroke:
  * <ol>
  * <li>If the hole is within about a maximum-speed roll (along the water-avoiding distance):
  *     Broyden's quasi-Newton method from the physics guess straight at the hole, aimed at the middle
@@ -54,9 +55,21 @@ public final class PlannerBot extends SearchBot {
     private World probeSource;
     private World probeWorld;
 
+    /** Whether the first stroke runs {@link DenseSweep} before settling for two ({@code planner-aces}). */
+    private final boolean denseSweep;
+
+    /** The game's default: no dense sweep (on our suites it finds no new ace and costs simulations). */
+    public PlannerBot() {
+        this(false);
+    }
+
+    public PlannerBot(boolean denseSweep) {
+        this.denseSweep = denseSweep;
+    }
+
     @Override
     public String name() {
-        return "planner";
+        return denseSweep ? "planner-aces" : "planner";
     }
 
     @Override
@@ -112,7 +125,7 @@ public final class PlannerBot extends SearchBot {
             sim.phase("direct");
             Shot shot = new HoleInOne(stroke).holeInOne();
             if (shot != null) return shot;
-            if (request.strokesTaken() == 0) {
+            if (denseSweep && request.strokesTaken() == 0) {
                 // The first stroke: search all round, densely, before settling for two.
                 shot = new DenseSweep(stroke).holeInOne();
                 if (shot != null) return shot;
