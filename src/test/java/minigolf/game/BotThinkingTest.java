@@ -15,11 +15,11 @@ import org.junit.jupiter.api.Test;
 
 /** What the game shows while a bot thinks (progress, its plan) and how fast Cancel stops it. */
 class BotThinkingTest {
-    /** No shot holes here (a ring of water round the hole), so every bot thinks until stopped. */
-    static final World RINGED = parse("{\"format\":1,\"name\":\"ringed\",\"terrain\":{\"height\":"
-            + "\"0.2-0.5*exp(-((sqrt((x-3)^2+y^2)-1.5)^2)/0.2)\"},\"bounds\":{\"min\":[-5,-3],\"max\":[5,3]},"
-            + "\"physics\":{\"kineticFriction\":0.1,\"staticFriction\":0.2,\"maxSpeed\":5},\"start\":[-3,0],"
-            + "\"hole\":{\"position\":[3,0],\"radius\":0.1,\"rule\":\"rest\"}}");
+    /**
+     * No shot holes here (the hole walled in), and on slippery ground (mu_k 0.02) every shot rolls
+     * for seconds of simulated time: every bot thinks for seconds, so Cancel always finds it busy.
+     */
+    static final World WALLED = minigolf.bot.BotRobustnessTestCourses.walledInSlippery();
 
     static World parse(String json) {
         try {
@@ -38,7 +38,7 @@ class BotThinkingTest {
         List<String> slow = new ArrayList<>();
         for (String name : BotCatalog.names()) {
             if (name.equals("straight")) continue; // answers at once: nothing to cancel
-            BotTurn turn = new BotTurn(BotCatalog.planner(name), RINGED, SimulationSettings.DEFAULT, -3, 0, 0, 1L);
+            BotTurn turn = new BotTurn(BotCatalog.planner(name), WALLED, SimulationSettings.DEFAULT, -3, 0, 0, 1L);
             long until = System.nanoTime() + 3_000_000_000L;
             while (turn.progress() == 0 && !turn.isDone() && System.nanoTime() < until) Thread.sleep(5);
             assertTrue(!turn.isDone(), name + " should still be thinking");
