@@ -142,6 +142,10 @@ public final class PlannerBot extends SearchBot {
                 shot = twoStrokes.layupSweep();
                 if (shot != null) return shot;
             }
+            if (denseSweep) {
+                shot = twoStrokes.wideLayupSweep();
+                if (shot != null) return shot;
+            }
         }
         sim.phase("lay-up");
         Shot layup = new Layup(stroke).layup(reach, planned);
