@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * {@code planner-aces} (the planner with the dense first-shot sweep and the wide lay-up sweep)
- * against the default planner, measured: where it gains a stroke and where it loses one.
+ * against the default planner, measured: where it gains a stroke, and that it keeps maze-e's.
  */
 class PlannerAcesTest {
     private static Playthrough.Result play(String bot, World world) {
@@ -34,10 +34,10 @@ class PlannerAcesTest {
     }
 
     @Test
-    void itLosesAStrokeOnMazeE() {
-        // Measured, kept as a known cost; why its lay-up ends worse there is not analysed yet.
+    void itKeepsMazeEsThreeStrokes() {
+        // Measured: before the banked look-ahead (bankedLayup) it played maze-e in 4.
         World mazeE = BenchCourses.load("maze-e");
         assertEquals(3, play("planner", mazeE).strokes());
-        assertEquals(4, play("planner-aces", mazeE).strokes());
+        assertEquals(3, play("planner-aces", mazeE).strokes());
     }
 }

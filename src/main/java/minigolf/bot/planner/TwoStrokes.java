@@ -77,7 +77,28 @@ final class TwoStrokes {
             }
         }
         s.sim.phase("two strokes");
-        return tryLayups(s.triedLayups, WIDE_TRIES, false);
+        Shot shot = tryLayups(s.triedLayups, WIDE_TRIES, false);
+        if (shot != null) return shot;
+        return bankedLayup();
+    }
+
+    /** Lay-ups already tried (nearest first) once more, the look-ahead now allowing a bank shot off a wall. */
+    private Shot bankedLayup() {
+        int attempts = 0;
+        for (double[] t : s.triedLayups) {
+            if (attempts++ == WIDE_TRIES) break;
+            for (Eval e : s.restingProbes) {
+                if (e.restX() != t[0] || e.restY() != t[1]) continue;
+                Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, e.restX(), e.restY(), s.plan);
+                Shot bank = new HoleInOne(next).bankShot();
+                if (bank != null) {
+                    s.solved.add(new Solved(s.world, e.restX(), e.restY(), bank));
+                    return e.shot();
+                }
+                break;
+            }
+        }
+        return null;
     }
 
     /**
