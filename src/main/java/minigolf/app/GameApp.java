@@ -15,7 +15,7 @@ import java.util.stream.Stream;
 import minigolf.course.CourseException;
 import minigolf.game.AimModel;
 import minigolf.game.BallReadout;
-import minigolf.game.BotCatalog;
+import minigolf.game.BotSeats;
 import minigolf.game.BotTurn;
 import minigolf.game.CourseEdits;
 import minigolf.game.AudioSettings;
@@ -95,6 +95,8 @@ public final class GameApp implements UiActions, UiView {
     private int cardFrames;
     private StrokeAnimator animator;
     private BotTurn botTurn;
+    /** One bot per player per hole, so the planner's memory lasts across its strokes. */
+    private final BotSeats botSeats = new BotSeats();
     private String message;
     private double messageUntil;
     private String notice;
@@ -293,7 +295,7 @@ public final class GameApp implements UiActions, UiView {
         Player p = game.players().get(seat);
         if (p.isBot()) {
             if (botTurn == null) {
-                ShotPlanner planner = BotCatalog.planner(p.bot());
+                ShotPlanner planner = botSeats.planner(seat, p.bot(), game.world());
                 if (planner == null) {
                     say("no bot named " + p.bot() + "; " + p.name() + " cannot play");
                     return;
@@ -778,6 +780,8 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public void cancelBot() {
         if (botTurn != null) botTurn.cancel();
+        // A cancelled worker may still be ending: its bot must not be asked again.
+        botSeats.clear();
     }
 
     @Override
@@ -919,6 +923,14 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public BotTurn botTurn() {
         return botTurn;
+    }
+
+    @Override
+    public float[] toScreen(double x, double y) {
+        if (camera == null || world == null) return null;
+        // A little above the ground, so the line is not hidden in the grass.
+        float z = (float) (world.terrain().height(x, y) + 0.03);
+        return camera.project(new Vector3f((float) x, (float) y, z), window.framebufferWidth(), window.framebufferHeight());
     }
 
     @Override

@@ -15,4 +15,11 @@ public interface BotProgress {
      * @param phase       what the bot is doing, e.g. "sweep" or "refine"
      */
     void update(long simulations, long budget, String phase);
+
+    /**
+     * The path the bot intends to take from the ball to the hole (course coordinates, ball first,
+     * the hole last), so a UI can draw it while the bot thinks. Bots without a route report nothing.
+     */
+    default void plan(java.util.List<double[]> points) {
+    }
 }

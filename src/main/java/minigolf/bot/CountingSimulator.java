@@ -128,6 +128,13 @@ public final class CountingSimulator {
         account.token.throwIfCancelled();
     }
 
+    /** Reports the route the bot intends (ball first, hole last) to the progress listener; copies it. */
+    public void showPlan(java.util.List<double[]> points) {
+        java.util.List<double[]> copy = new java.util.ArrayList<>(points.size());
+        for (double[] p : points) copy.add(new double[] {p[0], p[1]});
+        account.progress.plan(java.util.Collections.unmodifiableList(copy));
+    }
+
     /** Names the bot's current phase for the progress indicator and reports progress. */
     public void phase(String phase) {
         account.phase = phase;

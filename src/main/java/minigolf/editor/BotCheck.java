@@ -1,7 +1,7 @@
 package minigolf.editor;
 
 import java.util.concurrent.CancellationException;
-import java.util.concurrent.atomic.AtomicBoolean;
+import minigolf.game.BotControl;
 import minigolf.game.ShotPlanner;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
@@ -23,17 +23,18 @@ public final class BotCheck {
         }
     }
 
-    private final AtomicBoolean cancelled = new AtomicBoolean();
+    /** Shared with the bot: the cancel reaches its token (before, it only set a flag nobody read). */
+    private final BotControl control = new BotControl();
     private volatile Result result;
     private volatile String failure;
-    private volatile double progress;
+    private volatile int strokes;
     private final Thread thread;
 
     private BotCheck(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed) {
         thread = new Thread(() -> {
             try {
-                result = play(planner, world, settings, maxStrokes, seed, control());
-            } catch (CancellationException e) {
+                result = play(planner, world, settings, maxStrokes, seed, control, n -> strokes = n);
+            } catch (CancellationException | minigolf.bot.BotCancelledException e) {
                 failure = "cancelled";
             } catch (RuntimeException e) {
                 failure = planner.name() + " failed: " + e.getMessage();
@@ -52,10 +53,18 @@ public final class BotCheck {
     /** Plays on this thread. */
     public static Result play(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed,
                               ShotPlanner.Control control) {
+        return play(planner, world, settings, maxStrokes, seed, control, n -> { });
+    }
+
+    /** Plays on this thread, telling {@code strokesTaken} the strokes so far before each stroke. */
+    static Result play(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed,
+                       ShotPlanner.Control control, java.util.function.IntConsumer strokesTaken) {
         Simulator game = new Simulator(world, settings);
         double x = world.course().start().x(), y = world.course().start().y();
         int strokes = 0;
         for (int shot = 0; shot < maxStrokes; shot++) {
+            strokesTaken.accept(strokes);
+            if (control.isCancelled()) throw new CancellationException();
             double[] v = planner.plan(world, settings, x, y, strokes, seed + 31L * shot, control);
             ShotResult r = game.simulate(x, y, v[0], v[1]);
             strokes++;
@@ -68,22 +77,6 @@ public final class BotCheck {
             }
         }
         return new Result(false, strokes, planner.name());
-    }
-
-    private ShotPlanner.Control control() {
-        return new ShotPlanner.Control() {
-            public void progress(double fraction, String message) {
-                progress = fraction;
-            }
-
-            public boolean isCancelled() {
-                return cancelled.get();
-            }
-
-            public void whenCancelled(Runnable action) {
-                if (cancelled.get()) action.run();
-            }
-        };
     }
 
     public boolean isDone() {
@@ -99,12 +92,29 @@ public final class BotCheck {
         return failure;
     }
 
+    /** The current stroke's progress (each stroke fills the bar again). */
     public double progress() {
-        return progress;
+        return control.progress();
     }
 
+    /** "stroke 3: sweep: 420 simulations" */
+    public String message() {
+        return "stroke " + (strokes + 1) + ": " + control.message();
+    }
+
+    /** The route the bot intends from where the ball lies now, or an empty list. */
+    public java.util.List<double[]> plan() {
+        return control.plan();
+    }
+
+    /** Stops the bot within about 50 ms (its token is cancelled); the check ends "cancelled". */
     public void cancel() {
-        cancelled.set(true);
+        control.cancel();
+    }
+
+    /** Waits at most {@code millis} for the worker. */
+    public void join(long millis) throws InterruptedException {
+        thread.join(millis);
     }
 
     /** Waits for the worker (tests and the command line). */

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
 import minigolf.bot.Bot;
+import minigolf.bot.BotProgress;
 import minigolf.bot.BotRequest;
 import minigolf.bot.Bots;
 import minigolf.bot.CancellationToken;
@@ -84,11 +85,18 @@ public final class BotCatalog {
                 CancellationToken token = CancellationToken.withTimeLimit(TIME_LIMIT_PER_STROKE);
                 control.whenCancelled(token::cancel);
                 long started = System.nanoTime();
-                // The bar shows whichever runs out first: the simulations or the time.
-                CountingSimulator sim = new CountingSimulator(world, settings, BUDGET_PER_STROKE, token,
-                        (used, budget, phase) -> control.progress(Math.min(1, Math.max((double) used / budget,
-                                        (System.nanoTime() - started) / 1e9 / TIME_LIMIT_PER_STROKE)),
-                                phase + ": " + used + " simulations"));
+                BotProgress progress = new BotProgress() {
+                    public void update(long used, long budget, String phase) {
+                        // The bar shows whichever runs out first: the simulations or the time.
+                        control.progress(Math.min(1, Math.max((double) used / budget,
+                                (System.nanoTime() - started) / 1e9 / TIME_LIMIT_PER_STROKE)), phase + ": " + used + " simulations");
+                    }
+
+                    public void plan(List<double[]> points) {
+                        control.plan(points);
+                    }
+                };
+                CountingSimulator sim = new CountingSimulator(world, settings, BUDGET_PER_STROKE, token, progress);
                 Shot shot = sim.limit(bot.nextShot(new BotRequest(sim, x, y, strokes, seed)));
                 return new double[]{shot.vx(), shot.vy()};
             }

@@ -1,7 +1,6 @@
 package minigolf.game;
 
 import java.util.concurrent.CancellationException;
-import java.util.concurrent.atomic.AtomicBoolean;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 
@@ -10,39 +9,18 @@ import minigolf.physics.World;
  * render thread polls {@link #isDone()}, shows {@link #progress()} and may {@link #cancel()}.
  */
 public final class BotTurn {
-    private final AtomicBoolean cancelled = new AtomicBoolean();
+    private final BotControl control = new BotControl();
     private final Thread thread;
-    private volatile double progress;
-    private volatile String message = "thinking";
     private volatile double[] shot;
     private volatile String failure;
     private volatile boolean done;
-    private final java.util.List<Runnable> cancelActions = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
                    long seed) {
-        ShotPlanner.Control control = new ShotPlanner.Control() {
-            @Override
-            public void progress(double fraction, String text) {
-                progress = Math.max(0, Math.min(1, fraction));
-                if (text != null) message = text;
-            }
-
-            @Override
-            public boolean isCancelled() {
-                return cancelled.get();
-            }
-
-            @Override
-            public void whenCancelled(Runnable action) {
-                cancelActions.add(action);
-                if (cancelled.get()) action.run();
-            }
-        };
         thread = new Thread(() -> {
             try {
                 double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, control);
-                if (cancelled.get()) {
+                if (control.isCancelled()) {
                     failure = "cancelled";
                 } else if (v == null || v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
                     failure = planner.name() + " gave no shot";
@@ -56,7 +34,6 @@ public final class BotTurn {
             } catch (RuntimeException | StackOverflowError e) {
                 failure = planner.name() + " failed: " + e.getMessage();
             } finally {
-                progress = 1;
                 done = true;
             }
         }, "bot-" + planner.name());
@@ -69,11 +46,16 @@ public final class BotTurn {
     }
 
     public double progress() {
-        return progress;
+        return done ? 1 : control.progress();
     }
 
     public String message() {
-        return message;
+        return control.message();
+    }
+
+    /** The route the bot intends (ball first, hole last), or an empty list. */
+    public java.util.List<double[]> plan() {
+        return control.plan();
     }
 
     /** The shot once done and successful, else null. */
@@ -87,7 +69,7 @@ public final class BotTurn {
     }
 
     public void cancel() {
-        if (!cancelled.getAndSet(true)) cancelActions.forEach(Runnable::run);
+        control.cancel();
     }
 
     /** Waits for the worker (tests, shutdown). */

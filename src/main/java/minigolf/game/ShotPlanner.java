@@ -17,6 +17,10 @@ public interface ShotPlanner {
 
         /** Runs {@code action} when the turn is cancelled (at once if it already is); for bots with their own token. */
         void whenCancelled(Runnable action);
+
+        /** The route the bot intends from the ball to the hole, for drawing while it thinks. */
+        default void plan(java.util.List<double[]> points) {
+        }
     }
 
     String name();

@@ -337,6 +337,7 @@ public final class Screens {
 
         BotTurn bot = view.botTurn();
         if (bot != null) {
+            PlanOverlay.draw(ImGui.getBackgroundDrawList(), bot.plan(), p -> view.toScreen(p[0], p[1]));
             ImGui.setNextWindowPos(w * 0.5f, h - 60, ImGuiCond.Always, 0.5f, 1f);
             ImGui.begin("##bot", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize);
             ImGui.text("Bot thinking: " + bot.message());

@@ -21,6 +21,11 @@ public interface UiView {
     /** The bot deciding now, or null. */
     BotTurn botTurn();
 
+    /** A course point (x, y) on the terrain in HUD pixels, or null when off screen (for the bot's plan). */
+    default float[] toScreen(double x, double y) {
+        return null;
+    }
+
     UserSettings settings();
 
     /** The courses to choose from: (name, file). */

@@ -11,4 +11,9 @@ public final class BotRobustnessTestCourses {
     public static World walledIn() {
         return BotRobustnessTest.course("walled in", "0", 0.1, 0.2, 5, 0.02135, BotRobustnessTest.BOX_ROUND_HOLE);
     }
+
+    /** The same on slippery ground (mu_k 0.02): every shot rolls for seconds of simulated time. */
+    public static World walledInSlippery() {
+        return BotRobustnessTest.course("walled in, slippery", "0", 0.02, 0.05, 5, 0.02135, BotRobustnessTest.BOX_ROUND_HOLE);
+    }
 }

@@ -11,7 +11,7 @@ import minigolf.physics.World;
  * search looks for a game at least one stroke shorter (so its cost stays bounded): the baseline
  * is what it finds, else the planner's own count (the search found nothing shorter, within
  * {@link #MAX_LEVELS} strokes).
- * Arguments: SEED COUNT [FIRST] [--no-search] (the planner only).
+ * Arguments: SEED COUNT [FIRST] [--no-search] (the planner only) [--bot=NAME] (another bot, e.g. planner-aces).
  */
 final class TileCourseReport {
     /** The search goes at most this many strokes deep (each level costs about a million simulations). */
@@ -20,14 +20,16 @@ final class TileCourseReport {
     public static void main(String[] args) {
         long seed = Long.parseLong(args[0]);
         int count = Integer.parseInt(args[1]);
-        int first = args.length > 2 ? Integer.parseInt(args[2]) : 0;
+        int first = args.length > 2 && !args[2].startsWith("--") ? Integer.parseInt(args[2]) : 0;
         boolean search = !List.of(args).contains("--no-search");
+        String bot = List.of(args).stream().filter(a -> a.startsWith("--bot=")).map(a -> a.substring(6)).findFirst()
+                .orElse("planner");
         List<World> worlds = TileCourses.generate(seed, first + count);
         System.out.println("| course | planner holed | planner strokes | simulations | ms | fewer found by the search | search simulations | search s |");
         System.out.println("|---|---|---:|---:|---:|---|---:|---:|");
         for (int i = first; i < first + count; i++) {
             World w = worlds.get(i);
-            Playthrough.Result p = Playthrough.play(Bots.create("planner"), w, SimulationSettings.DEFAULT, 10, 20_000, 1,
+            Playthrough.Result p = Playthrough.play(Bots.create(bot), w, SimulationSettings.DEFAULT, 10, 20_000, 1,
                     CancellationToken.withTimeLimit(60), BotProgress.NONE);
             int cap = search ? Math.min(p.holed() ? p.strokes() - 1 : 4, MAX_LEVELS) : 0;
             ExhaustiveStrokeSearch.Result s = cap < 1 ? null : ExhaustiveStrokeSearch.search(w,

@@ -39,6 +39,7 @@ public final class AStarBot extends SearchBot {
         List<double[]> points = Waypoints.find(maps.grid(), request.ballX(), request.ballY(), hole.x(), hole.y(),
                 request.token());
         sim.phase("aim");
+        sim.showPlan(Waypoints.route(request.ballX(), request.ballY(), points, hole.x(), hole.y()));
         Target next = points.size() <= 1 ? hole
                 : Target.point(request.ballX(), request.ballY(), points.get(0)[0], points.get(0)[1], 0.3);
         Aim.Aimed aimed = Aim.at(sim, next, shotsPerWaypoint);

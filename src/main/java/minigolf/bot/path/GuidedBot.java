@@ -44,6 +44,7 @@ public final class GuidedBot extends SearchBot {
         Target hole = Target.hole(sim, bx, by);
         List<double[]> points = Waypoints.find(maps.grid(), bx, by, hole.x(), hole.y(), request.token());
         if (points.isEmpty()) points = List.of(new double[] {hole.x(), hole.y()});
+        sim.showPlan(Waypoints.route(request.ballX(), request.ballY(), points, hole.x(), hole.y()));
         SplittableRandom random = new SplittableRandom(request.seed());
         Shot seed = directGuess(request.world(), bx, by);
         double holeDistance = hole.distance();

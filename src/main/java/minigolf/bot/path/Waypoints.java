@@ -13,6 +13,16 @@ public final class Waypoints {
     private Waypoints() {
     }
 
+    /** The whole route for drawing: the ball, the waypoints, and the hole (once). */
+    public static List<double[]> route(double ballX, double ballY, List<double[]> waypoints, double holeX, double holeY) {
+        List<double[]> route = new ArrayList<>();
+        route.add(new double[] {ballX, ballY});
+        route.addAll(waypoints);
+        double[] last = route.get(route.size() - 1);
+        if (last[0] != holeX || last[1] != holeY) route.add(new double[] {holeX, holeY});
+        return route;
+    }
+
     /** Points (x, y) after the ball up to and including the hole; empty when the hole is cut off. */
     public static List<double[]> find(CourseGrid grid, double ballX, double ballY, double holeX, double holeY,
                                       CancellationToken token) {

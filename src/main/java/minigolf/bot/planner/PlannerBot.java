@@ -16,7 +16,8 @@ import minigolf.physics.ShotResult;
 import minigolf.physics.World;
 
 /**
- * Our bot, the game's default (docs/bots.md). Per stroke:
+ * Our bot, the game's default (docs/bots.md); {@code planner-aces} adds {@link DenseSweep} on the
+ * first stroke. Per stroke:
  * <ol>
  * <li>If the hole is within about a maximum-speed roll (along the water-avoiding distance):
  *     Broyden's quasi-Newton method from the physics guess straight at the hole, aimed at the middle
@@ -54,9 +55,21 @@ public final class PlannerBot extends SearchBot {
     private World probeSource;
     private World probeWorld;
 
+    /** Whether the first stroke runs {@link DenseSweep} before settling for two ({@code planner-aces}). */
+    private final boolean denseSweep;
+
+    /** The game's default: no dense sweep (on our suites it finds no new ace and costs simulations). */
+    public PlannerBot() {
+        this(false);
+    }
+
+    public PlannerBot(boolean denseSweep) {
+        this.denseSweep = denseSweep;
+    }
+
     @Override
     public String name() {
-        return "planner";
+        return denseSweep ? "planner-aces" : "planner";
     }
 
     @Override
@@ -83,6 +96,9 @@ public final class PlannerBot extends SearchBot {
             if (k.world() == world && k.x() == px && k.y() == py) return k.shot();
         }
         Stroke stroke = new Stroke(solved, sim, probeFor(sim), maps, px, py, () -> planFor(world, request));
+        // The route it intends, for the game's and the editor's drawing; straight at the hole when cut off.
+        sim.showPlan(stroke.path.isEmpty() ? List.of(new double[] {px, py}, new double[] {stroke.holeX, stroke.holeY})
+                : stroke.path);
         Shot chosen = sim.limit(choose(request, stroke));
         // No stroke leads back (to a position played from, or lost): the engine is deterministic, so
         // where the chosen shot ends is known, usually without a new simulation.
@@ -109,6 +125,11 @@ public final class PlannerBot extends SearchBot {
             sim.phase("direct");
             Shot shot = new HoleInOne(stroke).holeInOne();
             if (shot != null) return shot;
+            if (denseSweep && request.strokesTaken() == 0) {
+                // The first stroke: search all round, densely, before settling for two.
+                shot = new DenseSweep(stroke).holeInOne();
+                if (shot != null) return shot;
+            }
             sim.phase("two strokes");
             TwoStrokes twoStrokes = new TwoStrokes(stroke);
             shot = twoStrokes.twoStrokes();
@@ -119,6 +140,10 @@ public final class PlannerBot extends SearchBot {
             // The sweep looks for two strokes: worth it when the plan sees no lay-up or a one-putt one.
             if (planned == null || planned.strokesLeft() <= 1) {
                 shot = twoStrokes.layupSweep();
+                if (shot != null) return shot;
+            }
+            if (denseSweep) {
+                shot = twoStrokes.wideLayupSweep();
                 if (shot != null) return shot;
             }
         }

@@ -55,6 +55,52 @@ final class TwoStrokes {
         return tryLayups(s.triedLayups, LAYUP_TRIES, true);
     }
 
+    /** The wide lay-up sweep ({@code planner-aces}): directions this far apart, at these fractions of the maximum speed. */
+    static final double WIDE_STEP = Math.toRadians(5);
+    static final double[] WIDE_SPEEDS = {0.4, 0.6, 0.8, 1.0};
+    static final int WIDE_TRIES = 10;
+
+    /**
+     * Where the plan's lay-up leaves more than one putt (a maze), the lay-up sweep's two roll
+     * lengths near the hole's line miss the lay-ups that one far-rolling or banked shot reaches:
+     * every direction {@link #WIDE_STEP} apart at {@link #WIDE_SPEEDS}, then the look-ahead
+     * from the best {@link #WIDE_TRIES} rest points from which a straight putt sees the hole.
+     */
+    Shot wideLayupSweep() {
+        s.sim.phase("wide lay-up sweep");
+        int directions = (int) Math.round(2 * Math.PI / WIDE_STEP);
+        double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
+        for (int i = 0; i < directions; i++) {
+            for (double f : WIDE_SPEEDS) {
+                Shot shot = s.sim.limit(Shot.polar(holeAngle + i * WIDE_STEP, f * s.sim.maxSpeed()));
+                if (s.evaluate(shot, s.holeX, s.holeY).holed()) return shot;
+            }
+        }
+        s.sim.phase("two strokes");
+        Shot shot = tryLayups(s.triedLayups, WIDE_TRIES, false);
+        if (shot != null) return shot;
+        return bankedLayup();
+    }
+
+    /** Lay-ups already tried (nearest first) once more, the look-ahead now allowing a bank shot off a wall. */
+    private Shot bankedLayup() {
+        int attempts = 0;
+        for (double[] t : s.triedLayups) {
+            if (attempts++ == WIDE_TRIES) break;
+            for (Eval e : s.restingProbes) {
+                if (e.restX() != t[0] || e.restY() != t[1]) continue;
+                Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, e.restX(), e.restY(), s.plan);
+                Shot bank = new HoleInOne(next).bankShot();
+                if (bank != null) {
+                    s.solved.add(new Solved(s.world, e.restX(), e.restY(), bank));
+                    return e.shot();
+                }
+                break;
+            }
+        }
+        return null;
+    }
+
     /**
      * Look-ahead from up to {@code tries} resting probes not near one already tried: those
      * from which a straight putt sees the hole clear of water within reach first (the cheap

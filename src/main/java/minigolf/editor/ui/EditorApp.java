@@ -34,6 +34,7 @@ import minigolf.editor.TerrainPicker;
 import minigolf.editor.ToolController;
 import minigolf.editor.ZoneTools;
 import minigolf.game.BotCatalog;
+import minigolf.ui.PlanOverlay;
 import minigolf.game.ShotPlanner;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
@@ -515,6 +516,9 @@ public final class EditorApp {
     private void drawMarkers(int fw, int fh) {
         ImDrawList dl = ImGui.getBackgroundDrawList();
         World w = editor.world();
+        if (botCheck != null && !botCheck.isDone()) {
+            PlanOverlay.draw(dl, botCheck.plan(), p -> screen(p[0], p[1], w.terrain().height(p[0], p[1]) + 0.03));
+        }
         // The tool: a ring on the terrain (the brush radius) or a cross for the object tool.
         double tx = tool.x(), ty = tool.y();
         int toolColour = tool.mode() == ToolController.Mode.TERRAIN ? 0xFF40E0FF : 0xFFFF9040; // ABGR
@@ -827,8 +831,12 @@ public final class EditorApp {
         ImGui.sameLine();
         if (ImGui.button("Play it")) playIt();
         if (botCheck != null) {
-            if (!botCheck.isDone()) ImGui.progressBar((float) botCheck.progress(), 200, 0, "bot playing...");
-            else if (botCheck.result() != null) ImGui.text(botCheck.result().describe());
+            if (!botCheck.isDone()) {
+                ImGui.text(botCheck.message());
+                ImGui.progressBar((float) botCheck.progress(), 200, 0);
+                ImGui.sameLine();
+                if (ImGui.button("Cancel##bot")) botCheck.cancel();
+            } else if (botCheck.result() != null) ImGui.text(botCheck.result().describe());
             else ImGui.text(botCheck.failure());
         }
         ImGui.end();

@@ -1,0 +1,43 @@
+package minigolf.bot;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@code planner-aces} (the planner with the dense first-shot sweep and the wide lay-up sweep)
+ * against the default planner, measured: where it gains a stroke, and that it keeps maze-e's.
+ */
+class PlannerAcesTest {
+    private static Playthrough.Result play(String bot, World world) {
+        return Playthrough.play(Bots.create(bot), world, SimulationSettings.DEFAULT, 10, 20_000, 1,
+                CancellationToken.withTimeLimit(60), BotProgress.NONE);
+    }
+
+    @Test
+    void theWideLayupSweepFindsMazeDsThreeStrokeGame() {
+        World mazeD = BenchCourses.load("maze-d");
+        Playthrough.Result planner = play("planner", mazeD), aces = play("planner-aces", mazeD);
+        assertEquals(4, planner.strokes());
+        assertEquals(3, aces.strokes(), "the fewest the exhaustive search finds");
+        assertTrue(aces.simulations() <= 3_000, aces.simulations() + " simulations");
+    }
+
+    @Test
+    void onTileCourseSevenItPlaysTheExhaustiveSearchsTwoStrokes() {
+        World tile7 = TileCourses.generate(424242, 8).get(7);
+        assertEquals(3, play("planner", tile7).strokes());
+        assertEquals(2, play("planner-aces", tile7).strokes());
+    }
+
+    @Test
+    void itKeepsMazeEsThreeStrokes() {
+        // Measured: before the banked look-ahead (bankedLayup) it played maze-e in 4.
+        World mazeE = BenchCourses.load("maze-e");
+        assertEquals(3, play("planner", mazeE).strokes());
+        assertEquals(3, play("planner-aces", mazeE).strokes());
+    }
+}
