@@ -7,6 +7,7 @@ import java.util.function.Supplier;
 import minigolf.bot.path.AStarBot;
 import minigolf.bot.path.GraphBot;
 import minigolf.bot.path.GuidedBot;
+import minigolf.bot.noise.RobustBot;
 import minigolf.bot.planner.PlannerBot;
 import minigolf.bot.search.GridBot;
 import minigolf.bot.search.LocalSearchBot;
@@ -30,6 +31,7 @@ public final class Bots {
         FACTORIES.put("astar-swarm", () -> new GuidedBot(GuidedBot.Solver.SWARM));
         FACTORIES.put("graph", GraphBot::new);
         FACTORIES.put("planner", PlannerBot::new);
+        FACTORIES.put("robust", RobustBot::new);
     }
 
     private Bots() {

@@ -19,7 +19,7 @@ class ManifestTest {
     private static final List<Manifest.CourseFile> COURSES = List.of(
             new Manifest.CourseFile("flat", Manifest.sha256("{\"a\":1}".getBytes(StandardCharsets.UTF_8))),
             new Manifest.CourseFile("lake", Manifest.sha256("{\"b\":2}".getBytes(StandardCharsets.UTF_8))));
-    private static final Manifest.Options OPTIONS = new Manifest.Options(List.of("planner", "newton"), 5, 20000, 10);
+    private static final Manifest.Options OPTIONS = Manifest.Options.of(List.of("planner", "newton"), 5, 20000, 10);
 
     @Test
     void theFingerprintCoversProgramOptionsAndCourseContentsButNotTheShard() {
@@ -31,9 +31,9 @@ class ManifestTest {
         assertEquals(m.fingerprint(), Manifest.of("minigolf 0.1.0", OPTIONS, COURSES).fingerprint());
         assertNotEquals(m.fingerprint(), Manifest.of("minigolf 0.1.1", OPTIONS, COURSES).fingerprint());
         assertNotEquals(m.fingerprint(), Manifest.of("minigolf 0.1.0",
-                new Manifest.Options(List.of("planner", "newton"), 5, 20001, 10), COURSES).fingerprint());
+                Manifest.Options.of(List.of("planner", "newton"), 5, 20001, 10), COURSES).fingerprint());
         assertNotEquals(m.fingerprint(), Manifest.of("minigolf 0.1.0",
-                new Manifest.Options(List.of("newton", "planner"), 5, 20000, 10), COURSES).fingerprint());
+                Manifest.Options.of(List.of("newton", "planner"), 5, 20000, 10), COURSES).fingerprint());
         Manifest changedCourse = Manifest.of("minigolf 0.1.0", OPTIONS, List.of(COURSES.get(0),
                 new Manifest.CourseFile("lake", Manifest.sha256("{\"b\":3}".getBytes(StandardCharsets.UTF_8)))));
         assertNotEquals(m.fingerprint(), changedCourse.fingerprint());
