@@ -84,7 +84,7 @@ class BotCommandsTest {
         CliRun unknown = run("solve", BENCH.resolve("flat-7m.json").toString(), "--bot", "oracle");
         assertEquals(2, unknown.code());
         assertEquals("minigolf: --bot: unknown bot 'oracle'; known: grid, local, newton, swarm, astar, astar-newton, "
-                + "astar-swarm, graph, planner", unknown.err().trim());
+                + "astar-swarm, graph, planner, robust", unknown.err().trim());
         Path broken = dir.resolve("broken.json");
         Files.writeString(broken, "{\"format\": 1}");
         CliRun bad = run("solve", broken.toString());

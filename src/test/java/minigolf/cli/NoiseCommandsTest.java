@@ -34,7 +34,7 @@ class NoiseCommandsTest {
     }
 
     private static String withoutClock(String json) {
-        return json.replaceAll("\"wallMs\" : [0-9.E-]+", "");
+        return json.replaceAll("\"wallMs\":[0-9.E-]+", "");
     }
 
     @Test

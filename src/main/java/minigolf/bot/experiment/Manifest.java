@@ -114,8 +114,15 @@ public record Manifest(int format, String program, String code, Options options,
 
     private static String describe(Options o) {
         return "--bots " + String.join(",", o.bots()) + " --seeds " + o.seeds() + " --budget " + o.budget()
-                + " --max-strokes " + o.maxStrokes() + " --noise-position " + join(o.noisePositions())
-                + " --noise-velocity " + join(o.noiseVelocities()) + (o.hideFriction() ? " --hide-friction" : "");
+                + " --max-strokes " + o.maxStrokes() + noise(o);
+    }
+
+    /** The noise options, when they are not the defaults. */
+    private static String noise(Options o) {
+        List<Double> none = List.of(0.0);
+        if (o.noisePositions().equals(none) && o.noiseVelocities().equals(none) && !o.hideFriction()) return "";
+        return " --noise-position " + join(o.noisePositions()) + " --noise-velocity " + join(o.noiseVelocities())
+                + (o.hideFriction() ? " --hide-friction" : "");
     }
 
     private static String join(List<Double> values) {
