@@ -667,7 +667,8 @@ public final class GameApp implements UiActions, UiView {
         round = null;
         cancelBot();
         animator = null;
-        game = new Game(world, settings.simulation(), players, settings.strokeLimit());
+        // The "realistic" noise, drawn from a new seed each game (saved with the game, so a resumed game goes on alike).
+        game = new Game(world, settings.simulation(), players, settings.strokeLimit(), settings.noise(), System.nanoTime());
         camera.reset();
         screens.show(Screen.PLAYING);
         say(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
