@@ -150,6 +150,17 @@ class HiddenFrictionTest {
         assertTrue(r.botErrors().isEmpty(), r.botErrors().toString());
     }
 
+    /** Maze B's layout on a slow green (courses/friction): walls stop balls short, the fit must not be fooled. */
+    @Test
+    void inAMazeTheEstimateIsWithinFivePercentAfterTwoStrokes() throws CourseException {
+        World truth = World.load(java.nio.file.Path.of(System.getProperty("minigolf.projectDir", "."))
+                .resolve("courses/friction/maze-b-slow.json"));
+        Playthrough.Result r = Playthrough.play(new PlannerBot(), truth, SimulationSettings.DEFAULT, 10, 100_000, 1,
+                CancellationToken.none(), BotProgress.NONE, new PlayConditions(NoiseModel.NONE, true));
+        assertTrue(r.holed() && r.shots().size() >= 2, r.toString());
+        assertEquals(0.14, FrictionPrior.KINETIC * r.shots().get(1).frictionScale(), 0.05 * 0.14);
+    }
+
     @Test
     void theEstimateAlsoConvergesUnderVelocityNoise() {
         World truth = parse(FLAT);
