@@ -300,7 +300,7 @@ public final class GameApp implements UiActions, UiView {
                 }
                 PlayerState s = game.player(seat);
                 botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
-                        31L * game.history().size() + seat);
+                        31L * game.history().size() + seat, game.noise());
             } else if (botTurn.isDone()) {
                 BotTurn done = botTurn;
                 botTurn = null;

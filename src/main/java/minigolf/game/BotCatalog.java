@@ -12,6 +12,7 @@ import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
+import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 
@@ -81,6 +82,12 @@ public final class BotCatalog {
 
             public double[] plan(World world, SimulationSettings settings, double x, double y, int strokes, long seed,
                                  Control control) {
+                return plan(world, settings, x, y, strokes, seed, NoiseModel.NONE, control);
+            }
+
+            @Override
+            public double[] plan(World world, SimulationSettings settings, double x, double y, int strokes, long seed,
+                                 NoiseModel noise, Control control) {
                 CancellationToken token = CancellationToken.withTimeLimit(TIME_LIMIT_PER_STROKE);
                 control.whenCancelled(token::cancel);
                 long started = System.nanoTime();
@@ -89,7 +96,7 @@ public final class BotCatalog {
                         (used, budget, phase) -> control.progress(Math.min(1, Math.max((double) used / budget,
                                         (System.nanoTime() - started) / 1e9 / TIME_LIMIT_PER_STROKE)),
                                 phase + ": " + used + " simulations"));
-                Shot shot = sim.limit(bot.nextShot(new BotRequest(sim, x, y, strokes, seed)));
+                Shot shot = sim.limit(bot.nextShot(new BotRequest(sim, x, y, strokes, seed, noise)));
                 return new double[]{shot.vx(), shot.vy()};
             }
         };

@@ -21,6 +21,12 @@ public final class BotTurn {
 
     public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
                    long seed) {
+        this(planner, world, settings, x, y, strokesTaken, seed, minigolf.bot.noise.NoiseModel.NONE);
+    }
+
+    /** A turn in a game played with {@code noise}: the planner is told it (the robust bot plays for it). */
+    public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
+                   long seed, minigolf.bot.noise.NoiseModel noise) {
         ShotPlanner.Control control = new ShotPlanner.Control() {
             @Override
             public void progress(double fraction, String text) {
@@ -41,7 +47,7 @@ public final class BotTurn {
         };
         thread = new Thread(() -> {
             try {
-                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, control);
+                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, noise, control);
                 if (cancelled.get()) {
                     failure = "cancelled";
                 } else if (v == null || v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {

@@ -28,4 +28,14 @@ public interface ShotPlanner {
      * @throws java.util.concurrent.CancellationException if {@code control.isCancelled()} became true
      */
     double[] plan(World world, SimulationSettings settings, double x, double y, int strokesTaken, long seed, Control control);
+
+    /**
+     * As {@link #plan(World, SimulationSettings, double, double, int, long, Control)} in a game whose
+     * strokes are played with {@code noise} (the "realistic" setting); planners that do not model
+     * noise ignore it.
+     */
+    default double[] plan(World world, SimulationSettings settings, double x, double y, int strokesTaken, long seed,
+                          minigolf.bot.noise.NoiseModel noise, Control control) {
+        return plan(world, settings, x, y, strokesTaken, seed, control);
+    }
 }

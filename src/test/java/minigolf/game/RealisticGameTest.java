@@ -80,4 +80,26 @@ class RealisticGameTest {
         assertEquals(store.file() + ": noiseVelocity must be 0 to 1.0 m/s, got 5.0",
                 assertThrows(SaveGameException.class, store::load).getMessage());
     }
+
+    @Test
+    void aBotPlayerIsToldTheNoise() {
+        double x = GameTest.FLAT.course().start().x(), y = GameTest.FLAT.course().start().y();
+        ShotPlanner robust = BotCatalog.planner("robust");
+        ShotPlanner.Control control = new ShotPlanner.Control() {
+            public void progress(double fraction, String message) {
+            }
+
+            public boolean isCancelled() {
+                return false;
+            }
+
+            public void whenCancelled(Runnable action) {
+            }
+        };
+        double[] exact = robust.plan(GameTest.FLAT, SimulationSettings.DEFAULT, x, y, 0, 3, control);
+        double[] planner = BotCatalog.planner("planner").plan(GameTest.FLAT, SimulationSettings.DEFAULT, x, y, 0, 3, control);
+        assertEquals(planner[0], exact[0], 0.0, "without noise, the planner's shot");
+        double[] noisy = robust.plan(GameTest.FLAT, SimulationSettings.DEFAULT, x, y, 0, 3, NOISE, control);
+        assertTrue(Double.isFinite(noisy[0]) && Math.hypot(noisy[0], noisy[1]) <= GameTest.FLAT.physics().maxSpeed());
+    }
 }
