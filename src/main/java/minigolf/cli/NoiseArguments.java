@@ -27,6 +27,7 @@ final class NoiseArguments {
                 throw new UserError(option + ": not a number: '" + t + "'");
             }
             check(option, v);
+            v += 0.0; // -0 is 0: one cell, the same fingerprint
             if (!values.contains(v)) values.add(v);
         }
         return values;

@@ -56,8 +56,9 @@ public final class RobustBot implements Bot {
         Shot base = planner.nextShot(request);
         NoiseModel noise = request.noise();
         if (noise.isNone()) return base;
-        Choice choice = new Choice(request, base);
+        Choice choice = null;
         try {
+            choice = new Choice(request, base);
             choice.search();
         } catch (BudgetExhaustedException e) {
             // The best scored so far (the planner's shot if none was).
@@ -67,7 +68,7 @@ public final class RobustBot implements Bot {
             request.simulator().recordError(name() + ": " + e);
             if (request.token().isCancelled()) throw new BotCancelledException();
         }
-        return choice.best;
+        return choice == null ? base : choice.best;
     }
 
     /** One stroke's choice: the candidates, the common noise draws and the best so far. */

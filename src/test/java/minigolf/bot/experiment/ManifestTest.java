@@ -42,6 +42,24 @@ class ManifestTest {
     }
 
     @Test
+    void theNoiseGridAndHiddenFrictionArePartOfTheExperiment() {
+        Manifest m = Manifest.of("minigolf 0.1.0", OPTIONS, COURSES);
+        Manifest noisy = Manifest.of("minigolf 0.1.0", new Manifest.Options(List.of("planner", "newton"), 5, 20000, 10,
+                List.of(0.0, 0.01), List.of(0.0, 0.05, 0.1), false), COURSES);
+        Manifest hidden = Manifest.of("minigolf 0.1.0", new Manifest.Options(List.of("planner", "newton"), 5, 20000, 10,
+                List.of(0.0), List.of(0.0), true), COURSES);
+        assertEquals(2 * 6 * 2 * 5, noisy.runs(), "courses x noise cells x bots x seeds");
+        assertNotEquals(m.fingerprint(), noisy.fingerprint());
+        assertNotEquals(m.fingerprint(), hidden.fingerprint());
+        assertTrue(m.differences(noisy).contains("--noise-position 0.0,0.01 --noise-velocity 0.0,0.05,0.1"),
+                m.differences(noisy));
+        assertTrue(m.differences(hidden).endsWith("--hide-friction against --bots planner,newton --seeds 5 --budget 20000"
+                + " --max-strokes 10"), m.differences(hidden));
+        // Run 0 of each cell: position noise outer, velocity inner.
+        assertEquals(new minigolf.bot.noise.NoiseModel(0.01, 0.05), noisy.plan().run(4 * 2 * 5).noise());
+    }
+
+    @Test
     void aManifestRoundTripsAndAHandEditIsCaught(@TempDir Path dir) throws IOException {
         assertNull(Manifest.read(dir));
         Manifest m = Manifest.of("minigolf 0.1.0", OPTIONS, COURSES).forShard(new Shard(1, 3));
