@@ -90,6 +90,8 @@ final class SolveCommand implements Callable<Integer> {
             ObjectNode shot = shots.addObject();
             shot.set("velocity", velocity(s.shot()));
             shot.set("intended", velocity(s.intended()));
+            // With position noise the stroke did not start where the ball lay: where it did.
+            if (conditions.noise().position() > 0) shot.set("start", Json.array(s.startX(), s.startY()));
             shot.put("outcome", s.result().outcome().jsonName());
             shot.set("end", Json.array(s.result().endX(), s.result().endY()));
             shot.put("simulations", s.simulations());

@@ -27,6 +27,12 @@ class NoiseCommandsTest {
         assertEquals(0.01, json.get("noise").get("position").asDouble());
         assertEquals(0.05, json.get("noise").get("velocity").asDouble());
         JsonNode first = json.get("shots").get(0);
+        List<String> keys = new java.util.ArrayList<>();
+        first.fieldNames().forEachRemaining(keys::add);
+        assertEquals(List.of("velocity", "intended", "start", "outcome", "end", "simulations"), keys);
+        double startX = first.get("start").get(0).asDouble();
+        assertTrue(startX != json.get("shots").get(0).get("end").get(0).asDouble() && Math.abs(startX + 8) < 0.06,
+                "the start strays by the position noise: " + startX);
         assertNotEquals(first.get("intended"), first.get("velocity"), "the played shot carries the noise");
         double dx = first.get("velocity").get(0).asDouble() - first.get("intended").get(0).asDouble();
         assertTrue(Math.abs(dx) < 0.05 * 6, "an error of six standard deviations: " + dx);
