@@ -40,6 +40,8 @@ public final class RobustBot implements Bot {
     static final double SIGNIFICANCE = 2;
     /** Shots the planner simulated that are scored besides its choice. */
     static final int CANDIDATES = 5;
+    /** Speeds (as fractions of the planner's ace attempt) of the lay-ups along its line that are scored too. */
+    static final double[] LAYUP_FACTORS = {0.7, 0.85};
     /** Pattern-search rounds (each halves the step when no neighbour is better). */
     static final int ROUNDS = 3;
 
@@ -142,6 +144,9 @@ public final class RobustBot implements Bot {
                 Shot s = e.getKey();
                 if (out.stream().noneMatch(o -> Math.hypot(o.vx() - s.vx(), o.vy() - s.vy()) < spread)) out.add(s);
             }
+            // The same line, softer: a lay-up short of the hole, for when the ace risks the water or the edge.
+            Shot ace = out.get(0);
+            for (double f : LAYUP_FACTORS) out.add(new Shot(ace.vx() * f, ace.vy() * f, ace.vz() * f));
             return out;
         }
 
