@@ -16,6 +16,7 @@ import minigolf.course.CourseException;
 import minigolf.game.AimModel;
 import minigolf.game.BallReadout;
 import minigolf.game.BotCatalog;
+import minigolf.game.BotConditions;
 import minigolf.game.BotTurn;
 import minigolf.game.CourseEdits;
 import minigolf.game.AudioSettings;
@@ -300,7 +301,8 @@ public final class GameApp implements UiActions, UiView {
                 }
                 PlayerState s = game.player(seat);
                 botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
-                        31L * game.history().size() + seat, game.noise());
+                        31L * game.history().size() + seat,
+                        BotConditions.of(game, seat, settings.hideFrictionFromBots()));
             } else if (botTurn.isDone()) {
                 BotTurn done = botTurn;
                 botTurn = null;

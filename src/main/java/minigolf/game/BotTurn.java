@@ -21,12 +21,12 @@ public final class BotTurn {
 
     public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
                    long seed) {
-        this(planner, world, settings, x, y, strokesTaken, seed, minigolf.bot.noise.NoiseModel.NONE);
+        this(planner, world, settings, x, y, strokesTaken, seed, BotConditions.NONE);
     }
 
-    /** A turn in a game played with {@code noise}: the planner is told it (the robust bot plays for it). */
+    /** A turn under {@code conditions}: the game's noise (the robust bot plays for it) and hidden friction. */
     public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
-                   long seed, minigolf.bot.noise.NoiseModel noise) {
+                   long seed, BotConditions conditions) {
         ShotPlanner.Control control = new ShotPlanner.Control() {
             @Override
             public void progress(double fraction, String text) {
@@ -47,7 +47,7 @@ public final class BotTurn {
         };
         thread = new Thread(() -> {
             try {
-                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, noise, control);
+                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, conditions, control);
                 if (cancelled.get()) {
                     failure = "cancelled";
                 } else if (v == null || v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {

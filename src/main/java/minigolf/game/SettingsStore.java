@@ -23,7 +23,8 @@ import minigolf.physics.Integrator;
 public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
-            "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "noisePosition", "noiseVelocity");
+            "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "noisePosition", "noiseVelocity",
+            "hideFrictionFromBots");
 
     private final Path directory;
 
@@ -93,7 +94,8 @@ public final class SettingsStore {
                     root.has("heightColours") ? f.bool(root, null, "heightColours") : d.heightColours(),
                     names,
                     root.has("noisePosition") ? f.number(root, null, "noisePosition") : d.noisePosition(),
-                    root.has("noiseVelocity") ? f.number(root, null, "noiseVelocity") : d.noiseVelocity());
+                    root.has("noiseVelocity") ? f.number(root, null, "noiseVelocity") : d.noiseVelocity(),
+                    root.has("hideFrictionFromBots") ? f.bool(root, null, "hideFrictionFromBots") : d.hideFrictionFromBots());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
         }
@@ -151,6 +153,7 @@ public final class SettingsStore {
         s.playerNames().forEach(names::add);
         root.put("noisePosition", s.noisePosition());
         root.put("noiseVelocity", s.noiseVelocity());
+        root.put("hideFrictionFromBots", s.hideFrictionFromBots());
         try {
             Files.createDirectories(directory);
             String json = JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";

@@ -30,12 +30,12 @@ public interface ShotPlanner {
     double[] plan(World world, SimulationSettings settings, double x, double y, int strokesTaken, long seed, Control control);
 
     /**
-     * As {@link #plan(World, SimulationSettings, double, double, int, long, Control)} in a game whose
-     * strokes are played with {@code noise} (the "realistic" setting); planners that do not model
-     * noise ignore it.
+     * As {@link #plan(World, SimulationSettings, double, double, int, long, Control)} under
+     * {@code conditions}: the game's noise (the "realistic" setting) and hidden friction. Planners
+     * that model neither ignore them.
      */
     default double[] plan(World world, SimulationSettings settings, double x, double y, int strokesTaken, long seed,
-                          minigolf.bot.noise.NoiseModel noise, Control control) {
+                          BotConditions conditions, Control control) {
         return plan(world, settings, x, y, strokesTaken, seed, control);
     }
 }

@@ -16,12 +16,15 @@ import minigolf.physics.SimulationSettings;
  *                      (0 to {@value #MAX_NOISE_POSITION}), for every player, human or bot
  * @param noiseVelocity the "realistic" setting: standard deviation in m/s of the velocity played, per
  *                      component (0 to {@value #MAX_NOISE_VELOCITY})
+ * @param hideFrictionFromBots bot players see every friction value as a prior and learn the truth
+ *                      from their own strokes (minigolf.bot.friction)
  */
 public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                            double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
-                           double noisePosition, double noiseVelocity) {
+                           double noisePosition, double noiseVelocity, boolean hideFrictionFromBots) {
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
-            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0);
+            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0,
+            false);
     public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
     /** Beyond these a putt is a lottery, not "realistic". */
     public static final double MAX_NOISE_POSITION = 0.5, MAX_NOISE_VELOCITY = 1;
@@ -31,7 +34,8 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     /** Settings without noise. */
     public UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                         double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
-        this(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, 0, 0);
+        this(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, 0, 0,
+                false);
     }
 
     public UserSettings {
@@ -67,7 +71,12 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     /** The "realistic" setting: both noises at once (0 turns it off). */
     public UserSettings withNoise(double position, double velocity) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, position, velocity);
+                playerNames, position, velocity, hideFrictionFromBots);
+    }
+
+    public UserSettings withHideFrictionFromBots(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, v);
     }
 
     /** The simulation settings a new game uses. */
@@ -76,38 +85,47 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     }
 
     public UserSettings withIntegrator(Integrator v) {
-        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withDt(double v) {
-        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withVsync(boolean v) {
-        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withFrameLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withFullscreen(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withMouseSpeed(double v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withStrokeLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withHeightColours(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v, playerNames, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, v, noisePosition, noiseVelocity);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 }

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.List;
 import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -70,7 +71,8 @@ class RealisticGameTest {
     @Test
     void theSettingIsValidatedAndKept() throws Exception {
         SettingsStore store = new SettingsStore(dir.resolve("minigolf"));
-        UserSettings s = UserSettings.DEFAULTS.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY);
+        UserSettings s = UserSettings.DEFAULTS.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY)
+                .withHideFrictionFromBots(true);
         store.save(s);
         assertEquals(s, store.load());
         assertEquals(new NoiseModel(0.01, 0.05), store.load().noise());
@@ -99,7 +101,35 @@ class RealisticGameTest {
         double[] exact = robust.plan(GameTest.FLAT, SimulationSettings.DEFAULT, x, y, 0, 3, control);
         double[] planner = BotCatalog.planner("planner").plan(GameTest.FLAT, SimulationSettings.DEFAULT, x, y, 0, 3, control);
         assertEquals(planner[0], exact[0], 0.0, "without noise, the planner's shot");
-        double[] noisy = robust.plan(GameTest.FLAT, SimulationSettings.DEFAULT, x, y, 0, 3, NOISE, control);
+        double[] noisy = robust.plan(GameTest.FLAT, SimulationSettings.DEFAULT, x, y, 0, 3,
+                new BotConditions(NOISE, false, List.of()), control);
         assertTrue(Double.isFinite(noisy[0]) && Math.hypot(noisy[0], noisy[1]) <= GameTest.FLAT.physics().maxSpeed());
+    }
+
+    /** A slow flat green (mu_k 0.16): a bot given hidden friction learns it from its first stroke. */
+    @Test
+    void aBotPlayerWithHiddenFrictionLearnsFromItsOwnStrokes() {
+        World slow = minigolf.bot.friction.HiddenFrictionTestAccess.slowFlat();
+        Game g = new Game(slow, SimulationSettings.DEFAULT, List.of(Player.bot("Robo", "planner")), 10);
+        ShotPlanner planner = BotCatalog.planner("planner");
+        ShotPlanner.Control control = new ShotPlanner.Control() {
+            public void progress(double fraction, String message) {
+            }
+
+            public boolean isCancelled() {
+                return false;
+            }
+
+            public void whenCancelled(Runnable action) {
+            }
+        };
+        for (int stroke = 0; stroke < 2 && !g.isOver(); stroke++) {
+            PlayerState s = g.player(0);
+            double[] v = planner.plan(slow, SimulationSettings.DEFAULT, s.x(), s.y(), s.total(), stroke,
+                    BotConditions.of(g, 0, true), control);
+            g.play(v[0], v[1]);
+        }
+        assertEquals(2, g.history().size(), "the first stroke, planned on the prior (mu_k 0.1), stops short");
+        assertTrue(g.player(0).status() == PlayerStatus.HOLED, "the second, on the estimate, holes: " + g.history());
     }
 }
