@@ -16,6 +16,8 @@ import minigolf.course.CourseException;
 import minigolf.game.AimModel;
 import minigolf.game.BallReadout;
 import minigolf.game.BotSeats;
+import minigolf.game.BotCatalog;
+import minigolf.game.BotConditions;
 import minigolf.game.BotTurn;
 import minigolf.game.CourseEdits;
 import minigolf.game.AudioSettings;
@@ -302,7 +304,8 @@ public final class GameApp implements UiActions, UiView {
                 }
                 PlayerState s = game.player(seat);
                 botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
-                        31L * game.history().size() + seat);
+                        31L * game.history().size() + seat,
+                        BotConditions.of(game, seat, settings.hideFrictionFromBots()));
             } else if (botTurn.isDone()) {
                 BotTurn done = botTurn;
                 botTurn = null;
@@ -669,7 +672,8 @@ public final class GameApp implements UiActions, UiView {
         round = null;
         cancelBot();
         animator = null;
-        game = new Game(world, settings.simulation(), players, settings.strokeLimit());
+        // The "realistic" noise, drawn from a new seed each game (saved with the game, so a resumed game goes on alike).
+        game = new Game(world, settings.simulation(), players, settings.strokeLimit(), settings.noise(), System.nanoTime());
         camera.reset();
         screens.show(Screen.PLAYING);
         say(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");

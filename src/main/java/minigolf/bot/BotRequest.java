@@ -1,5 +1,6 @@
 package minigolf.bot;
 
+import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.World;
 
 /**
@@ -14,8 +15,20 @@ import minigolf.physics.World;
  * @param ballY        where the ball lies
  * @param strokesTaken strokes already played on this hole (penalties included)
  * @param seed         the seed for this stroke: same request, same shot
+ * @param noise        the noise the played stroke will get (public knowledge, like the course);
+ *                     the simulator itself is always exact
  */
-public record BotRequest(CountingSimulator simulator, double ballX, double ballY, int strokesTaken, long seed) {
+public record BotRequest(CountingSimulator simulator, double ballX, double ballY, int strokesTaken, long seed,
+                         NoiseModel noise) {
+    public BotRequest {
+        if (noise == null) throw new IllegalArgumentException("noise must be given (NoiseModel.NONE for none)");
+    }
+
+    /** A request without noise. */
+    public BotRequest(CountingSimulator simulator, double ballX, double ballY, int strokesTaken, long seed) {
+        this(simulator, ballX, ballY, strokesTaken, seed, NoiseModel.NONE);
+    }
+
     public World world() {
         return simulator.world();
     }

@@ -7,6 +7,7 @@ import java.util.function.Supplier;
 import minigolf.bot.path.AStarBot;
 import minigolf.bot.path.GraphBot;
 import minigolf.bot.path.GuidedBot;
+import minigolf.bot.noise.RobustBot;
 import minigolf.bot.planner.PlannerBot;
 import minigolf.bot.search.GridBot;
 import minigolf.bot.search.LocalSearchBot;
@@ -33,6 +34,7 @@ public final class Bots {
         // The planner with a dense hole-in-one sweep on the first stroke (docs/bots.md): for real
         // courses, where aces the planner misses exist; on our suites it only costs simulations.
         FACTORIES.put("planner-aces", () -> new PlannerBot(true));
+        FACTORIES.put("robust", RobustBot::new);
     }
 
     private Bots() {

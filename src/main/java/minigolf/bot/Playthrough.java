@@ -3,6 +3,10 @@ package minigolf.bot;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
+import minigolf.bot.friction.FrictionEstimator;
+import minigolf.bot.friction.FrictionPrior;
+import minigolf.bot.noise.PlayedStroke;
+import minigolf.bot.noise.ShotNoise;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
@@ -11,12 +15,30 @@ import minigolf.physics.World;
 
 /**
  * A bot plays a course from its start, stroke by stroke, with the game's rules: water or out of
- * bounds costs a penalty stroke and the ball goes back where the stroke began. The shots played
- * are the game's own and are not counted as bot simulations.
+ * bounds costs a penalty stroke and the ball goes back where the stroke began (where the ball lay,
+ * not the noisy start). The shots played are the game's own and are not counted as bot simulations.
+ *
+ * <p>Under {@link PlayConditions}: the bot's choice is perturbed by {@link ShotNoise} before it is
+ * played in the true world (the bot's own simulations stay exact); with hidden friction the bot
+ * simulates a world holding only the prior ({@link FrictionPrior}), re-fitted after each stroke by
+ * a {@link FrictionEstimator} from what the bot knows: where the ball lay, the shot it chose and
+ * where the ball came to rest. The estimator's simulations count as the bot's.
  */
 public final class Playthrough {
-    /** One stroke: what the bot chose, what happened, and the simulations it used to choose it. */
-    public record PlayedShot(Shot shot, ShotResult result, long simulations) {
+    /** Mixed into the game's seed for the noise stream, so the bot's seeds stay those of a noiseless game. */
+    private static final long NOISE_SEED_SALT = 0x6E6F6973652D3132L;
+
+    /**
+     * One stroke: the shot played, what happened, the simulations the bot used to choose it, the
+     * shot the bot chose ({@code intended}), where the stroke really started, and the friction
+     * estimate (scale of the prior) after it; NaN when friction is not hidden.
+     */
+    public record PlayedShot(Shot shot, ShotResult result, long simulations, Shot intended, double startX,
+                             double startY, double frictionScale) {
+        /** A stroke played exactly as chosen. */
+        public PlayedShot(Shot shot, ShotResult result, long simulations) {
+            this(shot, result, simulations, shot, Double.NaN, Double.NaN, Double.NaN);
+        }
     }
 
     /**
@@ -34,16 +56,26 @@ public final class Playthrough {
     private Playthrough() {
     }
 
+    /** A game without noise, friction known. */
+    public static Result play(Bot bot, World world, SimulationSettings settings, int maxStrokes, long budget,
+                              long seed, CancellationToken token, BotProgress progress) {
+        return play(bot, world, settings, maxStrokes, budget, seed, token, progress, PlayConditions.NONE);
+    }
+
     /**
      * Plays until holed, until {@code maxStrokes} shots are played, or until the budget or the
      * token's time limit ({@link CancellationToken#withTimeLimit}, for the whole game) is spent
      * (the stroke during which it ran out is still played with the bot's best shot).
      */
     public static Result play(Bot bot, World world, SimulationSettings settings, int maxStrokes, long budget,
-                              long seed, CancellationToken token, BotProgress progress) {
+                              long seed, CancellationToken token, BotProgress progress, PlayConditions conditions) {
         long started = System.nanoTime();
-        CountingSimulator counting = new CountingSimulator(world, settings, budget, token, progress);
+        FrictionEstimator estimator = conditions.hideFriction() ? new FrictionEstimator(FrictionPrior.scaled(world, 1)) : null;
+        CountingSimulator counting = new CountingSimulator(estimator != null ? estimator.world() : world, settings,
+                budget, token, progress);
+        CountingSimulator botSim = counting;
         Simulator game = new Simulator(world, settings);
+        ShotNoise noise = new ShotNoise(conditions.noise(), world, seed ^ NOISE_SEED_SALT);
         SplittableRandom seeds = new SplittableRandom(seed);
         double x = world.course().start().x(), y = world.course().start().y();
         List<PlayedShot> played = new ArrayList<>();
@@ -51,10 +83,16 @@ public final class Playthrough {
         boolean holed = false;
         while (played.size() < maxStrokes && !holed) {
             long before = counting.count();
-            Shot shot = bot.nextShot(new BotRequest(counting, x, y, strokes, seeds.nextLong()));
-            shot = counting.limit(shot);
-            ShotResult result = CountingSimulator.play(game, x, y, shot, null);
-            played.add(new PlayedShot(shot, result, counting.count() - before));
+            Shot intended = bot.nextShot(new BotRequest(botSim, x, y, strokes, seeds.nextLong(), conditions.noise()));
+            intended = counting.limit(intended);
+            PlayedStroke stroke = conditions.noise().isNone() ? new PlayedStroke(x, y, intended) : noise.play(x, y, intended);
+            ShotResult result = CountingSimulator.play(game, stroke.x(), stroke.y(), stroke.shot(), null);
+            if (estimator != null && estimator.observe(counting,
+                    new FrictionEstimator.Observation(x, y, intended, result.endX(), result.endY()), result.outcome())) {
+                botSim = counting.variant(estimator.world(), true);
+            }
+            played.add(new PlayedShot(stroke.shot(), result, counting.count() - before, intended, stroke.x(), stroke.y(),
+                    estimator != null ? estimator.scale() : Double.NaN));
             strokes++;
             if (result.outcome() == Outcome.HOLED) {
                 holed = true;

@@ -75,6 +75,19 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "Wall time per game in seconds (default: ${DEFAULT-VALUE}): the bot then plays its best shot so far and the game stops.")
     double timeLimit = BotArguments.DEFAULT_TIME_LIMIT;
 
+    @Option(names = "--noise-position", paramLabel = "S,S,...",
+            description = "Standard deviations in metres of each stroke's start, per axis; a list makes a grid with "
+                    + "--noise-velocity (default: ${DEFAULT-VALUE}).")
+    String noisePositions = "0";
+
+    @Option(names = "--noise-velocity", paramLabel = "S,S,...",
+            description = "Standard deviations in m/s of the velocity played, per component (default: ${DEFAULT-VALUE}).")
+    String noiseVelocities = "0";
+
+    @Option(names = "--hide-friction",
+            description = "Bots see every friction value as a prior and learn the truth from their strokes (default: ${DEFAULT-VALUE}).")
+    boolean hideFriction;
+
     @Override
     public Integer call() throws InterruptedException {
         try {
@@ -90,6 +103,8 @@ final class ExperimentCommand implements Callable<Integer> {
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
         BotArguments.timeLimit(timeLimit);
+        List<Double> positions = NoiseArguments.list("--noise-position", noisePositions);
+        List<Double> velocities = NoiseArguments.list("--noise-velocity", noiseVelocities);
         int workers = threads != null ? threads : defaultThreads();
         if (workers < 1) throw new UserError("--threads: must be at least 1, got " + workers);
         if (shards != null && shards < 1) throw new UserError("--shards: must be at least 1, got " + shards);
@@ -101,8 +116,10 @@ final class ExperimentCommand implements Callable<Integer> {
         List<Manifest.CourseFile> files = new ArrayList<>();
         loadSuite(suite, courses, files);
         Manifest manifest = Manifest.of(spec.root().version()[0],
-                new Manifest.Options(bots, seeds, budget, maxStrokes), files).forShard(shard);
-        Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers, timeLimit);
+                new Manifest.Options(bots, seeds, budget, maxStrokes, positions, velocities, hideFriction), files)
+                .forShard(shard);
+        Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers, timeLimit,
+                RunPlan.grid(positions, velocities), hideFriction);
         Path folder = shard == null ? out : out.resolve(shard.folderName());
         PrintWriter err = spec.commandLine().getErr();
         refuseMixedFolders(shard);

@@ -8,7 +8,11 @@ import minigolf.bot.Bot;
 import minigolf.bot.BotProgress;
 import minigolf.bot.Bots;
 import minigolf.bot.CancellationToken;
+import minigolf.bot.PlayConditions;
 import minigolf.bot.Playthrough;
+import minigolf.bot.Shot;
+import minigolf.bot.friction.FrictionPrior;
+import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import picocli.CommandLine.Command;
@@ -41,20 +45,38 @@ final class SolveCommand implements Callable<Integer> {
             description = "Wall time for the whole game in seconds (default: ${DEFAULT-VALUE}): the bot then plays its best shot so far and the game stops.")
     double timeLimit = BotArguments.DEFAULT_TIME_LIMIT;
 
+    @Option(names = "--noise-position", paramLabel = "S",
+            description = "Standard deviation in metres of each stroke's start, per axis (default: ${DEFAULT-VALUE}).")
+    double noisePosition = 0;
+
+    @Option(names = "--noise-velocity", paramLabel = "S",
+            description = "Standard deviation in m/s of the velocity played, per component (default: ${DEFAULT-VALUE}).")
+    double noiseVelocity = 0;
+
+    @Option(names = "--hide-friction",
+            description = "The bot sees every friction value as a prior and learns the truth from its strokes (default: ${DEFAULT-VALUE}).")
+    boolean hideFriction;
+
     @Override
     public Integer call() {
         Bot chosen = BotArguments.bot(bot);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
         BotArguments.timeLimit(timeLimit);
+        NoiseModel noise = NoiseArguments.model(noisePosition, noiseVelocity);
         World world = CourseArgument.load(course);
+        PlayConditions conditions = new PlayConditions(noise, hideFriction);
         Playthrough.Result result = Playthrough.play(chosen, world, SimulationSettings.DEFAULT, maxStrokes, budget,
-                seed, CancellationToken.withTimeLimit(timeLimit), BotProgress.NONE);
-        spec.commandLine().getOut().println(Json.write(toJson(chosen.name(), world.course().name(), result)));
+                seed, CancellationToken.withTimeLimit(timeLimit), BotProgress.NONE, conditions);
+        spec.commandLine().getOut().println(Json.write(toJson(chosen.name(), world.course().name(), result, conditions)));
         return 0;
     }
 
     static ObjectNode toJson(String botName, String courseName, Playthrough.Result result) {
+        return toJson(botName, courseName, result, PlayConditions.NONE);
+    }
+
+    static ObjectNode toJson(String botName, String courseName, Playthrough.Result result, PlayConditions conditions) {
         ObjectNode out = Json.object();
         out.put("bot", botName);
         out.put("course", courseName);
@@ -66,12 +88,27 @@ final class SolveCommand implements Callable<Integer> {
         ArrayNode shots = out.putArray("shots");
         for (Playthrough.PlayedShot s : result.shots()) {
             ObjectNode shot = shots.addObject();
-            shot.set("velocity", s.shot().isPutt() ? Json.array(s.shot().vx(), s.shot().vy())
-                    : Json.array(s.shot().vx(), s.shot().vy(), s.shot().vz()));
+            shot.set("velocity", velocity(s.shot()));
+            shot.set("intended", velocity(s.intended()));
+            // With position noise the stroke did not start where the ball lay: where it did.
+            if (conditions.noise().position() > 0) shot.set("start", Json.array(s.startX(), s.startY()));
             shot.put("outcome", s.result().outcome().jsonName());
             shot.set("end", Json.array(s.result().endX(), s.result().endY()));
             shot.put("simulations", s.simulations());
+            if (conditions.hideFriction()) {
+                ObjectNode estimate = shot.putObject("frictionEstimate");
+                estimate.put("kineticFriction", FrictionPrior.KINETIC * s.frictionScale());
+                estimate.put("staticFriction", FrictionPrior.STATIC * s.frictionScale());
+            }
         }
+        ObjectNode noise = out.putObject("noise");
+        noise.put("position", conditions.noise().position());
+        noise.put("velocity", conditions.noise().velocity());
+        out.put("hideFriction", conditions.hideFriction());
         return out;
+    }
+
+    private static ArrayNode velocity(Shot s) {
+        return s.isPutt() ? Json.array(s.vx(), s.vy()) : Json.array(s.vx(), s.vy(), s.vz());
     }
 }

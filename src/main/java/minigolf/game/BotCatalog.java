@@ -13,6 +13,8 @@ import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
+import minigolf.bot.friction.FrictionEstimator;
+import minigolf.bot.friction.FrictionPrior;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 
@@ -70,6 +72,13 @@ public final class BotCatalog {
         return f == null ? null : f.get();
     }
 
+    /** The simulator of the friction estimated from the bot's own strokes (the prior's when none tells). */
+    private static CountingSimulator estimated(CountingSimulator prior, BotConditions conditions) {
+        FrictionEstimator estimator = new FrictionEstimator(prior.world());
+        for (BotConditions.OwnStroke s : conditions.ownStrokes()) estimator.observe(prior, s.observation(), s.outcome());
+        return estimator.world() == prior.world() ? prior : prior.variant(estimator.world(), true);
+    }
+
     /**
      * Adapts a bot: its simulations are counted against {@link #BUDGET_PER_STROKE}, its thinking
      * limited to {@link #TIME_LIMIT_PER_STROKE}, and both reported as progress.
@@ -82,6 +91,12 @@ public final class BotCatalog {
 
             public double[] plan(World world, SimulationSettings settings, double x, double y, int strokes, long seed,
                                  Control control) {
+                return plan(world, settings, x, y, strokes, seed, BotConditions.NONE, control);
+            }
+
+            @Override
+            public double[] plan(World world, SimulationSettings settings, double x, double y, int strokes, long seed,
+                                 BotConditions conditions, Control control) {
                 CancellationToken token = CancellationToken.withTimeLimit(TIME_LIMIT_PER_STROKE);
                 control.whenCancelled(token::cancel);
                 long started = System.nanoTime();
@@ -96,8 +111,11 @@ public final class BotCatalog {
                         control.plan(points);
                     }
                 };
-                CountingSimulator sim = new CountingSimulator(world, settings, BUDGET_PER_STROKE, token, progress);
-                Shot shot = sim.limit(bot.nextShot(new BotRequest(sim, x, y, strokes, seed)));
+                // Hidden friction: the bot simulates the prior, re-fitted to its own strokes (counted in its budget).
+                World seen = conditions.hideFriction() ? FrictionPrior.scaled(world, 1) : world;
+                CountingSimulator sim = new CountingSimulator(seen, settings, BUDGET_PER_STROKE, token, progress);
+                CountingSimulator botSim = conditions.hideFriction() ? estimated(sim, conditions) : sim;
+                Shot shot = sim.limit(bot.nextShot(new BotRequest(botSim, x, y, strokes, seed, conditions.noise())));
                 return new double[]{shot.vx(), shot.vy()};
             }
         };

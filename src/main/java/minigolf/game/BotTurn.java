@@ -17,9 +17,15 @@ public final class BotTurn {
 
     public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
                    long seed) {
+        this(planner, world, settings, x, y, strokesTaken, seed, BotConditions.NONE);
+    }
+
+    /** A turn under {@code conditions}: the game's noise (the robust bot plays for it) and hidden friction. */
+    public BotTurn(ShotPlanner planner, World world, SimulationSettings settings, double x, double y, int strokesTaken,
+                   long seed, BotConditions conditions) {
         thread = new Thread(() -> {
             try {
-                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, control);
+                double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, conditions, control);
                 if (control.isCancelled()) {
                     failure = "cancelled";
                 } else if (v == null || v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {

@@ -3,6 +3,10 @@ package minigolf.game;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import minigolf.bot.Shot;
+import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.noise.PlayedStroke;
+import minigolf.bot.noise.ShotNoise;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
@@ -36,11 +40,26 @@ public final class Game {
     private final List<PlayerState> states = new ArrayList<>();
     private final List<ShotRecord> history = new ArrayList<>();
 
+    private final NoiseModel noise;
+    private final long noiseSeed;
     private Stroke stroke;
     private int strokePlayer = -1;
+    /** The stroke in flight as the player chose it (what a save keeps: the noise is drawn again, the same). */
     private double strokeVx, strokeVy;
+    /** The stroke in flight as played (what the history and replays keep). */
+    private PlayedStroke strokePlayed;
 
     public Game(World world, SimulationSettings settings, List<Player> players, int strokeLimit) {
+        this(world, settings, players, strokeLimit, NoiseModel.NONE, 0);
+    }
+
+    /**
+     * A game whose strokes are played with noise (the "realistic" setting, for every player, human
+     * or bot). Stroke n of the game (0-based, all players) draws its noise from a stream seeded by
+     * {@code noiseSeed} and n alone, so a restored game plays its next strokes as the original would.
+     */
+    public Game(World world, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
+                long noiseSeed) {
         if (world == null || settings == null) throw new IllegalArgumentException("world and settings must be given");
         if (players == null || players.isEmpty() || players.size() > MAX_PLAYERS) {
             throw new IllegalArgumentException("a game has 1 to " + MAX_PLAYERS + " players");
@@ -52,13 +71,15 @@ public final class Game {
         this.settings = settings;
         this.players = List.copyOf(players);
         this.strokeLimit = strokeLimit;
+        this.noise = noise == null ? NoiseModel.NONE : noise;
+        this.noiseSeed = noiseSeed;
         double sx = world.course().start().x(), sy = world.course().start().y();
         for (int i = 0; i < players.size(); i++) states.add(new PlayerState(sx, sy, 0, 0, PlayerStatus.PLAYING));
     }
 
     /** Rebuilds a game from saved state (see {@link GameState}); a stroke that was rolling starts again. */
     public static Game restore(World world, GameState saved) {
-        Game game = new Game(world, saved.settings(), saved.players(), saved.strokeLimit());
+        Game game = new Game(world, saved.settings(), saved.players(), saved.strokeLimit(), saved.noise(), saved.noiseSeed());
         game.states.clear();
         game.states.addAll(saved.states());
         game.history.addAll(saved.history());
@@ -73,7 +94,13 @@ public final class Game {
     /** Everything needed to resume this game exactly. A stroke in flight is saved as its start and velocity. */
     public GameState state() {
         PendingShot pending = stroke == null ? null : new PendingShot(strokeVx, strokeVy);
-        return new GameState(settings, players, strokeLimit, List.copyOf(states), List.copyOf(history), pending);
+        return new GameState(settings, players, strokeLimit, List.copyOf(states), List.copyOf(history), pending, noise,
+                noiseSeed);
+    }
+
+    /** The noise every stroke is played with ({@link NoiseModel#NONE}: as aimed). */
+    public NoiseModel noise() {
+        return noise;
     }
 
     public World world() {
@@ -142,6 +169,7 @@ public final class Game {
 
     /**
      * Hits the current player's ball with velocity (vx, vy) m/s and returns the stroke to advance.
+     * With noise the stroke played starts and leaves as {@link ShotNoise} draws it.
      *
      * @throws IllegalStateException    if a stroke is already rolling or the game is over
      * @throws IllegalArgumentException if the speed exceeds the course's maximum speed
@@ -156,11 +184,18 @@ public final class Game {
         int who = currentPlayer();
         if (who < 0) throw new IllegalStateException("the game is over");
         PlayerState s = states.get(who);
+        // The aimed stroke is checked as before (finite, not too fast); then the noise is drawn.
         Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, listener);
+        PlayedStroke played = new PlayedStroke(s.x(), s.y(), Shot.of(vx, vy));
+        if (!noise.isNone()) {
+            played = new ShotNoise(noise, world, noiseSeed + 0x9E3779B97F4A7C15L * history.size()).play(s.x(), s.y(), played.shot());
+            started = new Stroke(world, settings, played.x(), played.y(), played.shot().vx(), played.shot().vy(), listener);
+        }
         stroke = started;
         strokePlayer = who;
         strokeVx = vx;
         strokeVy = vy;
+        strokePlayed = played;
         return started;
     }
 
@@ -181,10 +216,13 @@ public final class Game {
         PlayerStatus status = r.outcome() == Outcome.HOLED ? PlayerStatus.HOLED
                 : hits + penalties >= strokeLimit ? PlayerStatus.PICKED_UP : PlayerStatus.PLAYING;
         states.set(strokePlayer, new PlayerState(x, y, hits, penalties, status));
-        ShotRecord record = new ShotRecord(strokePlayer, s.x(), s.y(), strokeVx, strokeVy, r.outcome(), r.endX(), r.endY());
+        // The stroke as played: a replay from the record ends exactly where play did.
+        ShotRecord record = new ShotRecord(strokePlayer, strokePlayed.x(), strokePlayed.y(), strokePlayed.shot().vx(),
+                strokePlayed.shot().vy(), r.outcome(), r.endX(), r.endY());
         history.add(record);
         stroke = null;
         strokePlayer = -1;
+        strokePlayed = null;
         return record;
     }
 

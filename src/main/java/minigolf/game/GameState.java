@@ -1,5 +1,7 @@
 package minigolf.game;
 
+import minigolf.bot.noise.NoiseModel;
+
 import java.util.List;
 import minigolf.physics.SimulationSettings;
 
@@ -8,8 +10,16 @@ import minigolf.physics.SimulationSettings;
  * count, the shots so far, and the shot in flight (null when the balls are at rest).
  */
 public record GameState(SimulationSettings settings, List<Player> players, int strokeLimit,
-                        List<PlayerState> states, List<ShotRecord> history, PendingShot pendingShot) {
+                        List<PlayerState> states, List<ShotRecord> history, PendingShot pendingShot, NoiseModel noise,
+                        long noiseSeed) {
+    /** A game without noise. */
+    public GameState(SimulationSettings settings, List<Player> players, int strokeLimit, List<PlayerState> states,
+                     List<ShotRecord> history, PendingShot pendingShot) {
+        this(settings, players, strokeLimit, states, history, pendingShot, NoiseModel.NONE, 0);
+    }
+
     public GameState {
+        if (noise == null) noise = NoiseModel.NONE;
         players = List.copyOf(players);
         states = List.copyOf(states);
         history = List.copyOf(history);

@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import minigolf.bot.noise.NoiseModel;
 import minigolf.course.CourseException;
 import minigolf.course.CourseWriter;
 import minigolf.course.Limits;
@@ -27,11 +28,13 @@ public final class SavedGames {
     public static final int FORMAT = 1;
     static final String KIND = "minigolf-saved-game";
     private static final List<String> TOP = List.of("format", "kind", "course", "simulation", "strokeLimit",
-            "players", "history", "pendingShot");
+            "players", "history", "pendingShot", "noise");
     private static final List<String> SIMULATION = List.of("integrator", "dt", "maxTime");
     private static final List<String> PLAYER = List.of("name", "kind", "bot", "ball", "strokes", "penalties", "status");
     private static final List<String> SHOT = List.of("player", "start", "velocity", "outcome", "end");
     private static final List<String> PENDING = List.of("velocity");
+    /** The "realistic" noise and its seed; absent in a game without noise (and in files from before it). */
+    private static final List<String> NOISE = List.of("position", "velocity", "seed");
 
     private SavedGames() {
     }
@@ -95,6 +98,12 @@ public final class SavedGames {
         }
         if (s.pendingShot() != null) {
             root.putObject("pendingShot").putArray("velocity").add(s.pendingShot().vx()).add(s.pendingShot().vy());
+        }
+        if (!s.noise().isNone()) {
+            ObjectNode noise = root.putObject("noise");
+            noise.put("position", s.noise().position());
+            noise.put("velocity", s.noise().velocity());
+            noise.put("seed", s.noiseSeed());
         }
         try {
             return JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";
@@ -209,7 +218,24 @@ public final class SavedGames {
             }
             pending = new PendingShot(v[0], v[1]);
         }
-        return new Loaded(world, new GameState(settings, players, strokeLimit, states, history, pending));
+        NoiseModel noise = NoiseModel.NONE;
+        long noiseSeed = 0;
+        JsonNode noiseNode = root.get("noise");
+        if (noiseNode != null && !noiseNode.isNull()) {
+            f.object(noiseNode, "noise");
+            f.onlyFields(noiseNode, "noise", NOISE);
+            try {
+                noise = new NoiseModel(f.number(noiseNode, "noise", "position"), f.number(noiseNode, "noise", "velocity"));
+            } catch (IllegalArgumentException e) {
+                throw f.error("noise", e.getMessage());
+            }
+            JsonNode seed = noiseNode.get("seed");
+            if (seed == null || !seed.canConvertToLong() || !seed.isIntegralNumber()) {
+                throw f.error("noise.seed", "must be a whole number");
+            }
+            noiseSeed = seed.longValue();
+        }
+        return new Loaded(world, new GameState(settings, players, strokeLimit, states, history, pending, noise, noiseSeed));
     }
 
     private static Outcome outcomeNamed(String name) {

@@ -23,7 +23,8 @@ import minigolf.physics.Integrator;
 public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
-            "mouseSpeed", "strokeLimit", "heightColours", "playerNames");
+            "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "noisePosition", "noiseVelocity",
+            "hideFrictionFromBots");
 
     private final Path directory;
 
@@ -91,7 +92,10 @@ public final class SettingsStore {
                     root.has("mouseSpeed") ? f.number(root, null, "mouseSpeed") : d.mouseSpeed(),
                     root.has("strokeLimit") ? f.integer(root, null, "strokeLimit", 1, Game.MAX_STROKE_LIMIT) : d.strokeLimit(),
                     root.has("heightColours") ? f.bool(root, null, "heightColours") : d.heightColours(),
-                    names);
+                    names,
+                    root.has("noisePosition") ? f.number(root, null, "noisePosition") : d.noisePosition(),
+                    root.has("noiseVelocity") ? f.number(root, null, "noiseVelocity") : d.noiseVelocity(),
+                    root.has("hideFrictionFromBots") ? f.bool(root, null, "hideFrictionFromBots") : d.hideFrictionFromBots());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
         }
@@ -147,6 +151,9 @@ public final class SettingsStore {
         root.put("heightColours", s.heightColours());
         ArrayNode names = root.putArray("playerNames");
         s.playerNames().forEach(names::add);
+        root.put("noisePosition", s.noisePosition());
+        root.put("noiseVelocity", s.noiseVelocity());
+        root.put("hideFrictionFromBots", s.hideFrictionFromBots());
         try {
             Files.createDirectories(directory);
             String json = JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";

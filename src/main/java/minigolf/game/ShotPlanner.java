@@ -32,4 +32,14 @@ public interface ShotPlanner {
      * @throws java.util.concurrent.CancellationException if {@code control.isCancelled()} became true
      */
     double[] plan(World world, SimulationSettings settings, double x, double y, int strokesTaken, long seed, Control control);
+
+    /**
+     * As {@link #plan(World, SimulationSettings, double, double, int, long, Control)} under
+     * {@code conditions}: the game's noise (the "realistic" setting) and hidden friction. Planners
+     * that model neither ignore them.
+     */
+    default double[] plan(World world, SimulationSettings settings, double x, double y, int strokesTaken, long seed,
+                          BotConditions conditions, Control control) {
+        return plan(world, settings, x, y, strokesTaken, seed, control);
+    }
 }

@@ -1,6 +1,7 @@
 package minigolf.game;
 
 import java.util.List;
+import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.Integrator;
 import minigolf.physics.SimulationSettings;
 
@@ -11,12 +12,31 @@ import minigolf.physics.SimulationSettings;
  * @param frameLimit  frames per second when vsync is off or has no effect (0 = unlimited)
  * @param mouseSpeed  camera rotation per pixel of drag, as a factor of the default
  * @param playerNames the names offered in the new-game dialog (1 to 4)
+ * @param noisePosition the "realistic" setting: standard deviation in m of each stroke's start, per axis
+ *                      (0 to {@value #MAX_NOISE_POSITION}), for every player, human or bot
+ * @param noiseVelocity the "realistic" setting: standard deviation in m/s of the velocity played, per
+ *                      component (0 to {@value #MAX_NOISE_VELOCITY})
+ * @param hideFrictionFromBots bot players see every friction value as a prior and learn the truth
+ *                      from their own strokes (minigolf.bot.friction)
  */
 public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
-                           double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
+                           double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
+                           double noisePosition, double noiseVelocity, boolean hideFrictionFromBots) {
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
-            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"));
+            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0,
+            false);
     public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
+    /** Beyond these a putt is a lottery, not "realistic". */
+    public static final double MAX_NOISE_POSITION = 0.5, MAX_NOISE_VELOCITY = 1;
+    /** What the Settings screen's "Realistic" box turns on: a club golfer's spread (docs/bots.md, "Noise"). */
+    public static final double REALISTIC_POSITION = 0.01, REALISTIC_VELOCITY = 0.05;
+
+    /** Settings without noise. */
+    public UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
+                        double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
+        this(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, 0, 0,
+                false);
+    }
 
     public UserSettings {
         if (integrator == null) throw new IllegalArgumentException("integrator must be given");
@@ -25,6 +45,12 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
         if (!(mouseSpeed >= 0.1 && mouseSpeed <= 10)) throw new IllegalArgumentException("mouseSpeed must be 0.1 to 10, got " + mouseSpeed);
         if (strokeLimit < 1 || strokeLimit > Game.MAX_STROKE_LIMIT) {
             throw new IllegalArgumentException("strokeLimit must be 1 to " + Game.MAX_STROKE_LIMIT + ", got " + strokeLimit);
+        }
+        if (!(noisePosition >= 0 && noisePosition <= MAX_NOISE_POSITION)) {
+            throw new IllegalArgumentException("noisePosition must be 0 to " + MAX_NOISE_POSITION + " m, got " + noisePosition);
+        }
+        if (!(noiseVelocity >= 0 && noiseVelocity <= MAX_NOISE_VELOCITY)) {
+            throw new IllegalArgumentException("noiseVelocity must be 0 to " + MAX_NOISE_VELOCITY + " m/s, got " + noiseVelocity);
         }
         playerNames = List.copyOf(playerNames);
         if (playerNames.isEmpty() || playerNames.size() > Game.MAX_PLAYERS) {
@@ -37,44 +63,69 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
         }
     }
 
+    /** The noise a new game plays every stroke with. */
+    public NoiseModel noise() {
+        return new NoiseModel(noisePosition, noiseVelocity);
+    }
+
+    /** The "realistic" setting: both noises at once (0 turns it off). */
+    public UserSettings withNoise(double position, double velocity) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, position, velocity, hideFrictionFromBots);
+    }
+
+    public UserSettings withHideFrictionFromBots(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, v);
+    }
+
     /** The simulation settings a new game uses. */
     public SimulationSettings simulation() {
         return new SimulationSettings(integrator, dt, SimulationSettings.DEFAULT_MAX_TIME);
     }
 
     public UserSettings withIntegrator(Integrator v) {
-        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withDt(double v) {
-        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withVsync(boolean v) {
-        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withFrameLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withFullscreen(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withMouseSpeed(double v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withStrokeLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withHeightColours(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, v);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots);
     }
 }

@@ -48,6 +48,8 @@ public final class Screens {
     private final ImInt integrator = new ImInt(2);
     private final ImInt stepsPerSecond = new ImInt(60);
     private final ImBoolean vsync = new ImBoolean(true);
+    private final ImBoolean realistic = new ImBoolean(false);
+    private final ImBoolean hideFriction = new ImBoolean(false);
     private final ImInt frameLimit = new ImInt(60);
     private final ImInt strokeLimit = new ImInt(Game.DEFAULT_STROKE_LIMIT);
     private final float[] mouseSpeed = {1f};
@@ -236,6 +238,8 @@ public final class Screens {
         integrator.set(s.integrator().ordinal());
         stepsPerSecond.set((int) Math.round(1 / s.dt()));
         vsync.set(s.vsync());
+        realistic.set(s.noisePosition() > 0 || s.noiseVelocity() > 0);
+        hideFriction.set(s.hideFrictionFromBots());
         frameLimit.set(s.frameLimit());
         strokeLimit.set(s.strokeLimit());
         mouseSpeed[0] = (float) s.mouseSpeed();
@@ -260,6 +264,8 @@ public final class Screens {
         ImGui.inputInt("Frame limit (0 = none)", frameLimit);
         ImGui.inputInt("Stroke limit", strokeLimit);
         ImGui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
+        ImGui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
+        ImGui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
         ImGui.sliderFloat("Volume", masterVolume, 0f, 1f);
         ImGui.sliderFloat("Effects", effectsVolume, 0f, 1f);
         ImGui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
@@ -274,7 +280,14 @@ public final class Screens {
                 int sps = stepsPerSecond.get();
                 UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
                         .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
-                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0]);
+                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
+                        .withHideFrictionFromBots(hideFriction.get());
+                // Keeps noise levels set in the settings file; the box turns the default levels on or all noise off.
+                boolean wasOn = s.noisePosition() > 0 || s.noiseVelocity() > 0;
+                if (realistic.get() != wasOn) {
+                    s = realistic.get() ? s.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY)
+                            : s.withNoise(0, 0);
+                }
                 CourseEdits e = new CourseEdits(course[0].get(), course[1].get(), course[2].get(), course[3].get(),
                         course[4].get(), course[5].get(), course[6].get(), course[7].get(), course[8].get());
                 actions.applySettings(s, e);

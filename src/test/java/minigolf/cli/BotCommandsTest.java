@@ -33,14 +33,17 @@ class BotCommandsTest {
         CliRun r = run("solve", BENCH.resolve("two-putt.json").toString(), "--bot", "planner", "--seed", "4");
         assertEquals(0, r.code(), r.err());
         JsonNode json = new ObjectMapper().readTree(r.out());
-        assertEquals(List.of("bot", "course", "holed", "strokes", "simulations", "wallMs", "timedOut", "shots"), fields(json));
+        assertEquals(List.of("bot", "course", "holed", "strokes", "simulations", "wallMs", "timedOut", "shots", "noise",
+                "hideFriction"), fields(json));
         assertEquals("planner", json.get("bot").asText());
         assertEquals("Two-putt (no hole-in-one)", json.get("course").asText());
         assertTrue(json.get("holed").asBoolean());
         assertEquals(2, json.get("strokes").asInt());
         JsonNode shots = json.get("shots");
         assertEquals(2, shots.size());
-        assertEquals(List.of("velocity", "outcome", "end", "simulations"), fields(shots.get(0)));
+        assertEquals(List.of("velocity", "intended", "outcome", "end", "simulations"), fields(shots.get(0)));
+        // Without noise the stroke is played as chosen.
+        assertEquals(shots.get(0).get("intended"), shots.get(0).get("velocity"));
         assertEquals("stopped", shots.get(0).get("outcome").asText());
         assertEquals("holed", shots.get(1).get("outcome").asText());
         long sum = shots.get(0).get("simulations").asLong() + shots.get(1).get("simulations").asLong();
@@ -81,7 +84,7 @@ class BotCommandsTest {
         CliRun unknown = run("solve", BENCH.resolve("flat-7m.json").toString(), "--bot", "oracle");
         assertEquals(2, unknown.code());
         assertEquals("minigolf: --bot: unknown bot 'oracle'; known: grid, local, newton, swarm, astar, astar-newton, "
-                + "astar-swarm, graph, planner, planner-aces", unknown.err().trim());
+                + "astar-swarm, graph, planner, planner-aces, robust", unknown.err().trim());
         Path broken = dir.resolve("broken.json");
         Files.writeString(broken, "{\"format\": 1}");
         CliRun bad = run("solve", broken.toString());
@@ -106,14 +109,14 @@ class BotCommandsTest {
                 "--out", out.toString(), "--threads", "2");
         assertEquals(0, r.code(), r.err());
         List<String> csv = Files.readAllLines(out.resolve("results.csv"));
-        assertEquals("course,bot,seed,holed,strokes,hole_in_one,simulations,wall_ms", csv.get(0));
+        assertEquals("course,bot,seed,noise_position,noise_velocity,holed,strokes,hole_in_one,simulations,wall_ms", csv.get(0));
         assertEquals(1 + 2 * 2 * 2, csv.size());
-        assertTrue(csv.get(1).startsWith("flat-7m,planner,1,true,1,true,"), csv.get(1));
+        assertTrue(csv.get(1).startsWith("flat-7m,planner,1,0.0,0.0,true,1,true,"), csv.get(1));
         String summary = Files.readString(out.resolve("summary.md"));
         String line = summary.lines().filter(l -> l.startsWith("| two-putt | planner |")).findFirst().orElseThrow();
         // Holed every time, never in one (it cannot be), in 2 strokes.
         assertTrue(line.startsWith("| two-putt | planner | 100% | 0% |") && line.endsWith("| 2 |"), line);
-        for (String png : new String[] {"simulations.png", "success.png"}) {
+        for (String png : new String[] {"simulations.png", "success.png", "noise-holed.png", "noise-strokes.png"}) {
             byte[] bytes = Files.readAllBytes(out.resolve(png));
             assertTrue(bytes.length > 1000);
             assertEquals((byte) 0x89, bytes[0]);

@@ -59,7 +59,7 @@ class ExperimentShardsTest {
         List<String> expected = withoutWallTime(single.resolve("results.csv"));
         assertEquals(expected, withoutWallTime(merged.resolve("results.csv")));
         assertEquals(withoutTimes(single.resolve("summary.md")), withoutTimes(merged.resolve("summary.md")));
-        for (String f : new String[] {"simulations.png", "success.png", "experiment.json"}) {
+        for (String f : new String[] {"simulations.png", "success.png", "noise-holed.png", "noise-strokes.png", "experiment.json"}) {
             assertArrayEquals(Files.readAllBytes(single.resolve(f)), Files.readAllBytes(merged.resolve(f)), f);
         }
     }
@@ -71,9 +71,9 @@ class ExperimentShardsTest {
         assertEquals(0, single.code(), single.err());
         List<String> rows = Files.readAllLines(dir.resolve("single/results.csv"));
         assertEquals(1 + 2 * 3 * 3, rows.size());
-        // Run order: course, bot, seed.
-        assertTrue(rows.get(1).startsWith("flat-7m,planner,1,true,1,true,1,"), rows.get(1));
-        assertTrue(rows.get(18).startsWith("two-putt,newton,3,true,2,false,"), rows.get(18));
+        // Run order: course, noise cell (one here), bot, seed.
+        assertTrue(rows.get(1).startsWith("flat-7m,planner,1,0.0,0.0,true,1,true,1,"), rows.get(1));
+        assertTrue(rows.get(18).startsWith("two-putt,newton,3,0.0,0.0,true,2,false,"), rows.get(18));
 
         Path shards = dir.resolve("shards");
         for (int k = 0; k < 3; k++) {

@@ -22,16 +22,24 @@ public final class Charts {
     private Charts() {
     }
 
-    /** Writes simulations.png (median simulations, log scale) and success.png (success rate). */
-    public static List<Path> write(List<Summary.Line> lines, Path directory) throws IOException {
+    /**
+     * Writes simulations.png (median simulations, log scale) and success.png (success rate) for the
+     * first noise cell, and noise-holed.png and noise-strokes.png ({@link NoiseCharts}).
+     */
+    public static List<Path> write(List<Summary.Line> all, Path directory) throws IOException {
         System.setProperty("java.awt.headless", "true");
         List<Path> files = new ArrayList<>();
+        // The bar charts have one bar per course and bot: the first noise cell's (no noise, usually).
+        Summary.Line firstCell = all.get(0);
+        List<Summary.Line> lines = all.stream().filter(l -> l.noisePosition() == firstCell.noisePosition()
+                && l.noiseVelocity() == firstCell.noiseVelocity()).toList();
         // XChart's bar charts refuse a logarithmic axis here, so the bars show log10 directly.
         files.add(save(chart("Median simulations per course and bot, as log10(1 + n): 1 = 9, 2 = 99, 3 = 999",
                 "log10(1 + median simulations)", lines, l -> Math.log10(1 + l.medianSimulations())),
                 directory.resolve("simulations.png")));
         files.add(save(chart("Success rate per course and bot", "holed (%)", lines, l -> 100 * l.successRate()),
                 directory.resolve("success.png")));
+        files.addAll(NoiseCharts.write(NoiseSummary.cells(all), directory));
         return files;
     }
 
@@ -62,7 +70,7 @@ public final class Charts {
         return chart;
     }
 
-    private static Path save(CategoryChart chart, Path file) throws IOException {
+    static Path save(org.knowm.xchart.internal.chartpart.Chart<?, ?> chart, Path file) throws IOException {
         byte[] png = BitmapEncoder.getBitmapBytes(chart, BitmapEncoder.BitmapFormat.PNG);
         AtomicFile.write(file, png);
         return file;

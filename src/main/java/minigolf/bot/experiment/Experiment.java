@@ -10,7 +10,9 @@ import minigolf.bot.Bot;
 import minigolf.bot.BotProgress;
 import minigolf.bot.Bots;
 import minigolf.bot.CancellationToken;
+import minigolf.bot.PlayConditions;
 import minigolf.bot.Playthrough;
+import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.Outcome;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
@@ -37,6 +39,7 @@ public final class Experiment {
     private final int threads;
     /** Wall-time limit per game in seconds (NaN: none). */
     private final double timeLimit;
+    private final boolean hideFriction;
 
     public Experiment(List<SuiteCourse> courses, List<String> bots, int seeds, long budget, int maxStrokes, int threads) {
         this(courses, bots, seeds, budget, maxStrokes, threads, Double.NaN);
@@ -45,8 +48,15 @@ public final class Experiment {
     /** With a wall-time limit of {@code timeLimitSeconds} per game (NaN: none). */
     public Experiment(List<SuiteCourse> courses, List<String> bots, int seeds, long budget, int maxStrokes, int threads,
                       double timeLimitSeconds) {
+        this(courses, bots, seeds, budget, maxStrokes, threads, timeLimitSeconds, List.of(NoiseModel.NONE), false);
+    }
+
+    /** Over a grid of noise cells (see {@link RunPlan}), friction hidden from the bots or not. */
+    public Experiment(List<SuiteCourse> courses, List<String> bots, int seeds, long budget, int maxStrokes, int threads,
+                      double timeLimitSeconds, List<NoiseModel> noises, boolean hideFriction) {
         for (SuiteCourse c : courses) worlds.put(c.name(), c.world());
-        this.plan = new RunPlan(courses.stream().map(SuiteCourse::name).toList(), bots, seeds);
+        this.plan = new RunPlan(courses.stream().map(SuiteCourse::name).toList(), bots, seeds, noises);
+        this.hideFriction = hideFriction;
         this.budget = budget;
         this.maxStrokes = maxStrokes;
         this.threads = threads;
@@ -104,10 +114,11 @@ public final class Experiment {
         if (bot == null) throw new IllegalArgumentException("unknown bot " + run.bot());
         Playthrough.Result result = Playthrough.play(bot, worlds.get(run.course()), SimulationSettings.DEFAULT, maxStrokes,
                 budget, run.seed(), Double.isNaN(timeLimit) ? CancellationToken.none() : CancellationToken.withTimeLimit(timeLimit),
-                BotProgress.NONE);
+                BotProgress.NONE, new PlayConditions(run.noise(), hideFriction));
         boolean holeInOne = result.holed() && result.shots().size() == 1
                 && result.shots().get(0).result().outcome() == Outcome.HOLED;
-        return new RunRecord(run.course(), run.bot(), run.seed(), result.holed(), result.strokes(), holeInOne,
+        return new RunRecord(run.course(), run.bot(), run.seed(), run.noise().position(), run.noise().velocity(),
+                result.holed(), result.strokes(), holeInOne,
                 result.simulations(), result.wallNanos() / 1e6);
     }
 }

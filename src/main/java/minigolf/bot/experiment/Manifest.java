@@ -34,8 +34,21 @@ public record Manifest(int format, String program, String code, Options options,
     public static final String FILE_NAME = "experiment.json";
     static final int FORMAT = 1;
 
-    /** The options that change results; --threads, --out and the shard do not. */
-    public record Options(List<String> bots, int seeds, long budget, int maxStrokes) {
+    /**
+     * The options that change results; --threads, --out and the shard do not. The noise lists span
+     * the plan's noise grid ({@link RunPlan#grid}); absent (an older manifest) they mean no noise.
+     */
+    public record Options(List<String> bots, int seeds, long budget, int maxStrokes, List<Double> noisePositions,
+                          List<Double> noiseVelocities, boolean hideFriction) {
+        public Options {
+            noisePositions = noisePositions == null ? List.of(0.0) : List.copyOf(noisePositions);
+            noiseVelocities = noiseVelocities == null ? List.of(0.0) : List.copyOf(noiseVelocities);
+        }
+
+        /** Options without noise, friction known. */
+        public static Options of(List<String> bots, int seeds, long budget, int maxStrokes) {
+            return new Options(bots, seeds, budget, maxStrokes, List.of(0.0), List.of(0.0), false);
+        }
     }
 
     /** A course of the suite: its name (the file name without .json) and the SHA-256 of the file's bytes. */
@@ -49,7 +62,7 @@ public record Manifest(int format, String program, String code, Options options,
 
     /** A whole experiment's manifest for these options and course files, run by this program. */
     public static Manifest of(String program, Options options, List<CourseFile> courses) {
-        RunPlan plan = new RunPlan(courses.stream().map(CourseFile::name).toList(), options.bots(), options.seeds());
+        RunPlan plan = planOf(options, courses);
         Identity identity = new Identity(FORMAT, program, ProgramCode.hash(), options, List.copyOf(courses));
         return new Manifest(FORMAT, program, identity.code(), options, identity.courses(), plan.size(),
                 fingerprint(identity), null);
@@ -68,7 +81,12 @@ public record Manifest(int format, String program, String code, Options options,
     }
 
     public RunPlan plan() {
-        return new RunPlan(courses.stream().map(CourseFile::name).toList(), options.bots(), options.seeds());
+        return planOf(options, courses);
+    }
+
+    private static RunPlan planOf(Options options, List<CourseFile> courses) {
+        return new RunPlan(courses.stream().map(CourseFile::name).toList(), options.bots(), options.seeds(),
+                RunPlan.grid(options.noisePositions(), options.noiseVelocities()));
     }
 
     /** Says in words how another manifest's experiment differs from this one ("" when it does not). */
@@ -96,7 +114,19 @@ public record Manifest(int format, String program, String code, Options options,
 
     private static String describe(Options o) {
         return "--bots " + String.join(",", o.bots()) + " --seeds " + o.seeds() + " --budget " + o.budget()
-                + " --max-strokes " + o.maxStrokes();
+                + " --max-strokes " + o.maxStrokes() + noise(o);
+    }
+
+    /** The noise options, when they are not the defaults. */
+    private static String noise(Options o) {
+        List<Double> none = List.of(0.0);
+        if (o.noisePositions().equals(none) && o.noiseVelocities().equals(none) && !o.hideFriction()) return "";
+        return " --noise-position " + join(o.noisePositions()) + " --noise-velocity " + join(o.noiseVelocities())
+                + (o.hideFriction() ? " --hide-friction" : "");
+    }
+
+    private static String join(List<Double> values) {
+        return String.join(",", values.stream().map(String::valueOf).toList());
     }
 
     public void write(Path directory) throws IOException {

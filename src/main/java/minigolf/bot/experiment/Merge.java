@@ -135,6 +135,7 @@ public final class Merge {
     }
 
     private static String describe(RunPlan.Run run) {
-        return run.course() + ", " + run.bot() + ", seed " + run.seed();
+        String noise = run.noise().isNone() ? "" : ", noise " + run.noise().position() + " m / " + run.noise().velocity() + " m/s";
+        return run.course() + ", " + run.bot() + ", seed " + run.seed() + noise;
     }
 }

@@ -4,15 +4,27 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-/** One bot playing one course with one seed: a row of results.csv. */
-public record RunRecord(String course, String bot, long seed, boolean holed, int strokes, boolean holeInOne,
-                        long simulations, double wallMs) {
-    public static final String CSV_HEADER = "course,bot,seed,holed,strokes,hole_in_one,simulations,wall_ms";
-    private static final int FIELDS = 8;
+/**
+ * One bot playing one course with one seed under one noise cell: a row of results.csv. The noise
+ * columns are the standard deviations (position in m, velocity in m/s), written in Java's shortest
+ * exact form so that a row read back matches its run exactly.
+ */
+public record RunRecord(String course, String bot, long seed, double noisePosition, double noiseVelocity, boolean holed,
+                        int strokes, boolean holeInOne, long simulations, double wallMs) {
+    public static final String CSV_HEADER =
+            "course,bot,seed,noise_position,noise_velocity,holed,strokes,hole_in_one,simulations,wall_ms";
+    private static final int FIELDS = 10;
+
+    /** A run without noise. */
+    public RunRecord(String course, String bot, long seed, boolean holed, int strokes, boolean holeInOne,
+                     long simulations, double wallMs) {
+        this(course, bot, seed, 0, 0, holed, strokes, holeInOne, simulations, wallMs);
+    }
 
     public String csvRow() {
-        return String.format(Locale.ROOT, "%s,%s,%d,%b,%d,%b,%d,%.3f",
-                csv(course), csv(bot), seed, holed, strokes, holeInOne, simulations, wallMs);
+        return String.format(Locale.ROOT, "%s,%s,%d,%s,%s,%b,%d,%b,%d,%.3f",
+                csv(course), csv(bot), seed, Double.toString(noisePosition), Double.toString(noiseVelocity), holed,
+                strokes, holeInOne, simulations, wallMs);
     }
 
     /**
@@ -24,8 +36,9 @@ public record RunRecord(String course, String bot, long seed, boolean holed, int
         List<String> f = split(row);
         if (f.size() != FIELDS) throw new IllegalArgumentException("expected " + FIELDS + " fields, found " + f.size());
         try {
-            return new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), bool(f.get(3)), Integer.parseInt(f.get(4)),
-                    bool(f.get(5)), Long.parseLong(f.get(6)), Double.parseDouble(f.get(7)));
+            return new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), Double.parseDouble(f.get(3)),
+                    Double.parseDouble(f.get(4)), bool(f.get(5)), Integer.parseInt(f.get(6)), bool(f.get(7)),
+                    Long.parseLong(f.get(8)), Double.parseDouble(f.get(9)));
         } catch (NumberFormatException e) {
             throw new IllegalArgumentException("not a number: " + e.getMessage());
         }

@@ -24,9 +24,12 @@ final class CycleGuard {
     private final List<double[]> visited = new ArrayList<>();
     private World world;
 
-    /** Records the ball's position; a new world or a game's first stroke starts a fresh memory. */
+    /**
+     * Records the ball's position; a new course or a game's first stroke starts a fresh memory. A
+     * world with the same terrain (the same course with re-estimated friction, FrictionPrior) keeps it.
+     */
     void visit(World w, double x, double y, int strokesTaken) {
-        if (w != world || strokesTaken == 0) {
+        if (world == null || w.terrain() != world.terrain() || strokesTaken == 0) {
             visited.clear();
             world = w;
         }

@@ -19,7 +19,7 @@ class ManifestTest {
     private static final List<Manifest.CourseFile> COURSES = List.of(
             new Manifest.CourseFile("flat", Manifest.sha256("{\"a\":1}".getBytes(StandardCharsets.UTF_8))),
             new Manifest.CourseFile("lake", Manifest.sha256("{\"b\":2}".getBytes(StandardCharsets.UTF_8))));
-    private static final Manifest.Options OPTIONS = new Manifest.Options(List.of("planner", "newton"), 5, 20000, 10);
+    private static final Manifest.Options OPTIONS = Manifest.Options.of(List.of("planner", "newton"), 5, 20000, 10);
 
     @Test
     void theFingerprintCoversProgramOptionsAndCourseContentsButNotTheShard() {
@@ -31,14 +31,32 @@ class ManifestTest {
         assertEquals(m.fingerprint(), Manifest.of("minigolf 0.1.0", OPTIONS, COURSES).fingerprint());
         assertNotEquals(m.fingerprint(), Manifest.of("minigolf 0.1.1", OPTIONS, COURSES).fingerprint());
         assertNotEquals(m.fingerprint(), Manifest.of("minigolf 0.1.0",
-                new Manifest.Options(List.of("planner", "newton"), 5, 20001, 10), COURSES).fingerprint());
+                Manifest.Options.of(List.of("planner", "newton"), 5, 20001, 10), COURSES).fingerprint());
         assertNotEquals(m.fingerprint(), Manifest.of("minigolf 0.1.0",
-                new Manifest.Options(List.of("newton", "planner"), 5, 20000, 10), COURSES).fingerprint());
+                Manifest.Options.of(List.of("newton", "planner"), 5, 20000, 10), COURSES).fingerprint());
         Manifest changedCourse = Manifest.of("minigolf 0.1.0", OPTIONS, List.of(COURSES.get(0),
                 new Manifest.CourseFile("lake", Manifest.sha256("{\"b\":3}".getBytes(StandardCharsets.UTF_8)))));
         assertNotEquals(m.fingerprint(), changedCourse.fingerprint());
         assertEquals("different contents of course file(s) lake", m.differences(changedCourse));
         assertEquals("", m.differences(m.forShard(new Shard(0, 2))));
+    }
+
+    @Test
+    void theNoiseGridAndHiddenFrictionArePartOfTheExperiment() {
+        Manifest m = Manifest.of("minigolf 0.1.0", OPTIONS, COURSES);
+        Manifest noisy = Manifest.of("minigolf 0.1.0", new Manifest.Options(List.of("planner", "newton"), 5, 20000, 10,
+                List.of(0.0, 0.01), List.of(0.0, 0.05, 0.1), false), COURSES);
+        Manifest hidden = Manifest.of("minigolf 0.1.0", new Manifest.Options(List.of("planner", "newton"), 5, 20000, 10,
+                List.of(0.0), List.of(0.0), true), COURSES);
+        assertEquals(2 * 6 * 2 * 5, noisy.runs(), "courses x noise cells x bots x seeds");
+        assertNotEquals(m.fingerprint(), noisy.fingerprint());
+        assertNotEquals(m.fingerprint(), hidden.fingerprint());
+        assertTrue(m.differences(noisy).contains("--noise-position 0.0,0.01 --noise-velocity 0.0,0.05,0.1"),
+                m.differences(noisy));
+        assertTrue(m.differences(hidden).endsWith("--hide-friction against --bots planner,newton --seeds 5 --budget 20000"
+                + " --max-strokes 10"), m.differences(hidden));
+        // Run 0 of each cell: position noise outer, velocity inner.
+        assertEquals(new minigolf.bot.noise.NoiseModel(0.01, 0.05), noisy.plan().run(4 * 2 * 5).noise());
     }
 
     @Test

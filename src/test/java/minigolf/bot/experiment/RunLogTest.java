@@ -25,11 +25,14 @@ class RunLogTest {
     void rowsRoundTripThroughCsvEvenWithCommasAndQuotes() {
         RunRecord r = record(7, 1234);
         assertEquals("lake, \"big\"", r.course());
-        assertEquals("\"lake, \"\"big\"\"\",planner,2,false,2,false,1234,19.500", r.csvRow());
+        assertEquals("\"lake, \"\"big\"\"\",planner,2,0.0,0.0,false,2,false,1234,19.500", r.csvRow());
         assertEquals(r, RunRecord.parse(r.csvRow()));
         assertEquals(r.csvRow(), RunRecord.parse(r.csvRow()).csvRow());
-        assertEquals("expected 8 fields, found 7", assertThrows(IllegalArgumentException.class,
+        assertEquals("expected 10 fields, found 7", assertThrows(IllegalArgumentException.class,
                 () -> RunRecord.parse("flat,planner,1,true,1,true,1")).getMessage());
+        RunRecord noisy = new RunRecord("flat", "robust", 3, 0.01, 0.05, true, 2, false, 99, 1.25);
+        assertEquals("flat,robust,3,0.01,0.05,true,2,false,99,1.250", noisy.csvRow());
+        assertEquals(noisy, RunRecord.parse(noisy.csvRow()));
     }
 
     @Test
@@ -67,7 +70,7 @@ class RunLogTest {
         String header = RunLog.HEADER + "\n";
         Files.writeString(file, header + "0," + record(0, 1).csvRow() + "\n2,flat,planner,3,tr\u0000\u0000\n"
                 + "4," + record(4, 1).csvRow() + "\n");
-        assertEquals(file + ": line 3: not a row of this experiment: expected 8 fields, found 4",
+        assertEquals(file + ": line 3: not a row of this experiment: expected 10 fields, found 4",
                 assertThrows(ExperimentException.class, () -> RunLog.read(file, PLAN, null)).getMessage());
         Files.writeString(file, header + "1," + record(0, 1).csvRow() + "\n");
         assertEquals(file + ": line 2: not a row of this experiment: run 1 is flat, planner, seed 2 in this experiment",

@@ -1,0 +1,42 @@
+package minigolf.bot.friction;
+
+import java.util.ArrayList;
+import java.util.List;
+import minigolf.course.Course;
+import minigolf.course.PhysicsSettings;
+import minigolf.course.TerrainSpec;
+import minigolf.course.Zone;
+import minigolf.physics.World;
+
+/**
+ * The course a bot sees when friction is hidden: every friction value (the default, each zone's,
+ * the grid's) replaced by the prior μk {@value #KINETIC}, μs {@value #STATIC} (a typical green,
+ * docs/bots.md), times a scale the bot estimates. Zone shapes stay visible (a player sees where
+ * the sand is, not how slow it is); the friction grids are dropped, so the default applies there.
+ * The world built here shares only the terrain's heights with the true one.
+ */
+public final class FrictionPrior {
+    public static final double KINETIC = 0.1;
+    public static final double STATIC = 0.2;
+
+    private FrictionPrior() {
+    }
+
+    /** The true world with every friction value replaced by the prior times {@code scale}. */
+    public static World scaled(World truth, double scale) {
+        if (!(scale > 0) || !Double.isFinite(scale)) throw new IllegalArgumentException("scale must be > 0, got " + scale);
+        Course c = truth.course();
+        PhysicsSettings p = c.physics();
+        PhysicsSettings physics = new PhysicsSettings(p.gravity(), KINETIC * scale, STATIC * scale, p.maxSpeed(), p.model(),
+                p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution());
+        List<Zone> zones = new ArrayList<>();
+        for (Zone z : c.zones()) zones.add(new Zone(z.shape(), KINETIC * scale, STATIC * scale));
+        TerrainSpec terrain = c.terrain();
+        if (terrain instanceof TerrainSpec.HeightGrid g) {
+            terrain = new TerrainSpec.HeightGrid(g.origin(), g.spacing(), g.heights(), null, null, g.deleted());
+        }
+        Course hidden = new Course(c.format(), c.name(), terrain, c.bounds(), physics, c.start(), c.hole(), zones,
+                c.obstacles());
+        return new World(hidden, truth.terrain());
+    }
+}

@@ -1,0 +1,36 @@
+package minigolf.game;
+
+import java.util.List;
+import minigolf.bot.friction.FrictionEstimator;
+import minigolf.bot.noise.NoiseModel;
+import minigolf.physics.Outcome;
+
+/**
+ * What a bot player is told besides the course and its ball: the game's noise, whether friction is
+ * hidden from it, and (for the friction estimate) its own strokes so far on this hole. The game
+ * records only the stroke as played, so that is what the estimate uses (the command line's
+ * Playthrough uses the stroke the bot chose).
+ */
+public record BotConditions(NoiseModel noise, boolean hideFriction, List<OwnStroke> ownStrokes) {
+    public static final BotConditions NONE = new BotConditions(NoiseModel.NONE, false, List.of());
+
+    /** One of the bot's strokes: where it started, the shot, where it ended, and how. */
+    public record OwnStroke(FrictionEstimator.Observation observation, Outcome outcome) {
+    }
+
+    public BotConditions {
+        if (noise == null) noise = NoiseModel.NONE;
+        ownStrokes = List.copyOf(ownStrokes);
+    }
+
+    /** The conditions of the bot in {@code seat} of {@code game}: its strokes from the game's history. */
+    public static BotConditions of(Game game, int seat, boolean hideFriction) {
+        List<OwnStroke> own = new java.util.ArrayList<>();
+        for (ShotRecord r : game.history()) {
+            if (r.player() != seat) continue;
+            own.add(new OwnStroke(new FrictionEstimator.Observation(r.startX(), r.startY(),
+                    minigolf.bot.Shot.of(r.vx(), r.vy()), r.endX(), r.endY()), r.outcome()));
+        }
+        return new BotConditions(game.noise(), hideFriction, own);
+    }
+}

@@ -1,0 +1,111 @@
+package minigolf.bot.noise;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import minigolf.bot.Bot;
+import minigolf.bot.BotCancelledException;
+import minigolf.bot.BotProgress;
+import minigolf.bot.BotRequest;
+import minigolf.bot.Bots;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.PlayConditions;
+import minigolf.bot.Playthrough;
+import minigolf.bot.Shot;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+/** The noise-aware bot against the planner under velocity noise, and the bot contract under noise. */
+class RobustBotTest {
+    private static final NoiseModel NOISE = new NoiseModel(0, 0.05);
+
+    private static Playthrough.Result play(String bot, World world, long budget, long seed, CancellationToken token) {
+        return Playthrough.play(Bots.create(bot), world, SimulationSettings.DEFAULT, 10, budget, seed, token,
+                BotProgress.NONE, new PlayConditions(NOISE, false));
+    }
+
+    private static double meanStrokes(String bot, World world, int seeds) {
+        double total = 0;
+        for (int seed = 1; seed <= seeds; seed++) {
+            Playthrough.Result r = play(bot, world, 20_000, seed, CancellationToken.none());
+            assertTrue(r.holed(), bot + " seed " + seed + " not holed in 10 strokes");
+            assertTrue(r.botErrors().isEmpty(), r.botErrors().toString());
+            total += r.strokes();
+        }
+        return total / seeds;
+    }
+
+    /**
+     * Lake-bowl (water on the direct line) at 0.05 m/s, 10 seeds: the planner's ace attempts
+     * skirt the water; the robust bot's are scored under the noise. Measured: planner 3.2,
+     * robust 2.4 mean strokes.
+     */
+    @Test
+    void onTheLakeTheRobustBotTakesFewerStrokesThanThePlanner() {
+        World lake = ShotNoiseTest.load("lake-bowl");
+        double planner = meanStrokes("planner", lake, 10), robust = meanStrokes("robust", lake, 10);
+        System.out.printf("lake-bowl, velocity noise 0.05 m/s, 10 seeds: planner %.2f, robust %.2f mean strokes%n",
+                planner, robust);
+        assertTrue(robust <= planner - 0.5, "planner " + planner + ", robust " + robust);
+    }
+
+    /** Tree field: measured planner 3.7, robust 3.1; the robust bot must not be worse. */
+    @Test
+    void onTheTreeFieldTheRobustBotIsNoWorse() {
+        World trees = ShotNoiseTest.load("tree-field");
+        double planner = meanStrokes("planner", trees, 10), robust = meanStrokes("robust", trees, 10);
+        System.out.printf("tree-field, velocity noise 0.05 m/s, 10 seeds: planner %.2f, robust %.2f mean strokes%n",
+                planner, robust);
+        assertTrue(robust <= planner, "planner " + planner + ", robust " + robust);
+    }
+
+    /**
+     * Sine-cross-limit: the ace needs 4.9-5.4 m/s and a fast miss runs out of bounds; the robust
+     * bot lays up along the line when that is cheaper. Measured: planner 4.2, robust 3.7.
+     */
+    @Test
+    void nearTheSpeedLimitTheRobustBotLaysUpAndGainsStrokes() {
+        World slope = ShotNoiseTest.load("sine-cross-limit");
+        double planner = meanStrokes("planner", slope, 10), robust = meanStrokes("robust", slope, 10);
+        System.out.printf("sine-cross-limit, velocity noise 0.05 m/s, 10 seeds: planner %.2f, robust %.2f mean strokes%n",
+                planner, robust);
+        assertTrue(robust <= planner - 0.3, "planner " + planner + ", robust " + robust);
+    }
+
+    @Test
+    void underNoiseItKeepsTheBudgetAndAnswersInTime() {
+        World lake = ShotNoiseTest.load("lake-bowl");
+        for (long budget : new long[]{1, 30, 300}) {
+            Playthrough.Result r = play("robust", lake, budget, 3, CancellationToken.none());
+            assertTrue(r.simulations() <= budget, "used " + r.simulations() + " of " + budget);
+            assertTrue(r.shots().size() >= 1);
+            assertTrue(r.botErrors().isEmpty(), r.botErrors().toString());
+        }
+        long started = System.nanoTime();
+        Playthrough.Result late = play("robust", lake, 1_000_000, 3, CancellationToken.withTimeLimit(0.05));
+        assertTrue(late.shots().size() >= 1);
+        assertTrue((System.nanoTime() - started) / 1e9 < 5, "the time limit is kept");
+    }
+
+    @Test
+    void aCancelledRequestThrows() {
+        World lake = ShotNoiseTest.load("lake-bowl");
+        CancellationToken token = CancellationToken.withTimeLimit(60);
+        token.cancel();
+        CountingSimulator sim = new CountingSimulator(lake, SimulationSettings.DEFAULT, 10_000, token, BotProgress.NONE);
+        Bot bot = Bots.create("robust");
+        assertThrows(BotCancelledException.class, () -> bot.nextShot(new BotRequest(sim, -3, 0, 0, 1, NOISE)));
+    }
+
+    @Test
+    void withoutNoiseItPlaysThePlannersShot() {
+        World lake = ShotNoiseTest.load("lake-bowl");
+        double x = lake.course().start().x(), y = lake.course().start().y();
+        Shot planner = Bots.create("planner").nextShot(new BotRequest(new CountingSimulator(lake), x, y, 0, 5));
+        Shot robust = Bots.create("robust").nextShot(new BotRequest(new CountingSimulator(lake), x, y, 0, 5));
+        assertEquals(planner, robust);
+    }
+}
