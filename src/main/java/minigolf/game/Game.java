@@ -72,7 +72,8 @@ public final class Game {
         this.players = List.copyOf(players);
         this.strokeLimit = strokeLimit;
         this.noise = noise == null ? NoiseModel.NONE : noise;
-        this.noiseSeed = noiseSeed;
+        // Without noise the seed means nothing (and a save does not keep it): one state, one save.
+        this.noiseSeed = this.noise.isNone() ? 0 : noiseSeed;
         double sx = world.course().start().x(), sy = world.course().start().y();
         for (int i = 0; i < players.size(); i++) states.add(new PlayerState(sx, sy, 0, 0, PlayerStatus.PLAYING));
     }
