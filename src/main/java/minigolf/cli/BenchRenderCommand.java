@@ -90,10 +90,13 @@ final class BenchRenderCommand implements Callable<Integer> {
                 ObjectNode passes = out.putObject("passMs");
                 renderer.passTimer().millisPerFrame(frames).forEach(passes::put);
                 out.put("terrainVertices", renderer.terrainPass().vertexCount());
-                out.put("waterTargetTerrainVertices", renderer.terrainPass().targetVertexCount());
                 // Of the terrain's indices, those drawn without the shadow tap (-1: every cell keeps it).
                 out.put("sunlitTerrainIndices", renderer.terrainPass().sunlitIndexCount());
                 out.put("terrainIndices", renderer.terrainPass().indexCount());
+                // Level of detail (TerrainLod): surface indices drawn in the last frame, chunks per level (culled ones left out).
+                out.put("terrainLodIndices", renderer.terrainPass().lastLodIndexCount());
+                var levels = out.putArray("terrainChunksPerLevel");
+                for (int n : renderer.terrainPass().lastLevelHistogram()) levels.add(n);
             }
             out.put("frames", frames);
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);

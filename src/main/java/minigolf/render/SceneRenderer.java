@@ -85,8 +85,7 @@ public final class SceneRenderer implements AutoCloseable {
         ObjectsPass o = null;
         try {
             s = new SkyPass();
-            t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing(),
-                    quality.waterTargetTerrainSpacing());
+            t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing());
             ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit());
             o = new ObjectsPass(course, surface, quality.vertexLit());
             water = new WaterPass(course, surface);
@@ -375,7 +374,7 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_SCISSOR_TEST);
         glScissor(r[0], r[1], r[2], r[3]);
         frame.ballShadowsInline = true;
-        terrain.renderWithin(frame, region.box());
+        terrain.redrawWithin(frame, region.box()); // the chunks at the levels just drawn
         obstacles.renderWithin(frame, region.box());
         objects.render(frame);
         frame.ballShadowsInline = false;
