@@ -23,7 +23,7 @@ import minigolf.physics.Integrator;
 public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
-            "mouseSpeed", "strokeLimit", "heightColours", "playerNames");
+            "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "aimGuide");
 
     private final Path directory;
 
@@ -91,7 +91,8 @@ public final class SettingsStore {
                     root.has("mouseSpeed") ? f.number(root, null, "mouseSpeed") : d.mouseSpeed(),
                     root.has("strokeLimit") ? f.integer(root, null, "strokeLimit", 1, Game.MAX_STROKE_LIMIT) : d.strokeLimit(),
                     root.has("heightColours") ? f.bool(root, null, "heightColours") : d.heightColours(),
-                    names);
+                    names,
+                    root.has("aimGuide") ? f.bool(root, null, "aimGuide") : d.aimGuide());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
         }
@@ -145,6 +146,7 @@ public final class SettingsStore {
         root.put("mouseSpeed", s.mouseSpeed());
         root.put("strokeLimit", s.strokeLimit());
         root.put("heightColours", s.heightColours());
+        root.put("aimGuide", s.aimGuide());
         ArrayNode names = root.putArray("playerNames");
         s.playerNames().forEach(names::add);
         try {

@@ -11,11 +11,14 @@ import minigolf.physics.SimulationSettings;
  * @param frameLimit  frames per second when vsync is off or has no effect (0 = unlimited)
  * @param mouseSpeed  camera rotation per pixel of drag, as a factor of the default
  * @param playerNames the names offered in the new-game dialog (1 to 4)
+ * @param aimGuide    while aiming, show where the ball would go in its first second (for
+ *                    beginners; off is the "pro" setting)
  */
 public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
-                           double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
+                           double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
+                           boolean aimGuide) {
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
-            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"));
+            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), true);
     public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
 
     public UserSettings {
@@ -43,38 +46,42 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     }
 
     public UserSettings withIntegrator(Integrator v) {
-        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
     }
 
     public UserSettings withDt(double v) {
-        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
     }
 
     public UserSettings withVsync(boolean v) {
-        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
     }
 
     public UserSettings withFrameLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
     }
 
     public UserSettings withFullscreen(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
     }
 
     public UserSettings withMouseSpeed(double v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours, playerNames, aimGuide);
     }
 
     public UserSettings withStrokeLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours, playerNames, aimGuide);
     }
 
     public UserSettings withHeightColours(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v, playerNames);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v, playerNames, aimGuide);
+    }
+
+    public UserSettings withAimGuide(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, v);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, v);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, v, aimGuide);
     }
 }

@@ -51,6 +51,7 @@ public final class Screens {
     private final ImInt frameLimit = new ImInt(60);
     private final ImInt strokeLimit = new ImInt(Game.DEFAULT_STROKE_LIMIT);
     private final float[] mouseSpeed = {1f};
+    private final ImBoolean aimGuide = new ImBoolean(true);
     private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
     private final ImDouble[] course = new ImDouble[9];
     private final ImInt testBot = new ImInt(0);
@@ -239,6 +240,7 @@ public final class Screens {
         frameLimit.set(s.frameLimit());
         strokeLimit.set(s.strokeLimit());
         mouseSpeed[0] = (float) s.mouseSpeed();
+        aimGuide.set(s.aimGuide());
         masterVolume[0] = (float) view.volumes().master();
         effectsVolume[0] = (float) view.volumes().effects();
         ambienceVolume[0] = (float) view.volumes().ambience();
@@ -260,6 +262,8 @@ public final class Screens {
         ImGui.inputInt("Frame limit (0 = none)", frameLimit);
         ImGui.inputInt("Stroke limit", strokeLimit);
         ImGui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
+        ImGui.checkbox("Aim guide (off: pro)", aimGuide);
+        if (ImGui.isItemHovered()) ImGui.setTooltip("While aiming, dots show where the ball goes in its first second");
         ImGui.sliderFloat("Volume", masterVolume, 0f, 1f);
         ImGui.sliderFloat("Effects", effectsVolume, 0f, 1f);
         ImGui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
@@ -274,7 +278,8 @@ public final class Screens {
                 int sps = stepsPerSecond.get();
                 UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
                         .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
-                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0]);
+                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
+                        .withAimGuide(aimGuide.get());
                 CourseEdits e = new CourseEdits(course[0].get(), course[1].get(), course[2].get(), course[3].get(),
                         course[4].get(), course[5].get(), course[6].get(), course[7].get(), course[8].get());
                 actions.applySettings(s, e);
