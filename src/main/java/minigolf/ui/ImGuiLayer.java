@@ -22,7 +22,7 @@ public final class ImGuiLayer implements AutoCloseable {
         ImGuiIO io = ImGui.getIO();
         io.setIniFilename(null);
         io.addConfigFlags(ImGuiConfigFlags.NavEnableKeyboard);
-        io.setFontGlobalScale(scale);
+        UiFont.addTo(io.getFonts(), scale); // rasterised at the scale's size: no global scale, no blur
         Theme.apply(scale);
         glfw.init(windowHandle, true);
         gl3.init("#version 330 core");
