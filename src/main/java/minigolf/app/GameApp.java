@@ -401,6 +401,7 @@ public final class GameApp implements UiActions, UiView {
         renderer = new SceneRenderer(world.course(), world.terrain(),
                 settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, quality);
         if (coursePath != null) renderer.setCourseFolder(coursePath.toAbsolutePath().getParent());
+        renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0); // FXAA only without MSAA
         int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
         camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
         followTarget.set(camera.target());
@@ -870,6 +871,7 @@ public final class GameApp implements UiActions, UiView {
         }
         settings = newSettings;
         window.setVsync(settings.vsync() && options.frames() <= 0);
+        if (renderer != null) renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0);
         try {
             store.save(settings);
         } catch (SaveGameException e) {

@@ -48,6 +48,9 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Option(names = "--no-shadows", description = "No sun shadows (default: off).")
     boolean noShadows;
 
+    @Option(names = "--fxaa", description = "The FXAA pass (only for frames without multisampling; default: off, as in the game).")
+    boolean fxaa;
+
     @Option(names = "--breakdown", description = "Also time each pass (glFinish after each; run separately from the untimed frames; default: off).")
     boolean breakdown;
 
@@ -71,6 +74,7 @@ final class BenchRenderCommand implements Callable<Integer> {
             if (waterScale != null) renderer.setWaterTargetScale(waterScale);
             renderer.setWaterReflections(!noReflections);
             renderer.setShadows(!noShadows);
+            renderer.setAntiAliasing(msaa == 0 && fxaa);
             OrbitCamera camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) s.width() / s.height());
             int side = Math.min(s.width(), s.height()) / 4;
             int warmUp = Math.max(5, Math.min(30, frames / 5));
@@ -106,6 +110,7 @@ final class BenchRenderCommand implements Callable<Integer> {
             out.put("size", s.width() + "x" + s.height());
             out.put("quality", q.name());
             out.put("samples", msaa);
+            out.put("fxaa", renderer.antiAliasing());
             out.put("waterScale", renderer.waterTargetScale());
             out.put("shadows", !noShadows);
             out.put("reflections", !noReflections);

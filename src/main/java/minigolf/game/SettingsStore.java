@@ -23,7 +23,7 @@ import minigolf.physics.Integrator;
 public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
-            "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "aimGuide");
+            "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "aimGuide", "antiAliasing");
 
     private final Path directory;
 
@@ -92,7 +92,8 @@ public final class SettingsStore {
                     root.has("strokeLimit") ? f.integer(root, null, "strokeLimit", 1, Game.MAX_STROKE_LIMIT) : d.strokeLimit(),
                     root.has("heightColours") ? f.bool(root, null, "heightColours") : d.heightColours(),
                     names,
-                    root.has("aimGuide") ? f.bool(root, null, "aimGuide") : d.aimGuide());
+                    root.has("aimGuide") ? f.bool(root, null, "aimGuide") : d.aimGuide(),
+                    root.has("antiAliasing") ? f.bool(root, null, "antiAliasing") : d.antiAliasing());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
         }
@@ -147,6 +148,7 @@ public final class SettingsStore {
         root.put("strokeLimit", s.strokeLimit());
         root.put("heightColours", s.heightColours());
         root.put("aimGuide", s.aimGuide());
+        root.put("antiAliasing", s.antiAliasing());
         ArrayNode names = root.putArray("playerNames");
         s.playerNames().forEach(names::add);
         try {

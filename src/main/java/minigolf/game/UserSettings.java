@@ -13,12 +13,14 @@ import minigolf.physics.SimulationSettings;
  * @param playerNames the names offered in the new-game dialog (1 to 4)
  * @param aimGuide    while aiming, show where the ball would go in its first second (for
  *                    beginners; off is the "pro" setting)
+ * @param antiAliasing smooth edges with FXAA where the window has no MSAA (software rendering,
+ *                    where it costs about 8 ms a frame at 1280x720; off by default)
  */
 public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                            double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
-                           boolean aimGuide) {
+                           boolean aimGuide, boolean antiAliasing) {
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
-            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), true);
+            false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), true, false);
     public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
 
     public UserSettings {
@@ -46,42 +48,46 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     }
 
     public UserSettings withIntegrator(Integrator v) {
-        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
+        return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withDt(double v) {
-        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
+        return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withVsync(boolean v) {
-        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
+        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withFrameLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
+        return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withFullscreen(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide);
+        return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withMouseSpeed(double v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours, playerNames, aimGuide);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withStrokeLimit(int v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours, playerNames, aimGuide);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withHeightColours(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v, playerNames, aimGuide);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v, playerNames, aimGuide, antiAliasing);
     }
 
     public UserSettings withAimGuide(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, v);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, v, antiAliasing);
+    }
+
+    public UserSettings withAntiAliasing(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, aimGuide, v);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, v, aimGuide);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, v, aimGuide, antiAliasing);
     }
 }

@@ -63,6 +63,9 @@ public final class SceneRenderer implements AutoCloseable {
     private final RenderTarget minimapCache = new RenderTarget();
     private boolean minimapDirty = true;
     private final ShaderProgram blitShader;
+    /** FXAA where the quality has no MSAA (made on first use), and whether it is on. */
+    private FxaaPass fxaa;
+    private boolean antiAliasing;
     private final int emptyVao;
     private final PassTimer timer = new PassTimer();
 
@@ -311,11 +314,29 @@ public final class SceneRenderer implements AutoCloseable {
         waterTargetScale = Math.max(0.1f, Math.min(1f, scale));
     }
 
+    /**
+     * Whether the scene goes through the FXAA filter ({@link FxaaPass}; off by default): for frames
+     * without MSAA. On llvmpipe it costs about 8 ms a frame at 1280x720 (docs/rendering.md), so the
+     * game turns it on only when the player asks (UserSettings.antiAliasing).
+     */
+    public void setAntiAliasing(boolean on) {
+        antiAliasing = on;
+    }
+
+    public boolean antiAliasing() {
+        return antiAliasing;
+    }
+
     /** Renders one frame into the currently bound framebuffer, whose size is width x height pixels. */
     public void render(OrbitCamera camera, int width, int height, float time) {
         lastTime = time;
         frame.update(camera, width, height, time);
-        int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        int output = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        int target = output;
+        if (antiAliasing) {
+            if (fxaa == null) fxaa = new FxaaPass();
+            target = fxaa.begin(width, height); // the scene into FXAA's image, filtered onto the output at the end
+        }
         timer.start();
         frame.shadowsOn = shadows;
         frame.ballShadowsInline = !ballShadowRedraw;
@@ -359,6 +380,10 @@ public final class SceneRenderer implements AutoCloseable {
         timer.mark("sky");
         water.render(frame);
         timer.mark("water");
+        if (antiAliasing) {
+            fxaa.resolve(output, width, height);
+            timer.mark("fxaa");
+        }
     }
 
     /**
@@ -448,6 +473,7 @@ public final class SceneRenderer implements AutoCloseable {
 
     @Override
     public void close() {
+        if (fxaa != null) fxaa.close();
         if (blitShader != null) blitShader.close();
         if (emptyVao != 0) glDeleteVertexArrays(emptyVao);
         minimapCache.close();

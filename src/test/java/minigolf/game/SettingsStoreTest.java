@@ -27,10 +27,11 @@ class SettingsStoreTest {
         SettingsStore store = new SettingsStore(dir.resolve("minigolf"));
         UserSettings s = UserSettings.DEFAULTS.withIntegrator(Integrator.EULER).withDt(1.0 / 120).withVsync(false)
                 .withFrameLimit(144).withMouseSpeed(1.7).withStrokeLimit(6).withHeightColours(true)
-                .withPlayerNames(List.of("Ann", "Bob")).withAimGuide(false);
+                .withPlayerNames(List.of("Ann", "Bob")).withAimGuide(false).withAntiAliasing(true);
         store.save(s);
         assertEquals(s, store.load());
         assertFalse(store.load().aimGuide(), "the pro setting survives");
+        assertTrue(store.load().antiAliasing());
         assertEquals(1.0 / 120, store.load().simulation().dt(), 0.0, "dt survives exactly");
     }
 
