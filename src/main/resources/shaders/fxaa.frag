@@ -1,9 +1,10 @@
-// Fast approximate anti-aliasing (after Timothy Lottes' FXAA, the compact "PC" variant): where MSAA
-// is unavailable (software rasterisers, RenderQuality.SOFTWARE) the finished scene is drawn into an
-// image and copied to the screen through this filter. Per pixel: the luma of the four diagonal
-// neighbours gives the edge's direction; pixels on an edge are blended along it (two or four taps
-// up to FXAA_SPAN_MAX pixels away), and the wider blend is kept unless it overshoots the local
-// luma range. Flat pixels (a small luma range) are copied unchanged.
+// Fast approximate anti-aliasing (after Timothy Lottes' FXAA, the compact "PC" variant, cut down
+// for software rasterisers): where there is no MSAA the finished scene is drawn into an image and
+// copied to the screen through this filter (FxaaPass; a setting, off by default). Per pixel: the
+// luma of the four diagonal neighbours (unfiltered fetches) gives the edge's direction, and a pixel
+// on an edge becomes the mean of two filtered taps along it, up to FXAA_SPAN_MAX pixels away. Flat
+// pixels (a small luma range) are copied unchanged. FXAA's wider four-tap blend was left out: on
+// llvmpipe the whole filter cost 21 ms a frame at 1280x720 with filtered luma taps and the wide blend.
 in vec2 vUv;
 uniform sampler2D uImage;
 uniform vec2 uTexel; // 1 / image size
