@@ -33,14 +33,17 @@ public final class UiFont {
         }
     }
 
-    /** Adds the font to the atlas as its first (default) font at SIZE_PIXELS x scale; returns it. */
-    public static ImFont addTo(ImFontAtlas atlas, float scale) {
+    /** The editor's size at scale 1: its panels hold many rows and must fit a 1366x768 screen. */
+    public static final float EDITOR_SIZE_PIXELS = 14f;
+
+    /** Adds the font to the atlas as its first (default) font at {@code pixels} (rounded); returns it. */
+    public static ImFont addTo(ImFontAtlas atlas, float pixels) {
         ImFontConfig config = new ImFontConfig();
         try {
             config.setName("DejaVu Sans");
             config.setOversampleH(2);
             config.setOversampleV(1);
-            return atlas.addFontFromMemoryTTF(bytes(), Math.round(SIZE_PIXELS * scale), config);
+            return atlas.addFontFromMemoryTTF(bytes(), Math.round(pixels), config);
         } finally {
             config.destroy();
         }

@@ -26,7 +26,7 @@ class UiFontTest {
     void itIsTheAtlasDefaultFontAtTheScaledSize() {
         ImGui.createContext();
         try {
-            ImFont font = UiFont.addTo(ImGui.getIO().getFonts(), 1.5f);
+            ImFont font = UiFont.addTo(ImGui.getIO().getFonts(), UiFont.SIZE_PIXELS * 1.5f);
             assertTrue(ImGui.getIO().getFonts().build(), "the atlas builds");
             assertTrue(font.isLoaded());
             assertEquals(24f, font.getFontSize(), "16 px x 1.5");
