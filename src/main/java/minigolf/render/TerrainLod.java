@@ -38,7 +38,7 @@ public final class TerrainLod {
         final float[] min = new float[3], max = new float[3];
         /** Per level: first index (into the appended list) and count; count 0 where the level is unavailable. */
         final int[] first = new int[LEVELS], count = new int[LEVELS];
-        /** The finest-level chunk cells' first and end cell index per row are not needed: level 0 is its own list. */
+        /** No cell of the chunk can be in the shadow map's shadow (set by TerrainPass.setShadowedCells): drawn without the tap. */
         boolean allSunlit;
 
         Chunk(int i0, int j0, int i1, int j1) {
