@@ -4,14 +4,10 @@
 // detail spaces far vertices wider than a stripe. `weight` is the vertex's share of grass (1 - sand).
 uniform float uStripeOrigin;
 
-// The length of bright stripe in [0, u] (u in stripe widths; stripes 0, 2, 4, ... are bright).
-float brightLength(float u) {
-    return floor(u * 0.5) + min(fract(u * 0.5) * 2.0, 1.0);
-}
-
 float stripeFactor(float x, float weight) {
-    float u = (x - uStripeOrigin) / 0.5;
-    float w = max(fwidth(u), 1e-3);
-    float bright = (brightLength(u + 0.5 * w) - brightLength(u - 0.5 * w)) / w;
-    return mix(1.0, mix(0.92, 1.0, clamp(bright, 0.0, 1.0)), weight);
+    float u = (x - uStripeOrigin) * 2.0;          // in stripe widths; bright stripes are [0, 1) mod 2
+    float c = abs(mod(u + 0.5, 2.0) - 1.0);       // distance from the nearest bright stripe's centre, 0..1
+    float w = max(fwidth(u), 1e-3);                // the pixel's footprint in stripe widths
+    float bright = clamp(0.5 + (0.5 - c) / w, 0.0, 1.0); // box filter of the edge (0.5 mean when w is large)
+    return mix(1.0, mix(0.92, 1.0, bright), weight);
 }
