@@ -1,1 +1,2 @@
+#define TERRAIN_STRIPES
 #include "vertexlit-fragment.glsl"

@@ -7,7 +7,7 @@
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec3 aColor;
+layout(location = 2) in vec4 aColor; // rgb, and the mowing stripes' weight (stripes.glsl)
 
 uniform mat4 uViewProjection;
 uniform vec4 uClipPlane;
@@ -21,6 +21,7 @@ out vec3 vUnlit;     // ambient part, never shadowed
 out vec3 vSunlit;    // sun diffuse + specular, scaled by the sun's visibility per pixel
 out vec3 vShadowCoord;
 out float vHaze;
+out float vStripes;
 
 // The balls' shadows redraw these surfaces within a scissor at GL_LEQUAL (SceneRenderer): the depth must match exactly.
 invariant gl_Position;
@@ -32,12 +33,13 @@ void main() {
     vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * n.z);
     float diffuse = max(dot(n, l), 0.0);
     float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;
-    vUnlit = aColor * ambient;
-    vSunlit = aColor * uSunColor * diffuse + uSunColor * specular * uSpecularStrength;
+    vUnlit = aColor.rgb * ambient;
+    vSunlit = aColor.rgb * uSunColor * diffuse + uSunColor * specular * uSpecularStrength;
     vHaze = clamp(1.0 - exp(-length(uEye - aPosition) * 0.004), 0.0, 0.6);
     vec4 p = uLightViewProjection * vec4(aPosition + n * uShadowNormalOffset, 1.0);
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;
     vWorld = aPosition;
+    vStripes = aColor.a;
     gl_ClipDistance[0] = dot(uClipPlane, vec4(aPosition, 1.0));
     gl_Position = uViewProjection * vec4(aPosition, 1.0);
 }

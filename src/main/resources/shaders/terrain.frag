@@ -1,9 +1,11 @@
 #include "lighting.glsl"
 #include "shadow.glsl"
+#include "stripes.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
 in vec3 vColor;
+in float vStripes;
 
 uniform float uSpecularStrength;
 uniform float uShininess;
@@ -12,6 +14,6 @@ out vec4 fragColor;
 
 void main() {
     vec3 n = normalize(vNormal);
-    vec3 color = shadeLit(vColor, n, vWorld, uSpecularStrength, uShininess, sunVisibility(vWorld, n));
+    vec3 color = shadeLit(vColor * stripeFactor(vWorld.x, vStripes), n, vWorld, uSpecularStrength, uShininess, sunVisibility(vWorld, n));
     fragColor = vec4(haze(color, vWorld), 1.0);
 }

@@ -2,6 +2,10 @@
 // vertices; only the shadows (shadow.glsl) are computed per pixel.
 #include "lighting.glsl"
 #include "shadow.glsl"
+#ifdef TERRAIN_STRIPES
+#include "stripes.glsl"
+in float vStripes;
+#endif
 
 in vec3 vWorld;
 in vec3 vUnlit;
@@ -14,5 +18,8 @@ out vec4 fragColor;
 void main() {
     float sunlight = mapVisibilityAt(vShadowCoord) * ballVisibility(vWorld);
     vec3 color = vUnlit + vSunlit * sunlight;
+#ifdef TERRAIN_STRIPES
+    color *= stripeFactor(vWorld.x, vStripes);
+#endif
     fragColor = vec4(mix(color, vec3(0.78, 0.87, 0.96), vHaze), 1.0);
 }

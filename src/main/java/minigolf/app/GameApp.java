@@ -121,6 +121,11 @@ public final class GameApp implements UiActions, UiView {
     private boolean rotating, panning, aiming;
     private double lastX, lastY;
     private double[] aimVelocity;
+    /** The aim guide's path for {@link #guideKey} (x, y, vx, vy), reused while the aim holds (AimView compares it by identity). */
+    private float[] guidePath;
+    /** An aim to show as soon as a human player can aim (play --aim, for screenshots), or null. */
+    private double[] pendingAim;
+    private double[] guideKey;
     private final Vector3f followTarget = new Vector3f();
     /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
     private boolean turnToHole;
@@ -401,13 +406,27 @@ public final class GameApp implements UiActions, UiView {
         renderer = new SceneRenderer(world.course(), world.terrain(),
                 settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, quality);
         if (coursePath != null) renderer.setCourseFolder(coursePath.toAbsolutePath().getParent());
+        renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0); // FXAA only without MSAA
         int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
         camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
         followTarget.set(camera.target());
         window.setTitle("Minigolf - " + world.course().name());
     }
 
+    /**
+     * Shows the aim (vx, vy) in m/s as if the player were dragging it, from the first frame a human
+     * player can aim (until a mouse release or right click): for screenshots of the arrow and the aim guide.
+     */
+    public void showAim(double vx, double vy) {
+        pendingAim = new double[]{vx, vy};
+    }
+
     private void drawFrame(int fw, int fh, float time) {
+        if (pendingAim != null && canAim()) {
+            aiming = true;
+            aimVelocity = pendingAim;
+            pendingAim = null;
+        }
         renderer.setBalls(ballViews());
         renderer.setAim(aimView());
         followBall();
@@ -453,7 +472,18 @@ public final class GameApp implements UiActions, UiView {
         if (speed < 1e-6) return null;
         PlayerState s = game.player(game.currentPlayer());
         return new AimView((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y()),
-                (float) aimVelocity[0], (float) aimVelocity[1], (float) (speed / world.physics().maxSpeed()));
+                (float) aimVelocity[0], (float) aimVelocity[1], (float) (speed / world.physics().maxSpeed()),
+                settings.aimGuide() ? guidePath(s.x(), s.y(), aimVelocity[0], aimVelocity[1]) : null);
+    }
+
+    /** The aim guide (AimGuide: the real engine, the game's settings, its first second), recomputed when the aim changes. */
+    private float[] guidePath(double x, double y, double vx, double vy) {
+        double[] key = {x, y, vx, vy};
+        if (!java.util.Arrays.equals(key, guideKey)) {
+            guidePath = minigolf.game.AimGuide.preview(game.world(), game.settings(), x, y, vx, vy, minigolf.game.AimGuide.SECONDS).points();
+            guideKey = key;
+        }
+        return guidePath;
     }
 
     /** The camera glides after the ball in play: the rolling one, else the next player's. */
@@ -849,6 +879,7 @@ public final class GameApp implements UiActions, UiView {
         }
         settings = newSettings;
         window.setVsync(settings.vsync() && options.frames() <= 0);
+        if (renderer != null) renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0);
         try {
             store.save(settings);
         } catch (SaveGameException e) {

@@ -48,6 +48,9 @@ final class BenchRenderCommand implements Callable<Integer> {
     @Option(names = "--no-shadows", description = "No sun shadows (default: off).")
     boolean noShadows;
 
+    @Option(names = "--fxaa", description = "The FXAA pass (only for frames without multisampling; default: off, as in the game).")
+    boolean fxaa;
+
     @Option(names = "--breakdown", description = "Also time each pass (glFinish after each; run separately from the untimed frames; default: off).")
     boolean breakdown;
 
@@ -71,6 +74,7 @@ final class BenchRenderCommand implements Callable<Integer> {
             if (waterScale != null) renderer.setWaterTargetScale(waterScale);
             renderer.setWaterReflections(!noReflections);
             renderer.setShadows(!noShadows);
+            renderer.setAntiAliasing(msaa == 0 && fxaa);
             OrbitCamera camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) s.width() / s.height());
             int side = Math.min(s.width(), s.height()) / 4;
             int warmUp = Math.max(5, Math.min(30, frames / 5));
@@ -90,10 +94,13 @@ final class BenchRenderCommand implements Callable<Integer> {
                 ObjectNode passes = out.putObject("passMs");
                 renderer.passTimer().millisPerFrame(frames).forEach(passes::put);
                 out.put("terrainVertices", renderer.terrainPass().vertexCount());
-                out.put("waterTargetTerrainVertices", renderer.terrainPass().targetVertexCount());
                 // Of the terrain's indices, those drawn without the shadow tap (-1: every cell keeps it).
                 out.put("sunlitTerrainIndices", renderer.terrainPass().sunlitIndexCount());
                 out.put("terrainIndices", renderer.terrainPass().indexCount());
+                // Level of detail (TerrainLod): surface indices drawn in the last frame, chunks per level (culled ones left out).
+                out.put("terrainLodIndices", renderer.terrainPass().lastLodIndexCount());
+                var levels = out.putArray("terrainChunksPerLevel");
+                for (int n : renderer.terrainPass().lastLevelHistogram()) levels.add(n);
             }
             out.put("frames", frames);
             out.put("msPerFrame", Math.round(ms * 100) / 100.0);
@@ -103,6 +110,7 @@ final class BenchRenderCommand implements Callable<Integer> {
             out.put("size", s.width() + "x" + s.height());
             out.put("quality", q.name());
             out.put("samples", msaa);
+            out.put("fxaa", renderer.antiAliasing());
             out.put("waterScale", renderer.waterTargetScale());
             out.put("shadows", !noShadows);
             out.put("reflections", !noReflections);

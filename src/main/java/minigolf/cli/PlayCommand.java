@@ -48,6 +48,10 @@ final class PlayCommand implements Callable<Integer> {
             description = "Scripted shots for the human players, through the game's HIT input, in m/s, e.g. 1.5:0.2,2:0 (default: none).")
     List<String> shots;
 
+    @Option(names = "--aim", paramLabel = "VX:VY",
+            description = "Shows this aim (m/s) as if the first human player were dragging it, with the aim guide if it is on (for screenshots; default: none).")
+    String aim;
+
     @Option(names = "--time-scale", paramLabel = "K", description = "Animation speed as a multiple of real time (default: ${DEFAULT-VALUE}).")
     double timeScale = 1;
 
@@ -89,6 +93,11 @@ final class PlayCommand implements Callable<Integer> {
         GameApp.Options options = new GameApp.Options(course, screenshot, frames, seats, script, timeScale,
                 SettingsStore.forUser(), true, theRound != null);
         GameApp app = new GameApp(world, options);
+        if (aim != null) {
+            if (seats == null) throw new UserError("--aim needs --players");
+            double[] v = parseVelocity("--aim", aim);
+            app.showAim(v[0], v[1]);
+        }
         if (theRound != null) app.playRound(theRound);
         FrameClock clock = timing ? new FrameClock(frames / 4) : null;
         if (clock != null) app.onLoopPass((pass, window) -> clock.pass(pass, window));
@@ -122,12 +131,16 @@ final class PlayCommand implements Callable<Integer> {
     }
 
     private static double[] parseShot(String s) {
+        return parseVelocity("--shots", s);
+    }
+
+    private static double[] parseVelocity(String option, String s) {
         String[] p = s.split(":");
         try {
             if (p.length != 2) throw new NumberFormatException();
             return new double[]{Double.parseDouble(p[0]), Double.parseDouble(p[1])};
         } catch (NumberFormatException e) {
-            throw new UserError("--shots: expected VX:VY such as 1.5:-0.2, got '" + s + "'");
+            throw new UserError(option + ": expected VX:VY such as 1.5:-0.2, got '" + s + "'");
         }
     }
 }

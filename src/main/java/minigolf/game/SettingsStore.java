@@ -24,7 +24,7 @@ public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
             "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "noisePosition", "noiseVelocity",
-            "hideFrictionFromBots");
+            "hideFrictionFromBots", "aimGuide", "antiAliasing");
 
     private final Path directory;
 
@@ -95,7 +95,9 @@ public final class SettingsStore {
                     names,
                     root.has("noisePosition") ? f.number(root, null, "noisePosition") : d.noisePosition(),
                     root.has("noiseVelocity") ? f.number(root, null, "noiseVelocity") : d.noiseVelocity(),
-                    root.has("hideFrictionFromBots") ? f.bool(root, null, "hideFrictionFromBots") : d.hideFrictionFromBots());
+                    root.has("hideFrictionFromBots") ? f.bool(root, null, "hideFrictionFromBots") : d.hideFrictionFromBots(),
+                    root.has("aimGuide") ? f.bool(root, null, "aimGuide") : d.aimGuide(),
+                    root.has("antiAliasing") ? f.bool(root, null, "antiAliasing") : d.antiAliasing());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
         }
@@ -149,6 +151,8 @@ public final class SettingsStore {
         root.put("mouseSpeed", s.mouseSpeed());
         root.put("strokeLimit", s.strokeLimit());
         root.put("heightColours", s.heightColours());
+        root.put("aimGuide", s.aimGuide());
+        root.put("antiAliasing", s.antiAliasing());
         ArrayNode names = root.putArray("playerNames");
         s.playerNames().forEach(names::add);
         root.put("noisePosition", s.noisePosition());

@@ -18,13 +18,18 @@ import minigolf.physics.SimulationSettings;
  *                      component (0 to {@value #MAX_NOISE_VELOCITY})
  * @param hideFrictionFromBots bot players see every friction value as a prior and learn the truth
  *                      from their own strokes (minigolf.bot.friction)
+ * @param aimGuide      while aiming, show where the ball would go in its first second (for
+ *                      beginners; off is the "pro" setting)
+ * @param antiAliasing  smooth edges with FXAA where the window has no MSAA (software rendering,
+ *                      where it costs about 8 ms a frame at 1280x720; off by default)
  */
 public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                            double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
-                           double noisePosition, double noiseVelocity, boolean hideFrictionFromBots) {
+                           double noisePosition, double noiseVelocity, boolean hideFrictionFromBots,
+                           boolean aimGuide, boolean antiAliasing) {
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
             false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0,
-            false);
+            false, true, false);
     public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
     /** Beyond these a putt is a lottery, not "realistic". */
     public static final double MAX_NOISE_POSITION = 0.5, MAX_NOISE_VELOCITY = 1;
@@ -35,7 +40,7 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                         double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
         this(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, 0, 0,
-                false);
+                false, true, false);
     }
 
     public UserSettings {
@@ -70,62 +75,74 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
 
     /** The "realistic" setting: both noises at once (0 turns it off). */
     public UserSettings withNoise(double position, double velocity) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, position, velocity, hideFrictionFromBots);
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, playerNames, position, velocity, hideFrictionFromBots, aimGuide, antiAliasing);
     }
 
-    public UserSettings withHideFrictionFromBots(boolean v) {
-        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, v);
-    }
-
-    /** The simulation settings a new game uses. */
     public SimulationSettings simulation() {
         return new SimulationSettings(integrator, dt, SimulationSettings.DEFAULT_MAX_TIME);
     }
 
     public UserSettings withIntegrator(Integrator v) {
         return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
     }
 
     public UserSettings withDt(double v) {
         return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
-                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
+                antiAliasing);
     }
 
     public UserSettings withVsync(boolean v) {
-        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+        return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
+                antiAliasing);
     }
 
     public UserSettings withFrameLimit(int v) {
         return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
     }
 
     public UserSettings withFullscreen(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
     }
 
     public UserSettings withMouseSpeed(double v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
     }
 
     public UserSettings withStrokeLimit(int v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
     }
 
     public UserSettings withHeightColours(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
-                heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots);
+                heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+    }
+
+    public UserSettings withHideFrictionFromBots(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, playerNames, noisePosition, noiseVelocity, v, aimGuide, antiAliasing);
+    }
+
+    public UserSettings withAimGuide(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, v,
+                antiAliasing);
+    }
+
+    public UserSettings withAntiAliasing(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
+                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, v);
     }
 }

@@ -23,6 +23,17 @@ public record MeshData(int[] layout, float[] vertices, int[] indices) {
         }
     }
 
+    /** a's vertices and triangles, then b's (same layout). */
+    public static MeshData concat(MeshData a, MeshData b) {
+        if (!Arrays.equals(a.layout, b.layout)) throw new IllegalArgumentException("layouts differ");
+        float[] v = Arrays.copyOf(a.vertices, a.vertices.length + b.vertices.length);
+        System.arraycopy(b.vertices, 0, v, a.vertices.length, b.vertices.length);
+        int offset = a.vertexCount();
+        int[] idx = Arrays.copyOf(a.indices, a.indices.length + b.indices.length);
+        for (int i = 0; i < b.indices.length; i++) idx[a.indices.length + i] = b.indices[i] + offset;
+        return new MeshData(a.layout, v, idx);
+    }
+
     public int stride() {
         return Arrays.stream(layout).sum();
     }

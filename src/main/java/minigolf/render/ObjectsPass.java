@@ -98,15 +98,23 @@ public final class ObjectsPass implements RenderPass {
         return aim;
     }
 
-    /** The arrow for an aim: draped over the ground (or the water surface), coloured by power. */
+    /** The arrow for an aim: draped over the ground (or the water surface), coloured by power; and the guide's dots. */
     static MeshData arrowMesh(AimView view, Terrain terrain) {
         float power = Math.max(0f, Math.min(1f, view.power01()));
         float[] c = powerColor(power);
         double start = visualBallRadius() * 1.3;
         double length = start + ARROW_MIN_LENGTH + ARROW_POWER_LENGTH * power;
-        return Shapes.groundArrow(view.x(), view.y(), view.dirX(), view.dirY(), start, length, 0.06,
+        MeshData arrow = Shapes.groundArrow(view.x(), view.y(), view.dirX(), view.dirY(), start, length, 0.06,
                 (x, y) -> Math.max(0, terrain.height(x, y)), 0.012, c[0], c[1], c[2]);
+        if (view.guide() == null || view.guide().length < 6) return arrow;
+        // White dots every GUIDE_SPACING along the guide, past the ball; on water they float on its surface.
+        MeshData dots = Shapes.dotsAlong(view.guide(), GUIDE_SPACING, visualBallRadius() * 2.2, GUIDE_DOT_RADIUS,
+                (x, y, z) -> Math.max(0, z) + 0.008, 0.97f, 0.97f, 0.92f);
+        return dots == null ? arrow : MeshData.concat(arrow, dots);
     }
+
+    /** The aim guide's dots: their spacing along the path and their radius, in metres. */
+    static final double GUIDE_SPACING = 0.14, GUIDE_DOT_RADIUS = 0.032;
 
     /** Green at no power, yellow at half, red at full. */
     public static float[] powerColor(float power01) {

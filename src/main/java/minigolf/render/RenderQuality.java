@@ -19,7 +19,6 @@ import static org.lwjgl.opengl.GL11.glGetString;
  * @param shadowTaps       depth-compare taps per shadowed pixel: 4 (a 3x3-texel footprint) or 1 (2x2)
  * @param vertexLit        whether the terrain and the objects are lit per vertex (Gouraud; only shadows per pixel)
  * @param terrainSpacing   the terrain mesh's finest sample spacing in metres (llvmpipe pays per triangle)
- * @param waterTargetTerrainSpacing the same for the terrain drawn into the water's (smaller) images
  * @param sunlitTerrain    whether terrain cells the shadow map cannot darken are drawn without the shadow tap
  *                         (the map is read back and searched once after it is drawn, see {@link SunlitCells})
  * @param ballShadowRedraw whether the balls' shadows are shaded only in a scissored second draw round them
@@ -27,10 +26,10 @@ import static org.lwjgl.opengl.GL11.glGetString;
  */
 public record RenderQuality(String name, int samples, int shadowMapSize, float waterTargetScale, boolean shadowsInWater,
                             int shadowTaps, boolean vertexLit,
-                            double terrainSpacing, double waterTargetTerrainSpacing, boolean sunlitTerrain,
+                            double terrainSpacing, boolean sunlitTerrain,
                             boolean ballShadowRedraw) {
-    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4, false, 0.05, 0.05, false, false);
-    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 1024, 0.35f, false, 1, true, 0.1, 0.2, true, true);
+    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4, false, 0.05, false, false);
+    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 1024, 0.35f, false, 1, true, 0.1, true, true);
 
     /** Whether a GL_RENDERER string names a software rasteriser. */
     public static boolean isSoftware(String glRenderer) {

@@ -58,6 +58,11 @@ public final class RenderTarget implements AutoCloseable {
         return height;
     }
 
+    /** The framebuffer object (0 before the first {@link #ensureSize}). */
+    public int framebuffer() {
+        return fbo;
+    }
+
     /** Binds the target for drawing with a full viewport. */
     public void bind() {
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);

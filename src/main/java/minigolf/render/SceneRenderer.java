@@ -63,6 +63,9 @@ public final class SceneRenderer implements AutoCloseable {
     private final RenderTarget minimapCache = new RenderTarget();
     private boolean minimapDirty = true;
     private final ShaderProgram blitShader;
+    /** FXAA where the quality has no MSAA (made on first use), and whether it is on. */
+    private FxaaPass fxaa;
+    private boolean antiAliasing;
     private final int emptyVao;
     private final PassTimer timer = new PassTimer();
 
@@ -85,8 +88,7 @@ public final class SceneRenderer implements AutoCloseable {
         ObjectsPass o = null;
         try {
             s = new SkyPass();
-            t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing(),
-                    quality.waterTargetTerrainSpacing());
+            t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing());
             ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit());
             o = new ObjectsPass(course, surface, quality.vertexLit());
             water = new WaterPass(course, surface);
@@ -312,11 +314,29 @@ public final class SceneRenderer implements AutoCloseable {
         waterTargetScale = Math.max(0.1f, Math.min(1f, scale));
     }
 
+    /**
+     * Whether the scene goes through the FXAA filter ({@link FxaaPass}; off by default): for frames
+     * without MSAA. On llvmpipe it costs about 8 ms a frame at 1280x720 (docs/rendering.md), so the
+     * game turns it on only when the player asks (UserSettings.antiAliasing).
+     */
+    public void setAntiAliasing(boolean on) {
+        antiAliasing = on;
+    }
+
+    public boolean antiAliasing() {
+        return antiAliasing;
+    }
+
     /** Renders one frame into the currently bound framebuffer, whose size is width x height pixels. */
     public void render(OrbitCamera camera, int width, int height, float time) {
         lastTime = time;
         frame.update(camera, width, height, time);
-        int target = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        int output = glGetInteger(GL_FRAMEBUFFER_BINDING);
+        int target = output;
+        if (antiAliasing) {
+            if (fxaa == null) fxaa = new FxaaPass();
+            target = fxaa.begin(width, height); // the scene into FXAA's image, filtered onto the output at the end
+        }
         timer.start();
         frame.shadowsOn = shadows;
         frame.ballShadowsInline = !ballShadowRedraw;
@@ -360,6 +380,10 @@ public final class SceneRenderer implements AutoCloseable {
         timer.mark("sky");
         water.render(frame);
         timer.mark("water");
+        if (antiAliasing) {
+            fxaa.resolve(output, width, height);
+            timer.mark("fxaa");
+        }
     }
 
     /**
@@ -375,7 +399,7 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_SCISSOR_TEST);
         glScissor(r[0], r[1], r[2], r[3]);
         frame.ballShadowsInline = true;
-        terrain.renderWithin(frame, region.box());
+        terrain.redrawWithin(frame, region.box()); // the chunks at the levels just drawn
         obstacles.renderWithin(frame, region.box());
         objects.render(frame);
         frame.ballShadowsInline = false;
@@ -449,6 +473,7 @@ public final class SceneRenderer implements AutoCloseable {
 
     @Override
     public void close() {
+        if (fxaa != null) fxaa.close();
         if (blitShader != null) blitShader.close();
         if (emptyVao != 0) glDeleteVertexArrays(emptyVao);
         minimapCache.close();

@@ -162,6 +162,10 @@ public final class ShaderProgram implements AutoCloseable {
         glUniform4f(location(uniform), v.x, v.y, v.z, v.w);
     }
 
+    public void set(String uniform, float x, float y) {
+        glUniform2f(location(uniform), x, y);
+    }
+
     public void set(String uniform, float x, float y, float z) {
         glUniform3f(location(uniform), x, y, z);
     }

@@ -181,6 +181,52 @@ public final class Shapes {
         return new MeshData(MeshData.PNC, v, idx);
     }
 
+    /** The height a dot is drawn at, from the path's (x, y, z). */
+    @FunctionalInterface
+    public interface DotHeight {
+        double at(double x, double y, double z);
+    }
+
+    /**
+     * Flat round dots (8-sided, facing up) along a polyline of (x, y, z) triplets: the first
+     * {@code skip} metres left out, then one every {@code spacing} metres of the path's length in
+     * the plane, each at {@code height.at(x, y, z)}. Null if the path is too short for a dot.
+     */
+    public static MeshData dotsAlong(float[] path, double spacing, double skip, double radius, DotHeight height,
+                                     float r, float g, float b) {
+        java.util.List<double[]> centres = new java.util.ArrayList<>();
+        double next = skip, walked = 0;
+        for (int i = 3; i + 2 < path.length; i += 3) {
+            double x0 = path[i - 3], y0 = path[i - 2], z0 = path[i - 1], x1 = path[i], y1 = path[i + 1], z1 = path[i + 2];
+            double seg = Math.hypot(x1 - x0, y1 - y0);
+            while (seg > 0 && next <= walked + seg) {
+                double t = (next - walked) / seg;
+                centres.add(new double[]{x0 + t * (x1 - x0), y0 + t * (y1 - y0), z0 + t * (z1 - z0)});
+                next += spacing;
+            }
+            walked += seg;
+        }
+        if (centres.isEmpty()) return null;
+        int sides = 8;
+        float[] v = new float[centres.size() * (sides + 1) * 9];
+        int[] idx = new int[centres.size() * sides * 3];
+        int p = 0, q = 0;
+        for (int d = 0; d < centres.size(); d++) {
+            double[] c = centres.get(d);
+            double z = height.at(c[0], c[1], c[2]);
+            int centre = d * (sides + 1);
+            p = putPnc(v, p, c[0], c[1], z, 0, 0, 1, r, g, b);
+            for (int s = 0; s < sides; s++) {
+                double a = 2 * Math.PI * s / sides;
+                p = putPnc(v, p, c[0] + radius * Math.cos(a), c[1] + radius * Math.sin(a), z, 0, 0, 1, r, g, b);
+                idx[q++] = centre;
+                idx[q++] = centre + 1 + s;
+                idx[q++] = centre + 1 + (s + 1) % sides;
+            }
+        }
+        return new MeshData(MeshData.PNC, v, idx);
+    }
+
     static int putPnc(float[] v, int p, double x, double y, double z, double nx, double ny, double nz,
                       float r, float g, float b) {
         v[p++] = (float) x;

@@ -23,6 +23,18 @@ public final class TerrainMesh {
     public static final double SAND_FRICTION = 0.2;
     /** Kinetic friction up to this is drawn as plain grass. */
     public static final double GRASS_FRICTION = 0.12;
+    /**
+     * Vertex layout: position, normal, colour and the mowing stripes' weight (1 on grass, 0 on sand,
+     * mud, skirts and the height map). The stripes are drawn per pixel by the terrain shaders
+     * ({@code stripes.glsl}), filtered to the pixel's footprint: as vertex colours they aliased
+     * once the level of detail ({@link TerrainLod}) spaced vertices wider than a stripe.
+     */
+    public static final int[] LAYOUT = {3, 3, 4};
+    /** Floats a vertex. */
+    public static final int STRIDE = 10;
+    /** The mowing stripes' width (m) along x, from the course's minimum x; odd stripes are {@link #STRIPE_SHADE} as bright. */
+    public static final double STRIPE_WIDTH = 0.5;
+    public static final double STRIPE_SHADE = 0.92;
 
     /** How the surface is coloured. */
     public enum ColorMode {
@@ -93,7 +105,7 @@ public final class TerrainMesh {
         }
         double base = Math.min(minH, 0) - Math.max(0.25, 0.015 * Math.max(b.width(), b.depth()));
         int skirtVertices = 2 * 2 * (cols + rows);
-        float[] v = new float[(cols * rows + skirtVertices) * 9];
+        float[] v = new float[(cols * rows + skirtVertices) * STRIDE];
         int[] idx = new int[nx * ny * 6 + 2 * 6 * (nx + ny)];
         float[] rgb = new float[3];
         // Friction as physics sees it: zones, else the grid's per-node values, else the course's.
@@ -104,8 +116,8 @@ public final class TerrainMesh {
                 int k = j * cols + i;
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 double len = Math.sqrt(gx[k] * gx[k] + gy[k] * gy[k] + 1);
-                surfaceColor(mode, friction.kinetic(x, y), x, y, h[k], minH, maxH, b, rgb);
-                p = put(v, p, x, y, h[k], -gx[k] / len, -gy[k] / len, 1 / len, rgb);
+                double stripes = unstripedColor(mode, friction.kinetic(x, y), x, y, h[k], minH, maxH, rgb);
+                p = put(v, p, x, y, h[k], -gx[k] / len, -gy[k] / len, 1 / len, rgb, stripes);
             }
         }
         int q = 0;
@@ -141,9 +153,9 @@ public final class TerrainMesh {
                 int i = e[0] + t * e[2], j = e[1] + t * e[3];
                 double x = b.minX() + i * dx, y = b.minY() + j * dy, top = h[j * cols + i];
                 soil(top, top, rgb);
-                p = put(v, p, x, y, top, e[5], e[6], 0, rgb);
+                p = put(v, p, x, y, top, e[5], e[6], 0, rgb, 0);
                 soil(top, base, rgb);
-                p = put(v, p, x, y, base, e[5], e[6], 0, rgb);
+                p = put(v, p, x, y, base, e[5], e[6], 0, rgb, 0);
                 vertex += 2;
             }
             for (int t = 0; t + 1 < e[4]; t++) {
@@ -153,7 +165,7 @@ public final class TerrainMesh {
             }
         }
         if (q < idx.length) idx = java.util.Arrays.copyOf(idx, q);
-        return new TerrainMesh(new MeshData(MeshData.PNC, v, idx), cols, rows, minH, maxH, cellStarts);
+        return new TerrainMesh(new MeshData(LAYOUT, v, idx), cols, rows, minH, maxH, cellStarts);
     }
 
     /** Surface vertices of whole mesh rows, to overwrite a built mesh's vertex buffer from {@code firstFloat}. */
@@ -184,7 +196,7 @@ public final class TerrainMesh {
         int j1 = Math.min(rows - 1, (int) Math.ceil((maxY - b.minY()) / dy));
         if (j0 > j1 || maxX < b.minX() || minX > b.maxX()) return null;
         FrictionField friction = new FrictionField(course.physics(), course.zones(), course.terrain());
-        float[] v = new float[(j1 - j0 + 1) * cols * 9];
+        float[] v = new float[(j1 - j0 + 1) * cols * STRIDE];
         double[] s = new double[3];
         float[] rgb = new float[3];
         int p = 0;
@@ -193,15 +205,18 @@ public final class TerrainMesh {
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 terrain.sample(x, y, s);
                 double len = Math.sqrt(s[1] * s[1] + s[2] * s[2] + 1);
-                surfaceColor(mode, friction.kinetic(x, y), x, y, s[0], minH, maxH, b, rgb);
-                p = put(v, p, x, y, s[0], -s[1] / len, -s[2] / len, 1 / len, rgb);
+                double stripes = unstripedColor(mode, friction.kinetic(x, y), x, y, s[0], minH, maxH, rgb);
+                p = put(v, p, x, y, s[0], -s[1] / len, -s[2] / len, 1 / len, rgb, stripes);
             }
         }
-        return new Patch(j0 * cols * 9, v);
+        return new Patch(j0 * cols * STRIDE, v);
     }
 
-    private static int put(float[] v, int p, double x, double y, double z, double nx, double ny, double nz, float[] c) {
-        return Shapes.putPnc(v, p, x, y, z, nx, ny, nz, c[0], c[1], c[2]);
+    private static int put(float[] v, int p, double x, double y, double z, double nx, double ny, double nz, float[] c,
+                           double stripes) {
+        p = Shapes.putPnc(v, p, x, y, z, nx, ny, nz, c[0], c[1], c[2]);
+        v[p++] = (float) stripes;
+        return p;
     }
 
     private static int tri(int[] idx, int q, int a, int b, int c) {
@@ -233,29 +248,41 @@ public final class TerrainMesh {
      */
     public static void surfaceColor(ColorMode mode, double kineticFriction, double x, double y, double h,
                                     double minH, double maxH, Bounds b, float[] out) {
+        double weight = unstripedColor(mode, kineticFriction, x, y, h, minH, maxH, out);
+        // Mowing stripes across x, as on a real green (the terrain shaders draw the same per pixel).
+        double stripe = Math.floorMod((long) Math.floor((x - b.minX()) / STRIPE_WIDTH), 2) == 0 ? 1.0 : STRIPE_SHADE;
+        double f = lerp(1, stripe, weight);
+        set(out, out[0] * f, out[1] * f, out[2] * f);
+    }
+
+    /**
+     * The colour without the mowing stripes, into {@code out}; returns the stripes' weight there
+     * (1 - the sand's share on grass, 0 under water and on the height map).
+     */
+    static double unstripedColor(ColorMode mode, double kineticFriction, double x, double y, double h,
+                                 double minH, double maxH, float[] out) {
         if (mode == ColorMode.HEIGHT_MAP) {
             heightMapColor(h, minH, maxH, out);
-            return;
+            return 0;
         }
         if (h < 0) {
             // Lake bed: wet mud, darker with depth.
             double t = Math.min(1, -h / 0.3);
             set(out, lerp(0.42, 0.24, t), lerp(0.37, 0.20, t), lerp(0.24, 0.12, t));
-            return;
+            return 0;
         }
-        // Mowing stripes across x, 0.5 m wide, as on a real green.
-        double stripe = Math.floorMod((long) Math.floor((x - b.minX()) / 0.5), 2) == 0 ? 1.0 : 0.92;
         double sand = Math.min(1, Math.max(0, (kineticFriction - GRASS_FRICTION) / (SAND_FRICTION - GRASS_FRICTION)));
         double grain = 0.97 + 0.03 * Math.sin(x * 41.0) * Math.sin(y * 37.0);
         if (sand >= 1) {
             set(out, 0.87 * grain, 0.78 * grain, 0.53 * grain);
-            return;
+            return 0;
         }
         double range = maxH - Math.max(minH, 0);
         double t = range > 1e-6 ? (h - Math.max(minH, 0)) / range : 0.5;
         t = Math.min(1, Math.max(0, t));
-        double gr = lerp(0.13, 0.50, t) * stripe, gg = lerp(0.38, 0.76, t) * stripe, gb = lerp(0.11, 0.28, t) * stripe;
+        double gr = lerp(0.13, 0.50, t), gg = lerp(0.38, 0.76, t), gb = lerp(0.11, 0.28, t);
         set(out, lerp(gr, 0.87 * grain, sand), lerp(gg, 0.78 * grain, sand), lerp(gb, 0.53 * grain, sand));
+        return 1 - sand;
     }
 
     private static final float[][] HEIGHT_STOPS = {

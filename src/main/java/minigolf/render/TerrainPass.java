@@ -21,27 +21,26 @@ public final class TerrainPass implements RenderPass {
     /** Runs of cells (see SunlitCells.runs) as index ranges {first, count}: shadowed and sunlit; null: all shadowed. */
     private int[][] shadowedRanges, sunlitRanges;
     private final double minSpacing;
-    /** The water reflection's coarser mesh (software quality: a small mirrored image needs few triangles), or null: {@link #mesh}. */
-    private Mesh targetMesh;
-    private final double targetSpacing;
-    private boolean targetMeshStale;
-    private int targetVertexCount;
+    /** Chunked level of detail over the main mesh (its indices appended after {@link #indexCount}); see {@link TerrainLod}. */
+    private TerrainLod lod;
+    /** The levels chosen for the last perspective frame drawn by {@link #render} (-1: culled), or null. */
+    private int[] lastLevels;
+    private int[] scratchLevels;
+    private int lastLodIndices;
+    private boolean levelOfDetail = true;
 
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
-        this(course, terrain, mode, false, TerrainMesh.MIN_SPACING, TerrainMesh.MIN_SPACING);
+        this(course, terrain, mode, false, TerrainMesh.MIN_SPACING);
     }
 
     /**
      * As above; {@code vertexLit} picks the software rasterisers' shader (lighting and haze per vertex,
      * shadows per pixel: terrain-vertexlit.*), which costs less per pixel on llvmpipe; {@code minSpacing}
-     * the mesh's finest sample spacing in metres (llvmpipe pays per triangle too); {@code targetSpacing}
-     * that of the mesh drawn into the water's reflection image (a second, coarser mesh
-     * when larger than {@code minSpacing}).
+     * the mesh's finest sample spacing in metres (llvmpipe pays per triangle too; the level of
+     * detail, {@link TerrainLod}, draws far chunks coarser still).
      */
-    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing,
-                       double targetSpacing) {
+    public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing) {
         this.minSpacing = minSpacing;
-        this.targetSpacing = Math.max(minSpacing, targetSpacing);
         this.shader = new LitShader(vertexLit ? "terrain-vertexlit" : "terrain");
         this.course = course;
         this.terrain = terrain;
@@ -56,13 +55,22 @@ public final class TerrainPass implements RenderPass {
     public void setColorMode(TerrainMesh.ColorMode newMode) {
         if (newMode == mode && mesh != null) return;
         TerrainMesh built = TerrainMesh.build(course, terrain, newMode, minSpacing);
-        Mesh uploaded = new Mesh(built.data());
+        int[] own = built.data().indices();
+        TerrainLod newLod = new TerrainLod(built.data().vertices(), built.data().stride(), built.columns(), built.rows(),
+                built.cellStarts(), TerrainMesh.sampleSpacing(course.bounds(), minSpacing));
+        int[] lodIndices = newLod.indices(own);
+        int[] all = java.util.Arrays.copyOf(own, own.length + lodIndices.length);
+        System.arraycopy(lodIndices, 0, all, own.length, lodIndices.length);
+        Mesh uploaded = new Mesh(new MeshData(built.data().layout(), built.data().vertices(), all));
         if (mesh != null) mesh.close();
         mesh = uploaded;
         vertexCount = built.data().vertices().length / built.data().stride();
         rowStarts = built.rowStarts();
         cellStarts = built.cellStarts();
-        indexCount = built.data().indices().length;
+        indexCount = own.length;
+        lod = newLod;
+        lastLevels = null;
+        scratchLevels = new int[lod.chunks().size()];
         columns = built.columns();
         rows = built.rows();
         vertices = built.data().vertices();
@@ -70,17 +78,6 @@ public final class TerrainPass implements RenderPass {
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
         mode = newMode;
-        rebuildTargetMesh();
-    }
-
-    private void rebuildTargetMesh() {
-        targetMeshStale = false;
-        if (targetSpacing <= minSpacing) return;
-        MeshData data = TerrainMesh.build(course, terrain, mode, targetSpacing).data();
-        Mesh uploaded = new Mesh(data);
-        if (targetMesh != null) targetMesh.close();
-        targetMesh = uploaded;
-        targetVertexCount = data.vertices().length / data.stride();
     }
 
     /**
@@ -92,14 +89,7 @@ public final class TerrainPass implements RenderPass {
         course = newCourse;
         terrain = newTerrain;
         TerrainMesh.Patch patch = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight, minX, minY, maxX, maxY, minSpacing);
-        int floats = applyPatch(patch);
-        if (targetMesh != null && patch != null) {
-            TerrainMesh.Patch coarse = TerrainMesh.surfacePatch(course, terrain, mode, minHeight, maxHeight,
-                    minX, minY, maxX, maxY, targetSpacing);
-            if (coarse != null) targetMesh.updateVertices(coarse.firstFloat(), coarse.vertices());
-            targetMeshStale = false;
-        }
-        return floats;
+        return applyPatch(patch);
     }
 
     /** The mesh's finest sample spacing (metres): patches for {@link #applyPatch} must be made with it. */
@@ -112,8 +102,7 @@ public final class TerrainPass implements RenderPass {
         if (patch == null) return 0;
         mesh.updateVertices(patch.firstFloat(), patch.vertices());
         System.arraycopy(patch.vertices(), 0, vertices, patch.firstFloat(), patch.vertices().length);
-        // The water targets' coarse mesh is rebuilt before it is next drawn (updateRegion patches it at once).
-        if (targetMesh != null) targetMeshStale = true;
+        lod.refreshBoxes(vertices, TerrainMesh.STRIDE, columns);
         return patch.vertices().length;
     }
 
@@ -138,10 +127,11 @@ public final class TerrainPass implements RenderPass {
     public void setShadowedCells(ShadowMap map) {
         if (map == null) {
             shadowedRanges = sunlitRanges = null;
+            for (TerrainLod.Chunk c : lod.chunks()) c.allSunlit = false;
             return;
         }
         boolean[] mask = SunlitCells.shadowed(map.readDepth(), map.size(), map.lightViewProjection(), map.bias(),
-                vertices, 9, columns, rows); // PNC: 9 floats a vertex
+                vertices, TerrainMesh.STRIDE, columns, rows);
         int[] runs = SunlitCells.runs(mask, 8);
         java.util.List<int[]> shadowed = new java.util.ArrayList<>(), sunlit = new java.util.ArrayList<>();
         for (int k = 0; k + 1 < runs.length; k++) {
@@ -150,6 +140,12 @@ public final class TerrainPass implements RenderPass {
         }
         shadowedRanges = shadowed.toArray(new int[0][]);
         sunlitRanges = sunlit.toArray(new int[0][]);
+        int nx = columns - 1;
+        for (TerrainLod.Chunk c : lod.chunks()) {
+            boolean any = false;
+            for (int j = c.j0; j < c.j1 && !any; j++) for (int i = c.i0; i < c.i1 && !any; i++) any = mask[j * nx + i];
+            c.allSunlit = !any;
+        }
     }
 
     /** Indices in the main mesh (surface and skirts). */
@@ -182,11 +178,16 @@ public final class TerrainPass implements RenderPass {
     /** Draws the surface into the shadow map with the depth-only shader. */
     void drawDepth(ShaderProgram depthShader) {
         depthShader.set("uModel", new org.joml.Matrix4f());
-        mesh.draw();
+        mesh.drawRange(0, indexCount);
     }
 
     @Override
     public void render(FrameContext frame) {
+        if (perspective(frame)) {
+            renderLod(frame, scratchLevels);
+            lastLevels = scratchLevels.clone();
+            return;
+        }
         if (shadowedRanges == null || LitShader.Variant.of(frame) == LitShader.Variant.UNSHADOWED) {
             draw(frame, mesh);
             return;
@@ -218,20 +219,111 @@ public final class TerrainPass implements RenderPass {
         if (edge) mesh.drawRange(rowStarts[quadRows], indexCount - rowStarts[quadRows]);
     }
 
-    /** Draws into the water's reflection image, from the coarser mesh where there is one. */
-    void renderForWaterTarget(FrameContext frame) {
-        if (targetMeshStale) rebuildTargetMesh();
-        draw(frame, targetMesh != null ? targetMesh : mesh);
+    /**
+     * Whether perspective views draw the chunks at levels chosen by distance (the default) or every
+     * chunk at full resolution (level 0: for comparison in tests and benchmarks).
+     */
+    public void setLevelOfDetail(boolean on) {
+        levelOfDetail = on;
     }
 
-    /** Vertices in the water targets' mesh (the same as {@link #vertexCount()} without a coarser one). */
-    public int targetVertexCount() {
-        return targetMesh == null ? vertexCount : targetVertexCount;
+    /** Whether the frame has a perspective camera (the scene, the water's targets), not the minimap's orthographic one. */
+    private static boolean perspective(FrameContext frame) {
+        return frame.projection.m23() != 0;
+    }
+
+    /**
+     * The surface chunk by chunk at the levels {@link TerrainLod#select} picks for this view (into
+     * {@code levels}), chunks the shadow map cannot darken without the shadow tap, then the skirts.
+     */
+    private void renderLod(FrameContext frame, int[] levels) {
+        double pixelsPerRadian = frame.projection.m11() * frame.viewportHeight / 2.0;
+        lod.select(frame.viewProjection, frame.eye, pixelsPerRadian, levels);
+        if (!levelOfDetail) for (int n = 0; n < levels.length; n++) levels[n] = Math.min(levels[n], 0);
+        var chunks = lod.chunks();
+        boolean split = shadowedRanges != null && LitShader.Variant.of(frame) != LitShader.Variant.UNSHADOWED;
+        int drawn = 0;
+        for (int pass = 0; pass < (split ? 2 : 1); pass++) {
+            boolean sunlitPass = pass == 1;
+            boolean used = false;
+            for (int n = 0; n < chunks.size(); n++) {
+                TerrainLod.Chunk c = chunks.get(n);
+                if (levels[n] < 0 || (split && c.allSunlit != sunlitPass)) continue;
+                if (!used) {
+                    if (sunlitPass) use(frame, LitShader.Variant.UNSHADOWED);
+                    else use(frame);
+                    used = true;
+                }
+                drawn += drawChunk(c, levels[n]);
+            }
+        }
+        use(frame);
+        int skirts = cellStarts[cellStarts.length - 1];
+        mesh.drawRange(skirts, indexCount - skirts);
+        lastLodIndices = drawn;
+    }
+
+    private int drawChunk(TerrainLod.Chunk c, int level) {
+        int count = c.count[level];
+        if (count > 0) mesh.drawRange(indexCount + c.first[level], count);
+        return count;
+    }
+
+    /** Surface indices drawn by the last perspective frame (all chunks at their levels), for benchmarks. */
+    public int lastLodIndexCount() {
+        return lastLodIndices;
+    }
+
+    /** Chunks at each level in the last perspective frame drawn by {@link #render} ({@code [LEVELS]}; culled chunks not counted). */
+    public int[] lastLevelHistogram() {
+        int[] h = new int[TerrainLod.LEVELS];
+        if (lastLevels != null) for (int l : lastLevels) if (l >= 0) h[l]++;
+        return h;
+    }
+
+    TerrainLod lod() {
+        return lod;
+    }
+
+    /**
+     * The balls' shadows' second draw: the chunks that meet the box (min x, y, z, max x, y, z) at the
+     * levels the last {@link #render} drew them (the same triangles, so the same depths), and the
+     * skirts if the box reaches past the course's edge.
+     */
+    void redrawWithin(FrameContext frame, float[] box) {
+        if (lastLevels == null) {
+            renderWithin(frame, box);
+            return;
+        }
+        var b = course.bounds();
+        boolean edge = box[0] <= b.minX() || box[3] >= b.maxX() || box[1] <= b.minY() || box[4] >= b.maxY();
+        use(frame);
+        var chunks = lod.chunks();
+        for (int n = 0; n < chunks.size(); n++) {
+            TerrainLod.Chunk c = chunks.get(n);
+            if (lastLevels[n] < 0 || c.max[0] < box[0] || c.min[0] > box[3] || c.max[1] < box[1] || c.min[1] > box[4]) continue;
+            drawChunk(c, lastLevels[n]);
+        }
+        if (edge) {
+            int skirts = cellStarts[cellStarts.length - 1];
+            mesh.drawRange(skirts, indexCount - skirts);
+        }
+    }
+
+    /** Draws into the water's reflection image at the levels of detail for that (smaller) image. */
+    void renderForWaterTarget(FrameContext frame) {
+        if (!perspective(frame)) {
+            draw(frame, mesh);
+            return;
+        }
+        int saved = lastLodIndices;
+        renderLod(frame, new int[lod.chunks().size()]);
+        lastLodIndices = saved;
     }
 
     private void draw(FrameContext frame, Mesh drawn) {
         use(frame);
-        drawn.draw();
+        drawn.drawRange(0, indexCount);
     }
 
     private ShaderProgram use(FrameContext frame) {
@@ -243,6 +335,7 @@ public final class TerrainPass implements RenderPass {
         program.set("uViewProjection", frame.viewProjection);
         program.set("uClipPlane", frame.clipPlane);
         program.set("uShininess", 24f);
+        program.set("uStripeOrigin", (float) course.bounds().minX());
         program.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
         return program;
     }
@@ -250,7 +343,6 @@ public final class TerrainPass implements RenderPass {
     @Override
     public void close() {
         if (mesh != null) mesh.close();
-        if (targetMesh != null) targetMesh.close();
         shader.close();
     }
 }

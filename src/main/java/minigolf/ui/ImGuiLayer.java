@@ -17,12 +17,18 @@ public final class ImGuiLayer implements AutoCloseable {
     private final ImGuiImplGl3 gl3 = new ImGuiImplGl3();
     private boolean closed;
 
+    /** With the game's font size ({@link UiFont#SIZE_PIXELS} x scale). */
     public ImGuiLayer(long windowHandle, float scale) {
+        this(windowHandle, scale, UiFont.SIZE_PIXELS);
+    }
+
+    /** With the bundled font at {@code fontPixels} x scale (the editor's dense panels use a smaller size). */
+    public ImGuiLayer(long windowHandle, float scale, float fontPixels) {
         ImGui.createContext();
         ImGuiIO io = ImGui.getIO();
         io.setIniFilename(null);
         io.addConfigFlags(ImGuiConfigFlags.NavEnableKeyboard);
-        io.setFontGlobalScale(scale);
+        UiFont.addTo(io.getFonts(), fontPixels * scale); // rasterised at its size: no global scale, no blur
         Theme.apply(scale);
         glfw.init(windowHandle, true);
         gl3.init("#version 330 core");

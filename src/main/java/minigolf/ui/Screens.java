@@ -53,6 +53,8 @@ public final class Screens {
     private final ImInt frameLimit = new ImInt(60);
     private final ImInt strokeLimit = new ImInt(Game.DEFAULT_STROKE_LIMIT);
     private final float[] mouseSpeed = {1f};
+    private final ImBoolean aimGuide = new ImBoolean(true);
+    private final ImBoolean antiAliasing = new ImBoolean(false);
     private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
     private final ImDouble[] course = new ImDouble[9];
     private final ImInt testBot = new ImInt(0);
@@ -243,6 +245,8 @@ public final class Screens {
         frameLimit.set(s.frameLimit());
         strokeLimit.set(s.strokeLimit());
         mouseSpeed[0] = (float) s.mouseSpeed();
+        aimGuide.set(s.aimGuide());
+        antiAliasing.set(s.antiAliasing());
         masterVolume[0] = (float) view.volumes().master();
         effectsVolume[0] = (float) view.volumes().effects();
         ambienceVolume[0] = (float) view.volumes().ambience();
@@ -266,6 +270,10 @@ public final class Screens {
         ImGui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
         ImGui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
         ImGui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
+        ImGui.checkbox("Aim guide (off: pro)", aimGuide);
+        if (ImGui.isItemHovered()) ImGui.setTooltip("While aiming, dots show where the ball goes in its first second");
+        ImGui.checkbox("Smooth edges (FXAA)", antiAliasing);
+        if (ImGui.isItemHovered()) ImGui.setTooltip("Anti-aliasing where there is no MSAA; costs about 8 ms a frame with software rendering");
         ImGui.sliderFloat("Volume", masterVolume, 0f, 1f);
         ImGui.sliderFloat("Effects", effectsVolume, 0f, 1f);
         ImGui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
@@ -281,7 +289,8 @@ public final class Screens {
                 UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
                         .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
                         .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
-                        .withHideFrictionFromBots(hideFriction.get());
+                        .withHideFrictionFromBots(hideFriction.get())
+                        .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get());
                 // Keeps noise levels set in the settings file; the box turns the default levels on or all noise off.
                 boolean wasOn = s.noisePosition() > 0 || s.noiseVelocity() > 0;
                 if (realistic.get() != wasOn) {

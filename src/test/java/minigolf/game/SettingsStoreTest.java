@@ -1,6 +1,7 @@
 package minigolf.game;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -26,10 +27,23 @@ class SettingsStoreTest {
         SettingsStore store = new SettingsStore(dir.resolve("minigolf"));
         UserSettings s = UserSettings.DEFAULTS.withIntegrator(Integrator.EULER).withDt(1.0 / 120).withVsync(false)
                 .withFrameLimit(144).withMouseSpeed(1.7).withStrokeLimit(6).withHeightColours(true)
-                .withPlayerNames(List.of("Ann", "Bob"));
+                .withPlayerNames(List.of("Ann", "Bob")).withAimGuide(false).withAntiAliasing(true);
         store.save(s);
         assertEquals(s, store.load());
+        assertFalse(store.load().aimGuide(), "the pro setting survives");
+        assertTrue(store.load().antiAliasing());
         assertEquals(1.0 / 120, store.load().simulation().dt(), 0.0, "dt survives exactly");
+    }
+
+    @Test
+    void anAimGuideThatIsNotABooleanIsRefused() throws Exception {
+        SettingsStore store = new SettingsStore(dir);
+        Files.writeString(store.file(), "{\"aimGuide\": \"yes\"}");
+        assertThrows(SaveGameException.class, store::load);
+        Files.writeString(store.file(), "{\"aimGuide\": false}");
+        assertFalse(store.load().aimGuide());
+        Files.writeString(store.file(), "{}");
+        assertTrue(store.load().aimGuide(), "missing: the default, on");
     }
 
     @Test

@@ -141,7 +141,7 @@ public final class EditorApp {
             window.setVsync(options.frames() <= 0);
             installInput();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
-            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale)) {
+            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale, minigolf.ui.UiFont.EDITOR_SIZE_PIXELS)) {
                 imgui = ui;
                 if (recovery.start()) {
                     if (options.frames() <= 0) {

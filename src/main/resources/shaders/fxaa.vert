@@ -1,0 +1,2 @@
+// FXAA's full-screen quad: the same as the minimap's copy (blit.vert).
+#include "blit.vert"

@@ -1,0 +1,83 @@
+package minigolf.game;
+
+import minigolf.app.GameLauncher;
+import minigolf.physics.Outcome;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.Simulator;
+import minigolf.physics.TrajectoryListener;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+/** The aim guide: the real engine's first second of the shot (flat course: h = 0.1, mu_k = 0.1; lake). */
+class AimGuideTest {
+    static final World FLAT = GameLauncher.loadBundled("/courses/flat.json");
+    static final double MU_G = 0.1 * 9.81;
+
+    @Test
+    void onFlatGroundItEndsWhereTheBallIsAfterOneSecond() {
+        // 2 m/s along +x: after 1 s the ball has rolled 2 - mu g / 2 = 1.50950 m and is still moving.
+        AimGuide g = AimGuide.preview(FLAT, SimulationSettings.DEFAULT, -3, 0, 2, 0, AimGuide.SECONDS);
+        assertNull(g.outcome(), "the stroke goes on past the guide");
+        float[] p = g.points();
+        assertEquals(-3, p[0], 1e-6);
+        assertEquals(0, p[1], 1e-6);
+        assertEquals(0.1, p[2], 1e-6, "contact point on the ground");
+        int last = 3 * (g.pointCount() - 1);
+        assertEquals(-3 + 2 - MU_G / 2, p[last], 1e-4);
+        assertEquals(0, p[last + 1], 1e-6);
+        assertEquals(61, g.pointCount(), "the start and one point per 1/60 s step");
+        for (int i = 3; i < p.length; i += 3) assertTrue(p[i] > p[i - 3], "forward all the way");
+    }
+
+    @Test
+    void aSoftShotEndsAtItsRestPoint() {
+        // 1 m/s stops after v^2 / (2 mu g) = 0.5097 m, in 1.019 s: just past the window, so 0.9 m/s (0.918 s).
+        double v = 0.9;
+        AimGuide g = AimGuide.preview(FLAT, SimulationSettings.DEFAULT, -3, 0, 0, v, AimGuide.SECONDS);
+        assertEquals(Outcome.STOPPED, g.outcome());
+        int last = 3 * (g.pointCount() - 1);
+        assertEquals(v * v / (2 * MU_G), g.points()[last + 1], 1e-4);
+    }
+
+    @Test
+    void outOfBoundsEndsTheGuideAtTheEdge() {
+        // The flat course's edge is 1 m behind the start.
+        AimGuide g = AimGuide.preview(FLAT, SimulationSettings.DEFAULT, -3, 0, -3, 0, AimGuide.SECONDS);
+        assertEquals(Outcome.OUT, g.outcome());
+        assertEquals(-4, g.points()[3 * (g.pointCount() - 1)], 0.06);
+    }
+
+    @Test
+    void itIsThePlayedStrokeCutAtOneSecond() {
+        World lake = GameLauncher.loadBundled("/courses/lake.json");
+        SimulationSettings s = SimulationSettings.DEFAULT;
+        AimGuide g = AimGuide.preview(lake, s, -3, 0, 3.1, 0.4, AimGuide.SECONDS);
+        List<double[]> played = new ArrayList<>();
+        new Simulator(lake, s).simulate(-3, 0, 3.1, 0.4, new TrajectoryListener() {
+            @Override
+            public void onStep(double t, double x, double y, double vx, double vy) {
+            }
+
+            @Override
+            public void onState(double t, double x, double y, double z, double vx, double vy, double vz) {
+                if (t <= AimGuide.SECONDS + 1e-9) played.add(new double[]{x, y, z});
+            }
+        });
+        assertEquals(played.size() + 1, g.pointCount());
+        for (int i = 0; i < played.size(); i++) {
+            for (int c = 0; c < 3; c++) assertEquals((float) played.get(i)[c], g.points()[3 * (i + 1) + c], "point " + i);
+        }
+    }
+
+    @Test
+    void theSettingIsKeptAndDefaultsToOn() {
+        assertTrue(UserSettings.DEFAULTS.aimGuide());
+        assertFalse(UserSettings.DEFAULTS.withAimGuide(false).aimGuide());
+        assertFalse(UserSettings.DEFAULTS.withAimGuide(false).withMouseSpeed(2).aimGuide(), "other changes keep it");
+    }
+}
