@@ -118,6 +118,12 @@ public final class PlannerBot extends SearchBot {
         World world = request.world();
         CountingSimulator sim = request.simulator();
 
+        if (!Double.isFinite(stroke.field.at(stroke.px, stroke.py))) {
+            // No way along the ground (a green ringed by water, walls round the hole): through the air.
+            sim.phase("chip");
+            Shot chip = new Chip(stroke).search();
+            if (chip != null) return chip;
+        }
         double reach = stroke.maxRoll();
         double pathLength = stroke.pathLength;
         Planned planned = null;
