@@ -300,7 +300,7 @@ public final class Stroke {
     }
 
     private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
-        if (kind == RollingStep.Kind.INTEGRATOR && takesOff(tau)) {
+        if (kind == RollingStep.Kind.INTEGRATOR && (takesOff(tau) || curvesAwayWithin(tau, a1x, a1y))) {
             // The ground falls away faster than gravity can pull the ball down: it flies this step,
             // from where the ground begins to curve away too fast (found by bisection). Decided
             // before water and the bounds, which a flying ball only meets where it comes down.
@@ -447,6 +447,23 @@ public final class Stroke {
     private boolean takesOff(double tau) {
         double free = h + (hx * vx + hy * vy) * tau - 0.5 * gravity * tau * tau;
         return terrain.height(x + vx * tau, y + vy * tau) < free - LIFT_TOLERANCE;
+    }
+
+    /**
+     * Whether a crest shorter than the step curves away too fast somewhere inside it: over the whole
+     * step the ground may fall below the tangent plane by less than gravity's g tau^2 / 2 while a
+     * short stretch of it curves away faster (the continuous criterion v^T H v &lt; -g holds there).
+     * Checked, with probes of tau / 8 at the step's quarters, only where the whole step comes within
+     * half of the threshold.
+     */
+    private boolean curvesAwayWithin(double tau, double a1x, double a1y) {
+        double belowTangent = h + (hx * vx + hy * vy) * tau - terrain.height(x + vx * tau, y + vy * tau);
+        if (belowTangent < 0.25 * gravity * tau * tau) return false;
+        double probe = tau / 8, tolerance = LIFT_TOLERANCE / 64;
+        for (int k = 1; k <= 3; k++) {
+            if (leaves(k * tau / 4, probe, tolerance, a1x, a1y)) return true;
+        }
+        return false;
     }
 
     /** Rolls until the moment of take-off within the coming tau, then launches the ball from there. */
