@@ -2,7 +2,6 @@ package minigolf.physics;
 
 import java.util.List;
 import minigolf.collision.CollisionScene;
-import minigolf.collision.Hit;
 import minigolf.course.Hole;
 import minigolf.course.HoleRule;
 import minigolf.course.PhysicsModel;
@@ -16,10 +15,11 @@ import minigolf.terrain.Terrain;
  *
  * <p>The pieces: {@link RollingStep} integrates the rolling equations (Euler, RK2, RK4, the
  * analytic stop, the slow implicit step), {@link FlightStep} a flying ball, {@link RestRule}
- * decides when the ball stops and whether it stays, {@link EventLog} keeps the events. This class
- * owns the state and strings them together: hazards (water, bounds) located inside a step by
- * bisection, zone edges, the hole rules, obstacle contacts, take-off and landing, and the rule that
- * no rolling step gains energy.
+ * decides when the ball stops and whether it stays, {@link TakeOff} when it leaves the ground,
+ * {@link PathSweep} where it meets an obstacle, {@link EventLog} keeps the events. This class owns
+ * the state and strings them together: hazards (water, bounds) located inside a step by bisection,
+ * zone edges, the hole rules, contact responses, launch and landing, and the rule that no rolling
+ * step gains energy.
  *
  * <p>Obstacles and flight (docs/physics.md): the state is 3-D, (x, y, z) being the ball's contact
  * point. Each step's path (a chord from start to end) is swept with the ball's sphere against the
@@ -35,14 +35,6 @@ public final class Stroke {
     static final int MAX_PIECES = 16;
     /** A ball leaving a surface lower than this (m) stays on it: it hops slower than sqrt(2 g HOP_HEIGHT). */
     static final double HOP_HEIGHT = 0.001;
-    /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
-    static final double LIFT_TOLERANCE = 1e-6;
-    /** Chords a step's path is swept as, against the obstacles, where it turns... */
-    static final int PATH_PIECES = 4;
-    /** ... by more than this from its chord (m); a straighter path is swept as its chord. */
-    static final double STRAIGHT = 1e-6;
-    /** A ball stops this far short of its contact point along its path, so it never ends a step touching. */
-    static final double SKIN = 1e-7;
     /** Coulomb friction of a landing ball on turf; the tangential loss is at most 2/7 (the ball then rolls). */
     static final double IMPACT_FRICTION = 0.4;
 
@@ -69,10 +61,8 @@ public final class Stroke {
     private final double ballRadius;
     private final Double groundRestitution;
     private final EventLog events;
-    private final Hit hit = new Hit();
-    /** The last contact {@link #sweepPath} found: the fraction of the step, and the sphere's centre there. */
-    private double contactAt, contactX, contactY, contactZ;
-    private final double[] scratch = new double[3];
+    private final PathSweep paths;
+    private final TakeOff takeOff;
 
     // The ball's state and the terrain sample at it (reused as the first stage of the next step).
     private double x, y, vx, vy, t;
@@ -135,6 +125,8 @@ public final class Stroke {
         this.rolling = new RollingStep(terrain, friction, gravity, complete, settings.integrator());
         this.flight = new FlightStep(terrain, gravity, physics.dragFactor());
         this.rest = new RestRule(world);
+        this.paths = new PathSweep(world.obstacles(), terrain, physics.ballRadius());
+        this.takeOff = new TakeOff(terrain, rolling, gravity);
         this.dt = settings.dt();
         this.maxTime = settings.maxTime();
         Hole hole = world.hole();
@@ -300,7 +292,7 @@ public final class Stroke {
     }
 
     private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
-        if (kind == RollingStep.Kind.INTEGRATOR && (takesOff(tau) || curvesAwayWithin(tau, a1x, a1y))) {
+        if (kind == RollingStep.Kind.INTEGRATOR && takesOffWithin(tau, a1x, a1y)) {
             // The ground falls away faster than gravity can pull the ball down: it flies this step,
             // from where the ground begins to curve away too fast (found by bisection). Decided
             // before water and the bounds, which a flying ball only meets where it comes down.
@@ -319,12 +311,12 @@ public final class Stroke {
             event = hazardAt(nx, ny);
         }
         boolean collided = false;
-        if (scene != null && sweepPath(x, y, 0, vx, vy, 0, nx, ny, 0, nvx, nvy, 0, endTau, true)) {
+        if (scene != null && paths.sweep(x, y, h + ballRadius, vx, vy, 0, nx, ny, 0, nvx, nvy, 0, endTau, true)) {
             // The ball reaches an obstacle first: the step ends there (on the swept path).
-            endTau *= contactAt;
+            endTau *= paths.contactAt;
             subStep(endTau, kind, a1x, a1y);
-            nx = contactX;
-            ny = contactY;
+            nx = paths.contactX;
+            ny = paths.contactY;
             stopping = false;
             event = null;
             collided = true;
@@ -436,39 +428,15 @@ public final class Stroke {
         return false;
     }
 
-    /**
-     * Whether the ground curves away under the ball faster than gravity can bend its path in the
-     * coming step: a ball thrown from here along the ground, (v, grad h . v), would be above the
-     * ground after tau under gravity alone (its horizontal velocity kept). In the continuous model
-     * that is v^T H v &lt; -g. A uniform slope, however steep, never launches the ball, nor does any
-     * ground launch a ball at rest (the classic model's own acceleration down a steep slope, g
-     * times the slope, is not a speed the ball has).
-     */
-    private boolean takesOff(double tau) {
-        double free = h + (hx * vx + hy * vy) * tau - 0.5 * gravity * tau * tau;
-        return terrain.height(x + vx * tau, y + vy * tau) < free - LIFT_TOLERANCE;
-    }
-
-    /**
-     * Whether a crest shorter than the step curves away too fast somewhere inside it: over the whole
-     * step the ground may fall below the tangent plane by less than gravity's g tau^2 / 2 while a
-     * short stretch of it curves away faster (the continuous criterion v^T H v &lt; -g holds there).
-     * Checked, with probes of tau / 8 at the step's quarters, only where the whole step comes within
-     * half of the threshold.
-     */
-    private boolean curvesAwayWithin(double tau, double a1x, double a1y) {
-        double belowTangent = h + (hx * vx + hy * vy) * tau - terrain.height(x + vx * tau, y + vy * tau);
-        if (belowTangent < 0.25 * gravity * tau * tau) return false;
-        double probe = tau / 8, tolerance = LIFT_TOLERANCE / 64;
-        for (int k = 1; k <= 3; k++) {
-            if (leaves(k * tau / 4, probe, tolerance, a1x, a1y)) return true;
-        }
-        return false;
+    /** Whether the ball leaves the ground within the coming tau (docs/physics.md, "Taking off"). */
+    private boolean takesOffWithin(double tau, double a1x, double a1y) {
+        takeOff.from(x, y, vx, vy, h, hx, hy, muK);
+        return takeOff.takesOff(tau) || takeOff.curvesAwayWithin(tau, a1x, a1y);
     }
 
     /** Rolls until the moment of take-off within the coming tau, then launches the ball from there. */
     private void launchWithin(double tau, double a1x, double a1y) {
-        double rolled = takeOffTime(tau, a1x, a1y);
+        double rolled = takeOff.time(tau, a1x, a1y);
         if (rolled > 0) {
             subStep(rolled, RollingStep.Kind.INTEGRATOR, a1x, a1y);
             x = nx;
@@ -487,105 +455,6 @@ public final class Stroke {
     }
 
     /**
-     * How long into a step of length tau that ends in the air the ball still rolls: the first
-     * moment from which a ball thrown along the ground would be above it a short probe later
-     * (tau / 8, with the tolerance scaled alike), by bisection on the rolling sub-step. Without
-     * it the ball would leave at the step's start, up to a step early (millimetres where it lands).
-     */
-    private double takeOffTime(double tau, double a1x, double a1y) {
-        double probe = tau / 8;
-        double tolerance = LIFT_TOLERANCE / 64;
-        double onGround = 0, flying = tau;
-        if (leaves(0, probe, tolerance, a1x, a1y)) return 0;
-        for (int k = 0; k < 30; k++) {
-            double mid = 0.5 * (onGround + flying);
-            if (leaves(mid, probe, tolerance, a1x, a1y)) flying = mid; else onGround = mid;
-        }
-        return onGround;
-    }
-
-    /** Whether a ball rolled for tau from the step's start, then thrown along the ground, is above it after probe. */
-    private boolean leaves(double tau, double probe, double tolerance, double a1x, double a1y) {
-        double sx = x, sy = y, svx = vx, svy = vy, shx = hx, shy = hy;
-        double sh = h;
-        if (tau > 0) {
-            subStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
-            terrain.sample(nx, ny, sample);
-            sx = nx;
-            sy = ny;
-            svx = nvx;
-            svy = nvy;
-            sh = sample[0];
-            shx = sample[1];
-            shy = sample[2];
-        }
-        double free = sh + (shx * svx + shy * svy) * probe - 0.5 * gravity * probe * probe;
-        return terrain.height(sx + svx * probe, sy + svy * probe) < free - tolerance;
-    }
-
-    /**
-     * Sweeps the ball's sphere along its path through a step of length tau, from (x0, y0, z0) at
-     * velocity v0 to (x1, y1, z1) at v1 (z the sphere's centre), against the obstacles. The path is
-     * the cubic Hermite curve through both ends with their velocities, swept as
-     * {@link #PATH_PIECES} chords: a single chord cuts the curve's corner by up to a tau^2 / 8
-     * (0.3 mm at 1/60 s), enough to turn a glancing hit on a trunk into a miss. A rolling ball's
-     * centre follows the ground (z from the terrain, z0 and z1 ignored). On a contact returns true
-     * with {@link #contactAt} (the fraction of tau) and the contact point set, backed off by
-     * {@link #SKIN}.
-     */
-    private boolean sweepPath(double x0, double y0, double z0, double vx0, double vy0, double vz0,
-                              double x1, double y1, double z1, double vx1, double vy1, double vz1,
-                              double tau, boolean rolling) {
-        double r = ballRadius;
-        double ax = x0, ay = y0, az = rolling ? h + r : z0;
-        double loX = Math.min(x0, x1), loY = Math.min(y0, y1), hiX = Math.max(x0, x1), hiY = Math.max(y0, y1);
-        // The curve strays from the chord by at most |v0 - v1| tau / 8 (a cubic's bound is smaller).
-        double bulge = 0.125 * tau * (Math.abs(vx0 - vx1) + Math.abs(vy0 - vy1));
-        if (!scene.anyNear(loX - bulge, loY - bulge, hiX + bulge, hiY + bulge)) return false;
-        // A path that does not turn (the velocity changes only along the chord, as on flat ground)
-        // is its chord: one sweep. Sideways, the cubic strays by about |dv x chord| tau / 8.
-        double cx = x1 - x0, cy = y1 - y0, chord = Math.sqrt(cx * cx + cy * cy);
-        double sideways = chord > 0 ? Math.abs((vx0 - vx1) * cy - (vy0 - vy1) * cx) / chord : bulge;
-        double vertical = rolling ? 0 : Math.abs(vz0 - vz1) + Math.abs(z1 - z0 - 0.5 * (vz0 + vz1) * tau) / tau;
-        int pieces = 0.125 * tau * (sideways + vertical) < STRAIGHT ? 1 : PATH_PIECES;
-        for (int k = 1; k <= pieces; k++) {
-            double s1 = (double) k / pieces;
-            double bx = hermite(s1, x0, vx0 * tau, x1, vx1 * tau);
-            double by = hermite(s1, y0, vy0 * tau, y1, vy1 * tau);
-            double bz = rolling ? terrain.height(bx, by) + r : hermite(s1, z0, vz0 * tau, z1, vz1 * tau);
-            if (k == pieces) {
-                bx = x1;
-                by = y1;
-                bz = rolling ? terrain.height(x1, y1) + r : z1;
-            }
-            if (scene.sweep(ax, ay, az, bx, by, bz, hit, scratch)) {
-                backOff(Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay) + (bz - az) * (bz - az)));
-                double f = hit.fraction;
-                contactX = ax + f * (bx - ax);
-                contactY = ay + f * (by - ay);
-                contactZ = az + f * (bz - az);
-                contactAt = (k - 1 + f) / pieces;
-                return true;
-            }
-            ax = bx;
-            ay = by;
-            az = bz;
-        }
-        return false;
-    }
-
-    /** The cubic Hermite curve at s in [0, 1] from p0 with tangent m0 to p1 with tangent m1. */
-    private static double hermite(double s, double p0, double m0, double p1, double m1) {
-        double s2 = s * s, s3 = s2 * s;
-        return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (3 * s2 - 2 * s3) * p1 + (s3 - s2) * m1;
-    }
-
-    /** Moves the contact fraction back by {@link #SKIN} along a sweep of the given length. */
-    private void backOff(double length) {
-        if (length > 0) hit.fraction = Math.max(0, hit.fraction - SKIN / length);
-    }
-
-    /**
      * A rolling ball at an obstacle: its velocity along the ground, (vx, vy, grad h . v), is
      * reflected about the contact normal. If it then leaves the ground faster than a 1 mm hop, it
      * flies; otherwise the part into or off the ground is dropped and it rolls on.
@@ -593,12 +462,12 @@ public final class Stroke {
     private void bounceOffObstacleWhileRolling() {
         double wz = hx * vx + hy * vy;
         double before = Math.sqrt(vx * vx + vy * vy + wz * wz);
-        double vn = vx * hit.nx + vy * hit.ny + wz * hit.nz;
+        double vn = vx * paths.hit.nx + vy * paths.hit.ny + wz * paths.hit.nz;
         if (vn < 0) {
-            double j = (1 + hit.restitution) * vn;
-            vx -= j * hit.nx;
-            vy -= j * hit.ny;
-            wz -= j * hit.nz;
+            double j = (1 + paths.hit.restitution) * vn;
+            vx -= j * paths.hit.nx;
+            vy -= j * paths.hit.ny;
+            wz -= j * paths.hit.nz;
         }
         double norm = Math.sqrt(1 + hx * hx + hy * hy);
         double away = (wz - hx * vx - hy * vy) / norm; // speed off the ground along its normal
@@ -639,12 +508,12 @@ public final class Stroke {
         boolean collided = false;
         if (scene != null) {
             double r = ballRadius;
-            if (sweepPath(x, y, z + r, vx, vy, vz, fx, fy, fz + r, fvx, fvy, fvz, endTau, false)) {
-                endTau *= contactAt;
+            if (paths.sweep(x, y, z + r, vx, vy, vz, fx, fy, fz + r, fvx, fvy, fvz, endTau, false)) {
+                endTau *= paths.contactAt;
                 flightSub(endTau);
-                fx = contactX;
-                fy = contactY;
-                fz = contactZ - r;
+                fx = paths.contactX;
+                fy = paths.contactY;
+                fz = paths.contactZ - r;
                 lands = false;
                 collided = true;
             }
@@ -669,17 +538,17 @@ public final class Stroke {
 
     private void bounceOffObstacleInFlight() {
         double before = Math.sqrt(vx * vx + vy * vy + vz * vz);
-        double vn = vx * hit.nx + vy * hit.ny + vz * hit.nz;
+        double vn = vx * paths.hit.nx + vy * paths.hit.ny + vz * paths.hit.nz;
         if (vn < 0) {
-            double j = (1 + hit.restitution) * vn;
-            vx -= j * hit.nx;
-            vy -= j * hit.ny;
-            vz -= j * hit.nz;
+            double j = (1 + paths.hit.restitution) * vn;
+            vx -= j * paths.hit.nx;
+            vy -= j * paths.hit.ny;
+            vz -= j * paths.hit.nz;
         }
         double after = Math.sqrt(vx * vx + vy * vy + vz * vz);
         event(StrokeEvent.Type.COLLISION, before, after);
         // Come to rest on top of an obstacle: the ball is unplayable there, which counts as out.
-        if (hit.nz > 0.5 && -vn * hit.restitution < hopSpeed && after < hopSpeed / hit.nz) {
+        if (paths.hit.nz > 0.5 && -vn * paths.hit.restitution < hopSpeed && after < hopSpeed / paths.hit.nz) {
             finish(Outcome.OUT, x, y, z);
         }
     }

@@ -1,0 +1,105 @@
+package minigolf.physics;
+
+import minigolf.terrain.Terrain;
+
+/**
+ * Whether and when a rolling ball leaves the ground within a step (docs/physics.md, "Taking off"),
+ * from the step's start state given by {@link #from}. {@link Stroke} launches the ball.
+ */
+final class TakeOff {
+    /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
+    static final double LIFT_TOLERANCE = 1e-6;
+
+    private final Terrain terrain;
+    private final RollingStep rolling;
+    private final double gravity;
+    private final double[] sample = new double[3];
+    private double x, y, vx, vy, h, hx, hy, muK;
+
+    TakeOff(Terrain terrain, RollingStep rolling, double gravity) {
+        this.terrain = terrain;
+        this.rolling = rolling;
+        this.gravity = gravity;
+    }
+
+    /** The step's start: position, velocity, height, slope and kinetic friction there. */
+    void from(double x, double y, double vx, double vy, double h, double hx, double hy, double muK) {
+        this.x = x;
+        this.y = y;
+        this.vx = vx;
+        this.vy = vy;
+        this.h = h;
+        this.hx = hx;
+        this.hy = hy;
+        this.muK = muK;
+    }
+
+    /**
+     * Whether the ground curves away under the ball faster than gravity can bend its path in the
+     * coming step: a ball thrown from here along the ground, (v, grad h . v), would be above the
+     * ground after tau under gravity alone (its horizontal velocity kept). In the continuous model
+     * that is v^T H v &lt; -g. A uniform slope, however steep, never launches the ball, nor does any
+     * ground launch a ball at rest (the classic model's own acceleration down a steep slope, g
+     * times the slope, is not a speed the ball has).
+     */
+    boolean takesOff(double tau) {
+        double free = h + (hx * vx + hy * vy) * tau - 0.5 * gravity * tau * tau;
+        return terrain.height(x + vx * tau, y + vy * tau) < free - LIFT_TOLERANCE;
+    }
+
+    /**
+     * Whether a crest shorter than the step curves away too fast somewhere inside it: over the whole
+     * step the ground may fall below the tangent plane by less than gravity's g tau^2 / 2 while a
+     * short stretch of it curves away faster (the continuous criterion v^T H v &lt; -g holds there).
+     * Checked, with probes of tau / 8 at the step's quarters, only where the whole step comes within
+     * half of the threshold.
+     */
+    boolean curvesAwayWithin(double tau, double a1x, double a1y) {
+        double belowTangent = h + (hx * vx + hy * vy) * tau - terrain.height(x + vx * tau, y + vy * tau);
+        if (belowTangent < 0.25 * gravity * tau * tau) return false;
+        double probe = tau / 8, tolerance = LIFT_TOLERANCE / 64;
+        for (int k = 1; k <= 3; k++) {
+            if (leaves(k * tau / 4, probe, tolerance, a1x, a1y)) return true;
+        }
+        return false;
+    }
+
+    /**
+     * How long into a step of length tau that ends in the air the ball still rolls: the first
+     * moment from which a ball thrown along the ground would be above it a short probe later
+     * (tau / 8, with the tolerance scaled alike), by bisection on the rolling sub-step. Without
+     * it the ball would leave at the step's start, up to a step early (millimetres where it lands).
+     */
+    double time(double tau, double a1x, double a1y) {
+        double probe = tau / 8;
+        double tolerance = LIFT_TOLERANCE / 64;
+        double onGround = 0, flying = tau;
+        if (leaves(0, probe, tolerance, a1x, a1y)) return 0;
+        for (int k = 0; k < 30; k++) {
+            double mid = 0.5 * (onGround + flying);
+            if (leaves(mid, probe, tolerance, a1x, a1y)) flying = mid; else onGround = mid;
+        }
+        return onGround;
+    }
+
+    /** Whether a ball rolled for tau from the step's start, then thrown along the ground, is above it after probe. */
+    private boolean leaves(double tau, double probe, double tolerance, double a1x, double a1y) {
+        double sx = x, sy = y, svx = vx, svy = vy, shx = hx, shy = hy;
+        double sh = h;
+        if (tau > 0) {
+            rolling.from(x, y, vx, vy, hx, hy, muK);
+            rolling.advance(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+            terrain.sample(rolling.nx, rolling.ny, sample);
+            sx = rolling.nx;
+            sy = rolling.ny;
+            svx = rolling.nvx;
+            svy = rolling.nvy;
+            sh = sample[0];
+            shx = sample[1];
+            shy = sample[2];
+        }
+        double free = sh + (shx * svx + shy * svy) * probe - 0.5 * gravity * probe * probe;
+        return terrain.height(sx + svx * probe, sy + svy * probe) < free - tolerance;
+    }
+
+}
