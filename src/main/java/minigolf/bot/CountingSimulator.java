@@ -47,6 +47,8 @@ public final class CountingSimulator {
         final Map<Shot, ShotResult> results = new HashMap<>();
         /** Errors a bot recovered from (see SearchBot): none on a correct bot. */
         final List<String> errors = new ArrayList<>();
+        /** Whoever plays the shot can only putt (the game): bots must not choose chips. */
+        boolean puttsOnly;
 
         Account(long budget, CancellationToken token, BotProgress progress) {
             this.budget = budget;
@@ -96,6 +98,16 @@ public final class CountingSimulator {
 
     public World world() {
         return world;
+    }
+
+    /** Whether the shot chosen will be played as a putt only (the game has no chips yet): no chips. */
+    public boolean puttsOnly() {
+        return account.puttsOnly;
+    }
+
+    /** Says that the chosen shot can only be a putt; shared with every {@link #variant}. */
+    public void allowPuttsOnly() {
+        account.puttsOnly = true;
     }
 
     public SimulationSettings settings() {

@@ -114,6 +114,7 @@ public final class BotCatalog {
                 // Hidden friction: the bot simulates the prior, re-fitted to its own strokes (counted in its budget).
                 World seen = conditions.hideFriction() ? FrictionPrior.scaled(world, 1) : world;
                 CountingSimulator sim = new CountingSimulator(seen, settings, BUDGET_PER_STROKE, token, progress);
+                sim.allowPuttsOnly(); // the game plays putts: a bot's chip would be flattened into one
                 CountingSimulator botSim = conditions.hideFriction() ? estimated(sim, conditions) : sim;
                 Shot shot = sim.limit(bot.nextShot(new BotRequest(botSim, x, y, strokes, seed, conditions.noise())));
                 return new double[]{shot.vx(), shot.vy()};

@@ -29,8 +29,9 @@ final class Chip {
         this.s = stroke;
     }
 
-    /** A chip that holes, or the best resting one, or null when every chip is lost. */
+    /** A chip that holes, or the best resting one, or null when every chip is lost (or chips cannot be played). */
     Shot search() {
+        if (s.sim.puttsOnly()) return null;
         double toHole = Math.atan2(s.holeY - s.py, s.holeX - s.px);
         double max = s.world.physics().maxSpeed();
         for (double elevation : ELEVATIONS) {

@@ -45,4 +45,20 @@ class PlannerChipTest {
             assertTrue(r.botErrors().isEmpty(), r.botErrors().toString());
         }
     }
+
+    @org.junit.jupiter.api.Test
+    void whereOnlyPuttsArePlayedThePlannerDoesNotChip() throws Exception {
+        // The game plays putts only: a chip chosen there would be played flattened into a putt.
+        World world = World.load(Path.of("courses/chips/island-green.json"));
+        minigolf.bot.CountingSimulator sim = new minigolf.bot.CountingSimulator(world, SimulationSettings.DEFAULT,
+                100_000, CancellationToken.none(), BotProgress.NONE);
+        sim.allowPuttsOnly();
+        minigolf.bot.Shot shot = new PlannerBot().nextShot(new minigolf.bot.BotRequest(sim,
+                world.course().start().x(), world.course().start().y(), 0, 1));
+        assertEquals(0, shot.vz(), "a putt");
+        minigolf.bot.CountingSimulator free = new minigolf.bot.CountingSimulator(world, SimulationSettings.DEFAULT,
+                100_000, CancellationToken.none(), BotProgress.NONE);
+        assertTrue(new PlannerBot().nextShot(new minigolf.bot.BotRequest(free,
+                world.course().start().x(), world.course().start().y(), 0, 1)).vz() > 0, "a chip where chips are played");
+    }
 }
