@@ -51,8 +51,14 @@ public final class ImGuiLayer implements AutoCloseable {
         return ImGui.getIO().getWantCaptureMouse();
     }
 
+    /**
+     * Whether ImGui takes the keyboard: only while a text field is being edited. (Its own
+     * WantCaptureKeyboard stays true as long as a panel has keyboard-navigation focus, so after
+     * typing in a field the game's and the editor's shortcuts, ESC, Ctrl+Z, Ctrl+S, were dead until
+     * the 3D view was clicked.)
+     */
     public boolean wantsKeyboard() {
-        return ImGui.getIO().getWantCaptureKeyboard();
+        return ImGui.getIO().getWantTextInput();
     }
 
     @Override
