@@ -431,7 +431,7 @@ public final class Stroke {
     /** Whether the ball leaves the ground within the coming tau (docs/physics.md, "Taking off"). */
     private boolean takesOffWithin(double tau, double a1x, double a1y) {
         takeOff.from(x, y, vx, vy, h, hx, hy, muK);
-        return takeOff.takesOff(tau) || takeOff.curvesAwayWithin(tau, a1x, a1y);
+        return takeOff.takesOff(tau, a1x, a1y);
     }
 
     /** Rolls until the moment of take-off within the coming tau, then launches the ball from there. */

@@ -40,11 +40,14 @@ final class TakeOff {
      * ground after tau under gravity alone (its horizontal velocity kept). In the continuous model
      * that is v^T H v &lt; -g. A uniform slope, however steep, never launches the ball, nor does any
      * ground launch a ball at rest (the classic model's own acceleration down a steep slope, g
-     * times the slope, is not a speed the ball has).
+     * times the slope, is not a speed the ball has). A crest shorter than the step is looked for too
+     * ({@link #curvesAwayWithin}).
      */
-    boolean takesOff(double tau) {
-        double free = h + (hx * vx + hy * vy) * tau - 0.5 * gravity * tau * tau;
-        return terrain.height(x + vx * tau, y + vy * tau) < free - LIFT_TOLERANCE;
+    boolean takesOff(double tau, double a1x, double a1y) {
+        double tangent = h + (hx * vx + hy * vy) * tau;
+        double ground = terrain.height(x + vx * tau, y + vy * tau);
+        if (ground < tangent - 0.5 * gravity * tau * tau - LIFT_TOLERANCE) return true;
+        return tangent - ground >= 0.25 * gravity * tau * tau && curvesAwayWithin(tau, a1x, a1y);
     }
 
     /**
@@ -52,11 +55,9 @@ final class TakeOff {
      * step the ground may fall below the tangent plane by less than gravity's g tau^2 / 2 while a
      * short stretch of it curves away faster (the continuous criterion v^T H v &lt; -g holds there).
      * Checked, with probes of tau / 8 at the step's quarters, only where the whole step comes within
-     * half of the threshold.
+     * half of the threshold (takesOff has measured that, with the one terrain sample both need).
      */
-    boolean curvesAwayWithin(double tau, double a1x, double a1y) {
-        double belowTangent = h + (hx * vx + hy * vy) * tau - terrain.height(x + vx * tau, y + vy * tau);
-        if (belowTangent < 0.25 * gravity * tau * tau) return false;
+    private boolean curvesAwayWithin(double tau, double a1x, double a1y) {
         double probe = tau / 8, tolerance = LIFT_TOLERANCE / 64;
         for (int k = 1; k <= 3; k++) {
             if (leaves(k * tau / 4, probe, tolerance, a1x, a1y)) return true;
