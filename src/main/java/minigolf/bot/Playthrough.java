@@ -31,13 +31,18 @@ public final class Playthrough {
     /**
      * One stroke: the shot played, what happened, the simulations the bot used to choose it, the
      * shot the bot chose ({@code intended}), where the stroke really started, and the friction
-     * estimate (scale of the prior) after it; NaN when friction is not hidden.
+     * estimate after it: the scale of the prior for the course's default friction (NaN when friction
+     * is not hidden) and for every zone in order (empty when not hidden or without zones).
      */
     public record PlayedShot(Shot shot, ShotResult result, long simulations, Shot intended, double startX,
-                             double startY, double frictionScale) {
+                             double startY, double frictionScale, List<Double> zoneScales) {
         /** A stroke played exactly as chosen. */
         public PlayedShot(Shot shot, ShotResult result, long simulations) {
-            this(shot, result, simulations, shot, Double.NaN, Double.NaN, Double.NaN);
+            this(shot, result, simulations, shot, Double.NaN, Double.NaN, Double.NaN, List.of());
+        }
+
+        public PlayedShot {
+            zoneScales = List.copyOf(zoneScales);
         }
     }
 
@@ -92,7 +97,7 @@ public final class Playthrough {
                 botSim = counting.variant(estimator.world(), true);
             }
             played.add(new PlayedShot(stroke.shot(), result, counting.count() - before, intended, stroke.x(), stroke.y(),
-                    estimator != null ? estimator.scale() : Double.NaN));
+                    estimator != null ? estimator.scale() : Double.NaN, estimator != null ? zoneScales(estimator) : List.of()));
             strokes++;
             if (result.outcome() == Outcome.HOLED) {
                 holed = true;
@@ -106,5 +111,12 @@ public final class Playthrough {
         }
         return new Result(holed, strokes, counting.count(), System.nanoTime() - started, List.copyOf(played),
                 !holed && token.timeUp(), counting.errors());
+    }
+
+    private static List<Double> zoneScales(FrictionEstimator estimator) {
+        double[] regions = estimator.regionScales();
+        List<Double> zones = new ArrayList<>();
+        for (int i = 1; i < regions.length; i++) zones.add(regions[i]);
+        return zones;
     }
 }

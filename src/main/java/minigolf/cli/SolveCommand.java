@@ -99,6 +99,14 @@ final class SolveCommand implements Callable<Integer> {
                 ObjectNode estimate = shot.putObject("frictionEstimate");
                 estimate.put("kineticFriction", FrictionPrior.KINETIC * s.frictionScale());
                 estimate.put("staticFriction", FrictionPrior.STATIC * s.frictionScale());
+                if (!s.zoneScales().isEmpty()) {
+                    ArrayNode zones = estimate.putArray("zones");
+                    for (double z : s.zoneScales()) {
+                        ObjectNode zone = zones.addObject();
+                        zone.put("kineticFriction", FrictionPrior.KINETIC * z);
+                        zone.put("staticFriction", FrictionPrior.STATIC * z);
+                    }
+                }
             }
         }
         ObjectNode noise = out.putObject("noise");

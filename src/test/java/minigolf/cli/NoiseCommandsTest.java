@@ -55,6 +55,19 @@ class NoiseCommandsTest {
     }
 
     @Test
+    void solveReportsAFrictionEstimateForEveryZone() throws IOException {
+        Path course = Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses/friction/sand-band-fast.json");
+        CliRun r = CliRun.of("solve", course.toString(), "--hide-friction");
+        assertEquals(0, r.code(), r.err());
+        JsonNode shots = new ObjectMapper().readTree(r.out()).get("shots");
+        JsonNode last = shots.get(shots.size() - 1).get("frictionEstimate");
+        // The course: green mu_k 0.06, a sand band (its one zone) mu_k 0.3; the prior is 0.1 for both.
+        assertEquals(0.06, last.get("kineticFriction").asDouble(), 0.003, last.toString());
+        assertEquals(1, last.get("zones").size());
+        assertEquals(0.3, last.get("zones").get(0).get("kineticFriction").asDouble(), 0.015, last.toString());
+    }
+
+    @Test
     void badNoiseIsOneLineAndExitTwo(@TempDir Path dir) {
         for (String[] args : List.of(
                 new String[]{"solve", BENCH.resolve("flat-7m.json").toString(), "--noise-velocity", "-1"},

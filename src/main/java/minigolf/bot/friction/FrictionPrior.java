@@ -1,6 +1,7 @@
 package minigolf.bot.friction;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import minigolf.course.Course;
 import minigolf.course.PhysicsSettings;
@@ -11,7 +12,7 @@ import minigolf.physics.World;
 /**
  * The course a bot sees when friction is hidden: every friction value (the default, each zone's,
  * the grid's) replaced by the prior μk {@value #KINETIC}, μs {@value #STATIC} (a typical green,
- * docs/bots.md), times a scale the bot estimates. Zone shapes stay visible (a player sees where
+ * docs/bots.md), times scales the bot estimates (one for the default, one per zone). Zone shapes stay visible (a player sees where
  * the sand is, not how slow it is); the friction grids are dropped, so the default applies there.
  * The world built here shares only the terrain's heights with the true one.
  */
@@ -24,13 +25,36 @@ public final class FrictionPrior {
 
     /** The true world with every friction value replaced by the prior times {@code scale}. */
     public static World scaled(World truth, double scale) {
-        if (!(scale > 0) || !Double.isFinite(scale)) throw new IllegalArgumentException("scale must be > 0, got " + scale);
+        double[] scales = new double[regions(truth)];
+        Arrays.fill(scales, scale);
+        return scaled(truth, scales);
+    }
+
+    /** Friction regions a bot can tell apart: the course's default (index 0), then each zone in order. */
+    public static int regions(World truth) {
+        return 1 + truth.course().zones().size();
+    }
+
+    /**
+     * The true world with the default friction replaced by the prior times {@code scales[0]} and
+     * zone i's by the prior times {@code scales[i + 1]}.
+     */
+    public static World scaled(World truth, double[] scales) {
+        if (scales.length != regions(truth)) {
+            throw new IllegalArgumentException("need " + regions(truth) + " scales, got " + scales.length);
+        }
+        for (double scale : scales) {
+            if (!(scale > 0) || !Double.isFinite(scale)) throw new IllegalArgumentException("scale must be > 0, got " + scale);
+        }
         Course c = truth.course();
         PhysicsSettings p = c.physics();
-        PhysicsSettings physics = new PhysicsSettings(p.gravity(), KINETIC * scale, STATIC * scale, p.maxSpeed(), p.model(),
-                p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution());
+        PhysicsSettings physics = new PhysicsSettings(p.gravity(), KINETIC * scales[0], STATIC * scales[0], p.maxSpeed(),
+                p.model(), p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution());
         List<Zone> zones = new ArrayList<>();
-        for (Zone z : c.zones()) zones.add(new Zone(z.shape(), KINETIC * scale, STATIC * scale));
+        for (int i = 0; i < c.zones().size(); i++) {
+            Zone z = c.zones().get(i);
+            zones.add(new Zone(z.shape(), KINETIC * scales[i + 1], STATIC * scales[i + 1]));
+        }
         TerrainSpec terrain = c.terrain();
         if (terrain instanceof TerrainSpec.HeightGrid g) {
             terrain = new TerrainSpec.HeightGrid(g.origin(), g.spacing(), g.heights(), null, null, g.deleted());
