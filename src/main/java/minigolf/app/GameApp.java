@@ -713,7 +713,7 @@ public final class GameApp implements UiActions, UiView {
         cancelBot();
         botTurn = null;
         animator = null;
-        round = new RoundGame(r, settings.simulation(), players, settings.strokeLimit());
+        round = new RoundGame(r, settings.simulation(), players, settings.strokeLimit(), settings.noise(), System.nanoTime());
         showHole();
         say(r.name() + ", hole 1 of " + r.size() + " (par " + r.hole(0).par() + "): " + players.get(0).name() + " tees off.");
     }

@@ -104,6 +104,11 @@ public final class Game {
         return noise;
     }
 
+    /** The seed of the noise stream (0 without noise). */
+    public long noiseSeed() {
+        return noiseSeed;
+    }
+
     public World world() {
         return world;
     }

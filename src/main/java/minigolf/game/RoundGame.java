@@ -3,6 +3,7 @@ package minigolf.game;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.SimulationSettings;
 
 /**
@@ -10,29 +11,46 @@ import minigolf.physics.SimulationSettings;
  * players, rules and stroke limit. When a hole's game is over its scores go on the card
  * ({@link #finishHole()}) and the next hole starts ({@link #nextHole()}); after the last hole the
  * round is over and {@link #scorecard()} names the winner. Plain Java, like {@link Game}.
+ *
+ * <p>With noise (the "realistic" setting) every hole is played with it; hole h's noise stream is
+ * seeded by the round's seed plus h times a fixed odd constant, so a restored round recovers the
+ * round's seed from the saved hole and plays the holes after it as the original would.
  */
 public final class RoundGame {
     private final Round round;
     private final List<Player> players;
     private final SimulationSettings settings;
     private final int strokeLimit;
+    private final NoiseModel noise;
+    private final long noiseSeed;
     /** scores[hole][seat]; only the first {@link #finished} rows are filled. */
     private final int[][] scores;
     private int finished;
     private int holeIndex;
     private Game game;
 
+    /** Mixed into the round's seed once per hole (odd, so every hole of a round gets its own stream). */
+    static final long HOLE_SEED_STEP = 0xD1B54A32D192ED03L;
+
     public RoundGame(Round round, SimulationSettings settings, List<Player> players, int strokeLimit) {
-        this(round, settings, players, strokeLimit, 0, new int[0][], null);
+        this(round, settings, players, strokeLimit, NoiseModel.NONE, 0);
     }
 
-    private RoundGame(Round round, SimulationSettings settings, List<Player> players, int strokeLimit, int finished,
-                      int[][] done, Game current) {
+    /** A round played with noise on every stroke (the "realistic" setting), drawn from {@code noiseSeed}. */
+    public RoundGame(Round round, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
+                     long noiseSeed) {
+        this(round, settings, players, strokeLimit, noise, noiseSeed, 0, new int[0][], null);
+    }
+
+    private RoundGame(Round round, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
+                      long noiseSeed, int finished, int[][] done, Game current) {
         if (round == null) throw new IllegalArgumentException("a round must be given");
         this.round = round;
         this.settings = settings;
         this.players = List.copyOf(players);
         this.strokeLimit = strokeLimit;
+        this.noise = noise == null ? NoiseModel.NONE : noise;
+        this.noiseSeed = this.noise.isNone() ? 0 : noiseSeed;
         this.scores = new int[round.size()][];
         if (finished < 0 || finished > round.size() || done.length != finished) {
             throw new IllegalArgumentException("scores for " + done.length + " holes do not fit a round of " + round.size());
@@ -51,8 +69,7 @@ public final class RoundGame {
         }
         this.finished = finished;
         this.holeIndex = Math.min(finished, round.size() - 1);
-        this.game = current != null ? current
-                : new Game(round.hole(holeIndex).world(), settings, this.players, strokeLimit);
+        this.game = current != null ? current : holeGame(holeIndex);
     }
 
     /**
@@ -63,8 +80,20 @@ public final class RoundGame {
         if (finishedScores.length < round.size() && !current.world().course().equals(round.hole(finishedScores.length).world().course())) {
             throw new IllegalArgumentException("the saved hole is not hole " + (finishedScores.length + 1) + " of the round");
         }
-        return new RoundGame(round, current.settings(), current.players(), current.strokeLimit(), finishedScores.length,
-                finishedScores, current);
+        int hole = Math.min(finishedScores.length, round.size() - 1);
+        long roundSeed = current.noiseSeed() - HOLE_SEED_STEP * hole;
+        return new RoundGame(round, current.settings(), current.players(), current.strokeLimit(), current.noise(),
+                roundSeed, finishedScores.length, finishedScores, current);
+    }
+
+    /** The game on hole h, with the round's noise and that hole's stream. */
+    private Game holeGame(int h) {
+        return new Game(round.hole(h).world(), settings, players, strokeLimit, noise, noiseSeed + HOLE_SEED_STEP * h);
+    }
+
+    /** The noise every stroke of the round is played with. */
+    public NoiseModel noise() {
+        return noise;
     }
 
     public Round round() {
@@ -123,7 +152,7 @@ public final class RoundGame {
         if (finished <= holeIndex) throw new IllegalStateException("hole " + (holeIndex + 1) + " is not on the card yet");
         if (holeIndex + 1 >= round.size()) return false;
         holeIndex++;
-        game = new Game(round.hole(holeIndex).world(), settings, players, strokeLimit);
+        game = holeGame(holeIndex);
         return true;
     }
 

@@ -146,4 +146,39 @@ class RoundGameTest {
         double[] v = RoundFilesTest.HOLE_IN_ONE[2];
         assertEquals(Outcome.HOLED, back.game().play(v[0], v[1]).outcome(), "the windmill hole plays as before");
     }
+
+    /** The "realistic" setting in a round: every hole strays, each with its own stream, and a save resumes it exactly. */
+    @Test
+    void aNoisyRoundPlaysEveryHoleWithNoiseAndResumesExactly() throws Exception {
+        minigolf.bot.noise.NoiseModel noise = new minigolf.bot.noise.NoiseModel(0.01, 0.05);
+        RoundGame rg = new RoundGame(threeHoles(), SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 10, noise, 77);
+        assertEquals(noise, rg.game().noise());
+        // A putt aimed at the cup 4 m away strays: it does not stop exactly where aimed.
+        ShotRecord first = rg.game().play(speedFor(3), 0);
+        assertNotEquals(-3 + 3, first.endX(), 1e-6);
+        while (!rg.game().isOver()) rg.game().play(speedFor(Math.abs(1 - rg.game().player(0).x())), 0.01);
+        rg.finishHole();
+        long seed1 = rg.game().noiseSeed();
+        assertTrue(rg.nextHole());
+        assertEquals(noise, rg.game().noise(), "hole 2 is played with the round's noise too");
+        assertNotEquals(seed1, rg.game().noiseSeed(), "each hole has its own stream");
+        rg.game().play(speedFor(2), 0);
+
+        // Saved on hole 2 after a putt: the restored round plays the next putts and hole 3 alike.
+        Path file = dir.resolve("noisy.json");
+        SavedRounds.save(rg, file);
+        RoundGame back = SavedRounds.load(file);
+        assertEquals(noise, back.noise());
+        for (RoundGame g : List.of(rg, back)) {
+            while (!g.game().isOver()) g.game().play(speedFor(Math.abs(2 - g.game().player(0).x())), 0.02);
+            g.finishHole();
+            assertTrue(g.nextHole());
+            g.game().play(speedFor(2.5), 0.1);
+        }
+        assertEquals(rg.game().noiseSeed(), back.game().noiseSeed());
+        ShotRecord a = rg.game().history().get(0), b = back.game().history().get(0);
+        assertEquals(a.endX(), b.endX(), 0.0);
+        assertEquals(a.endY(), b.endY(), 0.0);
+        assertArrayEquals(rg.finishedScores()[1], back.finishedScores()[1]);
+    }
 }
