@@ -1,25 +1,51 @@
 package minigolf.editor;
 
+import java.util.List;
 import java.util.concurrent.CancellationException;
+import minigolf.bot.noise.NoiseModel;
+import minigolf.game.BotConditions;
 import minigolf.game.BotControl;
+import minigolf.game.Game;
+import minigolf.game.Player;
+import minigolf.game.PlayerStatus;
 import minigolf.game.ShotPlanner;
-import minigolf.physics.Outcome;
-import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
-import minigolf.physics.Simulator;
 import minigolf.physics.World;
 
 /**
  * "Ask a bot": a bot plays the edited course from the start with the game's rules (a penalty
  * stroke and back to where the stroke began after water or out of bounds) until it holes out or
- * reaches the stroke limit. Runs on a worker thread; the window polls {@link #isDone()}.
+ * reaches the stroke limit (penalties count towards it, as in the game). It is played as a game
+ * with one bot player, under the player's settings: with the "realistic" noise the strokes stray
+ * (seeded), with hidden friction the bot sees only the prior and learns from its strokes. Runs on a
+ * worker thread; the window polls {@link #isDone()}.
  */
 public final class BotCheck {
     /** What the bot achieved: holed or not, and the strokes it took (penalties included). */
-    public record Result(boolean holed, int strokes, String bot) {
+    public record Result(boolean holed, int strokes, String bot, Conditions conditions) {
+        public Result(boolean holed, int strokes, String bot) {
+            this(holed, strokes, bot, Conditions.NONE);
+        }
+
         public String describe() {
-            return holed ? bot + " holed it in " + strokes + (strokes == 1 ? " stroke" : " strokes")
-                    : bot + " did not hole it within " + strokes + " strokes";
+            String how = conditions.describe();
+            return (holed ? bot + " holed it in " + strokes + (strokes == 1 ? " stroke" : " strokes")
+                    : bot + " did not hole it within " + strokes + " strokes") + (how.isEmpty() ? "" : " (" + how + ")");
+        }
+    }
+
+    /** The player's settings the check is played under: the noise and whether friction is hidden from the bot. */
+    public record Conditions(NoiseModel noise, boolean hideFriction) {
+        public static final Conditions NONE = new Conditions(NoiseModel.NONE, false);
+
+        public Conditions {
+            if (noise == null) noise = NoiseModel.NONE;
+        }
+
+        String describe() {
+            String n = noise.isNone() ? "" : "realistic";
+            String f = hideFriction ? "friction hidden" : "";
+            return n.isEmpty() || f.isEmpty() ? n + f : n + ", " + f;
         }
     }
 
@@ -30,10 +56,11 @@ public final class BotCheck {
     private volatile int strokes;
     private final Thread thread;
 
-    private BotCheck(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed) {
+    private BotCheck(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed,
+                     Conditions conditions) {
         thread = new Thread(() -> {
             try {
-                result = play(planner, world, settings, maxStrokes, seed, control, n -> strokes = n);
+                result = play(planner, world, settings, maxStrokes, seed, conditions, control, n -> strokes = n);
             } catch (CancellationException | minigolf.bot.BotCancelledException e) {
                 failure = "cancelled";
             } catch (RuntimeException e) {
@@ -45,7 +72,13 @@ public final class BotCheck {
 
     /** Starts a check on a worker thread. */
     public static BotCheck start(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed) {
-        BotCheck c = new BotCheck(planner, world, settings, maxStrokes, seed);
+        return start(planner, world, settings, maxStrokes, seed, Conditions.NONE);
+    }
+
+    /** Starts a check on a worker thread, under the player's noise and hidden-friction settings. */
+    public static BotCheck start(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed,
+                                 Conditions conditions) {
+        BotCheck c = new BotCheck(planner, world, settings, maxStrokes, seed, conditions);
         c.thread.start();
         return c;
     }
@@ -53,30 +86,30 @@ public final class BotCheck {
     /** Plays on this thread. */
     public static Result play(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed,
                               ShotPlanner.Control control) {
-        return play(planner, world, settings, maxStrokes, seed, control, n -> { });
+        return play(planner, world, settings, maxStrokes, seed, Conditions.NONE, control, n -> { });
+    }
+
+    /** Plays on this thread under {@code conditions}. */
+    public static Result play(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed,
+                              Conditions conditions, ShotPlanner.Control control) {
+        return play(planner, world, settings, maxStrokes, seed, conditions, control, n -> { });
     }
 
     /** Plays on this thread, telling {@code strokesTaken} the strokes so far before each stroke. */
     static Result play(ShotPlanner planner, World world, SimulationSettings settings, int maxStrokes, long seed,
-                       ShotPlanner.Control control, java.util.function.IntConsumer strokesTaken) {
-        Simulator game = new Simulator(world, settings);
-        double x = world.course().start().x(), y = world.course().start().y();
-        int strokes = 0;
-        for (int shot = 0; shot < maxStrokes; shot++) {
-            strokesTaken.accept(strokes);
+                       Conditions conditions, ShotPlanner.Control control, java.util.function.IntConsumer strokesTaken) {
+        // The game's own rules and noise: one bot player, the noise stream seeded by the check's seed.
+        Game game = new Game(world, settings, List.of(Player.bot(planner.name(), planner.name())), maxStrokes,
+                conditions.noise(), seed);
+        for (int shot = 0; !game.isOver(); shot++) {
+            strokesTaken.accept(game.player(0).total());
             if (control.isCancelled()) throw new CancellationException();
-            double[] v = planner.plan(world, settings, x, y, strokes, seed + 31L * shot, control);
-            ShotResult r = game.simulate(x, y, v[0], v[1]);
-            strokes++;
-            if (r.outcome() == Outcome.HOLED) return new Result(true, strokes, planner.name());
-            if (r.outcome().isPenalty()) {
-                strokes++;
-            } else {
-                x = r.endX();
-                y = r.endY();
-            }
+            double[] v = planner.plan(world, settings, game.player(0).x(), game.player(0).y(), game.player(0).total(),
+                    seed + 31L * shot, BotConditions.of(game, 0, conditions.hideFriction()), control);
+            game.play(v[0], v[1]);
         }
-        return new Result(false, strokes, planner.name());
+        return new Result(game.player(0).status() == PlayerStatus.HOLED, game.player(0).total(), planner.name(),
+                conditions);
     }
 
     public boolean isDone() {

@@ -35,7 +35,9 @@ import minigolf.editor.ToolController;
 import minigolf.editor.ZoneTools;
 import minigolf.game.BotCatalog;
 import minigolf.ui.PlanOverlay;
+import minigolf.game.SettingsStore;
 import minigolf.game.ShotPlanner;
+import minigolf.game.UserSettings;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import minigolf.render.OrbitCamera;
@@ -475,7 +477,10 @@ public final class EditorApp {
         if (names.isEmpty()) return;
         ShotPlanner planner = BotCatalog.planner(names.get(Math.min(botChoice.get(), names.size() - 1)));
         if (botCheck != null) botCheck.cancel();
-        botCheck = BotCheck.start(planner, editor.world(), SimulationSettings.DEFAULT, 12, 1);
+        // Played under the player's game settings: the "realistic" noise and friction hidden from bots.
+        UserSettings user = SettingsStore.forUser().loadOrDefaults(null);
+        botCheck = BotCheck.start(planner, editor.world(), SimulationSettings.DEFAULT, 12, 1,
+                new BotCheck.Conditions(user.noise(), user.hideFrictionFromBots()));
     }
 
     private void replaceEditor(CourseEditor next) {
