@@ -11,8 +11,16 @@ import minigolf.physics.World;
  * search fail with any other exception (a bug), the error is recorded in the simulator
  * ({@link CountingSimulator#errors()}, which the tests check is empty) and the best shot so far is
  * played; only a cancel leaves {@link #nextShot}.
+ *
+ * <p>Where no path along the ground reaches the hole (a green ringed by water, a hole inside low
+ * walls) no putt can hole out, so every search bot plays through the air there
+ * ({@link ChipSearch}), unless it plans its own chips ({@link #chipsWhenCutOff()}) or whoever plays
+ * the shot can only putt.
  */
 public abstract class SearchBot implements Bot {
+    /** The distance field that tells whether the ball is cut off from the hole along the ground. */
+    private final CourseMaps airMaps = new CourseMaps();
+
     @Override
     public final Shot nextShot(BotRequest request) {
         CountingSimulator sim = request.simulator();
@@ -20,7 +28,8 @@ public abstract class SearchBot implements Bot {
         try {
             sim.beginShot(request.ballX(), request.ballY(), null);
             sim.beginShot(request.ballX(), request.ballY(), scoreFor(request));
-            return sim.limit(search(request));
+            Shot air = chipWhenCutOff(request);
+            return sim.limit(air != null ? air : search(request));
         } catch (BudgetExhaustedException e) {
             return fallback(request);
         } catch (BotCancelledException e) {
@@ -36,6 +45,20 @@ public abstract class SearchBot implements Bot {
         CountingSimulator sim = request.simulator();
         Shot best = sim.bestShot();
         return best != null ? best : sim.limit(directGuess(request.world(), request.ballX(), request.ballY()));
+    }
+
+    /** Whether this bot leaves chips where the ground is cut off to {@link ChipSearch}; the planner plans its own. */
+    protected boolean chipsWhenCutOff() {
+        return true;
+    }
+
+    private Shot chipWhenCutOff(BotRequest request) {
+        CountingSimulator sim = request.simulator();
+        if (!chipsWhenCutOff() || sim.puttsOnly()) return null;
+        airMaps.prepare(request.world(), request.token());
+        if (!ChipSearch.cutOff(airMaps.toHole(), request.ballX(), request.ballY())) return null;
+        sim.phase("chip");
+        return new ChipSearch(sim, airMaps.grid(), airMaps.toHole(), request.ballX(), request.ballY()).search();
     }
 
     /** Finds the shot; may throw BudgetExhaustedException (handled) or BotCancelledException (passed on). */

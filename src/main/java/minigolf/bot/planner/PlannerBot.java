@@ -84,6 +84,12 @@ public final class PlannerBot extends SearchBot {
         };
     }
 
+    /** The planner chips in its own stages (where cut off, and with its look-ahead). */
+    @Override
+    protected boolean chipsWhenCutOff() {
+        return false;
+    }
+
     @Override
     protected Shot search(BotRequest request) {
         World world = request.world();
