@@ -14,6 +14,7 @@ import java.util.function.BiConsumer;
 import java.util.stream.Stream;
 import minigolf.course.CourseException;
 import minigolf.game.AimModel;
+import minigolf.game.Loft;
 import minigolf.game.BallReadout;
 import minigolf.game.BotSeats;
 import minigolf.game.BotCatalog;
@@ -121,6 +122,8 @@ public final class GameApp implements UiActions, UiView {
     private boolean rotating, panning, aiming;
     private double lastX, lastY;
     private double[] aimVelocity;
+    /** The loft for the next stroke (Loft: 0 = putt, up to 60 degrees), set with the wheel while aiming or Up/Down. */
+    private int loft;
     /** The aim guide's path for {@link #guideKey} (x, y, vx, vy), reused while the aim holds (AimView compares it by identity). */
     private float[] guidePath;
     /** An aim to show as soon as a human player can aim (play --aim, for screenshots), or null. */
@@ -315,7 +318,7 @@ public final class GameApp implements UiActions, UiView {
                 BotTurn done = botTurn;
                 botTurn = null;
                 if (done.shot() != null) {
-                    hit(done.shot()[0], done.shot()[1]);
+                    hit(done.shot()[0], done.shot()[1], done.shot()[2]);
                 } else {
                     say(p.name() + ": " + done.failure());
                     if ("cancelled".equals(done.failure())) toMainMenu();
@@ -323,7 +326,7 @@ public final class GameApp implements UiActions, UiView {
             }
         } else if (!script.isEmpty()) {
             double[] v = script.poll();
-            hit(v[0], v[1]);
+            hit(v[0], v[1], v.length > 2 ? v[2] : 0);
         }
     }
 
@@ -338,10 +341,8 @@ public final class GameApp implements UiActions, UiView {
         if (replay.hasNext()) {
             replayShot = replay.shots().get(replay.position());
             replayAnimator = new StrokeAnimator(replay.nextStroke(strokeSounds(false)), game.settings().dt());
-            if (sounds != null) {
-                double max = world.physics().maxSpeed(), speed = Math.hypot(replayShot.vx(), replayShot.vy());
-                sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
-            }
+            StrokeSounds.hit(sounds, Math.sqrt(replayShot.vx() * replayShot.vx() + replayShot.vy() * replayShot.vy()
+                    + replayShot.vz() * replayShot.vz()), world.physics().maxSpeed());
         } else {
             stopReplay();
             say(replayMismatches == 0 ? "replay over: every stroke ended exactly where it did in play"
@@ -417,8 +418,9 @@ public final class GameApp implements UiActions, UiView {
      * Shows the aim (vx, vy) in m/s as if the player were dragging it, from the first frame a human
      * player can aim (until a mouse release or right click): for screenshots of the arrow and the aim guide.
      */
-    public void showAim(double vx, double vy) {
+    public void showAim(double vx, double vy, int loftDegrees) {
         pendingAim = new double[]{vx, vy};
+        loft = Loft.clamp(loftDegrees);
     }
 
     private void drawFrame(int fw, int fh, float time) {
@@ -446,7 +448,7 @@ public final class GameApp implements UiActions, UiView {
         if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
             double x = replayAnimator.x(), y = replayAnimator.y();
             float[] c = PlayerColors.of(replayShot.player());
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, world.terrain().height(x, y)), c[0], c[1], c[2]));
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, replayAnimator.z()), c[0], c[1], c[2]));
             return views;
         }
         if (game == null) {
@@ -458,10 +460,11 @@ public final class GameApp implements UiActions, UiView {
         for (int i = 0; i < game.players().size(); i++) {
             PlayerState s = game.player(i);
             if (s.status() == minigolf.game.PlayerStatus.HOLED && i != rolling) continue;
-            double x = i == rolling && animator != null ? animator.x() : s.x();
-            double y = i == rolling && animator != null ? animator.y() : s.y();
+            boolean moving = i == rolling && animator != null;
+            double x = moving ? animator.x() : s.x(), y = moving ? animator.y() : s.y();
+            double z = moving ? animator.z() : world.terrain().height(x, y); // a chip's ball is drawn in the air
             float[] c = PlayerColors.of(i);
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, world.terrain().height(x, y)), c[0], c[1], c[2]));
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, z), c[0], c[1], c[2]));
         }
         return views;
     }
@@ -471,16 +474,17 @@ public final class GameApp implements UiActions, UiView {
         double speed = Math.hypot(aimVelocity[0], aimVelocity[1]);
         if (speed < 1e-6) return null;
         PlayerState s = game.player(game.currentPlayer());
+        double[] v = Loft.velocity(aimVelocity[0], aimVelocity[1], loft, world.physics().maxSpeed());
         return new AimView((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y()),
                 (float) aimVelocity[0], (float) aimVelocity[1], (float) (speed / world.physics().maxSpeed()),
-                settings.aimGuide() ? guidePath(s.x(), s.y(), aimVelocity[0], aimVelocity[1]) : null);
+                settings.aimGuide() ? guidePath(s.x(), s.y(), v) : null);
     }
 
-    /** The aim guide (AimGuide: the real engine, the game's settings, its first second), recomputed when the aim changes. */
-    private float[] guidePath(double x, double y, double vx, double vy) {
-        double[] key = {x, y, vx, vy};
+    /** The aim guide (AimGuide: the real engine, the game's settings; a chip's flight too), recomputed when the aim changes. */
+    private float[] guidePath(double x, double y, double[] v) {
+        double[] key = {x, y, v[0], v[1], v[2]};
         if (!java.util.Arrays.equals(key, guideKey)) {
-            guidePath = minigolf.game.AimGuide.preview(game.world(), game.settings(), x, y, vx, vy, minigolf.game.AimGuide.SECONDS).points();
+            guidePath = minigolf.game.AimGuide.preview(game.world(), game.settings(), x, y, v[0], v[1], v[2], minigolf.game.AimGuide.SECONDS).points();
             guideKey = key;
         }
         return guidePath;
@@ -531,6 +535,7 @@ public final class GameApp implements UiActions, UiView {
                 }
                 case GLFW_KEY_F11 -> window.toggleFullscreen();
                 case GLFW_KEY_R -> camera.reset();
+                case GLFW_KEY_UP, GLFW_KEY_DOWN -> loft = Loft.step(loft, key == GLFW_KEY_UP ? 1 : -1);
                 case GLFW_KEY_H -> renderer.terrainPass().setColorMode(renderer.terrainPass().colorMode().next());
                 case GLFW_KEY_SPACE -> {
                     if (animator != null) { // skip the animation: the same stroke, run to its end
@@ -555,7 +560,10 @@ public final class GameApp implements UiActions, UiView {
                     aiming = false;
                     double[] v = aimVelocity;
                     aimVelocity = null;
-                    if (v != null && Math.hypot(v[0], v[1]) > 0.02) hit(v[0], v[1]);
+                    if (v != null && Math.hypot(v[0], v[1]) > 0.02) {
+                        double[] shot = Loft.velocity(v[0], v[1], loft, world.physics().maxSpeed());
+                        hit(shot[0], shot[1], shot[2]);
+                    }
                 } else {
                     rotating = down;
                     if (down) turnToHole = false; // the player's own view wins
@@ -588,7 +596,9 @@ public final class GameApp implements UiActions, UiView {
             }
         });
         glfwSetScrollCallback(h, (win, xoff, yoff) -> {
-            if (imgui == null || !imgui.wantsMouse()) camera.zoom((float) yoff);
+            if (imgui != null && imgui.wantsMouse()) return;
+            if (aiming) loft = Loft.step(loft, (int) Math.signum(yoff)); // while aiming the wheel lofts the shot
+            else camera.zoom((float) yoff);
         });
     }
 
@@ -652,29 +662,8 @@ public final class GameApp implements UiActions, UiView {
 
     // ---- UiActions ----------------------------------------------------------------------------
 
-    /** The sounds of a stroke's events: hits, landings, water, the cup (and applause for a hole in one). */
     private minigolf.physics.TrajectoryListener strokeSounds(boolean firstStroke) {
-        return new minigolf.physics.TrajectoryListener() {
-            @Override
-            public void onStep(double t, double x, double y, double vx, double vy) {
-            }
-
-            @Override
-            public void onEvent(minigolf.physics.StrokeEvent e) {
-                if (sounds == null) return;
-                switch (e.type()) {
-                    case COLLISION -> sounds.play(SoundSynth.Sound.KNOCK, e.speedBefore() / 3, 0.9 + 0.1 * Math.min(2, e.speedBefore()));
-                    case LAND, BOUNCE -> sounds.play(SoundSynth.Sound.THUD, e.speedBefore() / 3, 1);
-                    case WATER -> sounds.play(SoundSynth.Sound.SPLASH, 0.8, 1);
-                    case HOLED -> {
-                        sounds.play(SoundSynth.Sound.CUP, 0.9, 1);
-                        if (firstStroke) sounds.play(SoundSynth.Sound.APPLAUSE, 0.8, 1);
-                    }
-                    default -> {
-                    }
-                }
-            }
-        };
+        return StrokeSounds.listener(sounds, firstStroke, null);
     }
 
     @Override
@@ -774,17 +763,17 @@ public final class GameApp implements UiActions, UiView {
     }
 
     @Override
-    public void hit(double vx, double vy) {
+    public void hit(double vx, double vy, double vz) {
         if (game == null || game.isShotInFlight() || game.isOver()) return;
-        String problem = AimModel.checkTyped(vx, vy, world.physics().maxSpeed());
+        String problem = AimModel.checkTyped(vx, vy, vz, world.physics().maxSpeed());
         if (problem != null) {
             say(problem);
             return;
         }
-        double max = world.physics().maxSpeed(), speed = Math.hypot(vx, vy);
         boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
-        animator = new StrokeAnimator(game.startShot(vx, vy, strokeSounds(firstStroke)), game.settings().dt());
-        if (sounds != null) sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
+        animator = new StrokeAnimator(game.startShot(vx, vy, vz, strokeSounds(firstStroke)), game.settings().dt());
+        StrokeSounds.hit(sounds, Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
+        loft = 0; // the next stroke starts as a putt again
     }
 
     @Override
@@ -1008,6 +997,11 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public double aimSpeed() {
         return aiming && aimVelocity != null ? Math.hypot(aimVelocity[0], aimVelocity[1]) : -1;
+    }
+
+    @Override
+    public int loftDegrees() {
+        return loft;
     }
 
     @Override

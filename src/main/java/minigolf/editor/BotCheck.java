@@ -66,7 +66,7 @@ public final class BotCheck {
             strokesTaken.accept(strokes);
             if (control.isCancelled()) throw new CancellationException();
             double[] v = planner.plan(world, settings, x, y, strokes, seed + 31L * shot, control);
-            ShotResult r = game.simulate(x, y, v[0], v[1]);
+            ShotResult r = game.simulate(x, y, v[0], v[1], v.length > 2 ? v[2] : 0); // a chip when the bot chose one
             strokes++;
             if (r.outcome() == Outcome.HOLED) return new Result(true, strokes, planner.name());
             if (r.outcome().isPenalty()) {
