@@ -410,6 +410,7 @@ public final class GameApp implements UiActions, UiView {
         renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0); // FXAA only without MSAA
         int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
         camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
+        camera.setClearance(minigolf.render.CameraClearance.of(world.course(), world.terrain()::height));
         followTarget.set(camera.target());
         window.setTitle("Minigolf - " + world.course().name());
     }
