@@ -92,6 +92,8 @@ public final class GameApp implements UiActions, UiView {
     private AudioSettings audio;
     /** Silent until the window is open, and where there is no audio device. */
     private Sounds sounds;
+    /** Confetti and splashes (the renderer draws them; they end by themselves). */
+    private final minigolf.render.Particles effects = new minigolf.render.Particles();
     /** The round the next game plays (set by {@link #playRound} or the menu). */
     private Round roundToPlay;
     /** Frames the between-holes card has been shown (the headless run moves on by itself). */
@@ -341,7 +343,7 @@ public final class GameApp implements UiActions, UiView {
         if (replay.hasNext()) {
             replayShot = replay.shots().get(replay.position());
             replayAnimator = new StrokeAnimator(replay.nextStroke(strokeSounds(false)), game.settings().dt());
-            StrokeSounds.hit(sounds, Math.sqrt(replayShot.vx() * replayShot.vx() + replayShot.vy() * replayShot.vy()
+            StrokeFeedback.hit(sounds, Math.sqrt(replayShot.vx() * replayShot.vx() + replayShot.vy() * replayShot.vy()
                     + replayShot.vz() * replayShot.vz()), world.physics().maxSpeed());
         } else {
             stopReplay();
@@ -402,6 +404,7 @@ public final class GameApp implements UiActions, UiView {
 
     private void buildScene() {
         rebuildScene = false;
+        effects.clear(); // a new hole: the last one's confetti stays behind
         if (renderer != null) renderer.close();
         renderer = null;
         renderer = new SceneRenderer(world.course(), world.terrain(),
@@ -432,6 +435,8 @@ public final class GameApp implements UiActions, UiView {
         }
         renderer.setBalls(ballViews());
         renderer.setAim(aimView());
+        effects.advanceTo(time);
+        renderer.setEffects(effects.mesh());
         followBall();
         renderer.render(camera, fw, fh, time);
         int mini = Math.min(fw, fh) / 4;
@@ -664,7 +669,7 @@ public final class GameApp implements UiActions, UiView {
     // ---- UiActions ----------------------------------------------------------------------------
 
     private minigolf.physics.TrajectoryListener strokeSounds(boolean firstStroke) {
-        return StrokeSounds.listener(sounds, firstStroke, null);
+        return StrokeFeedback.listener(sounds, firstStroke, effects, world);
     }
 
     @Override
@@ -773,7 +778,7 @@ public final class GameApp implements UiActions, UiView {
         }
         boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
         animator = new StrokeAnimator(game.startShot(vx, vy, vz, strokeSounds(firstStroke)), game.settings().dt());
-        StrokeSounds.hit(sounds, Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
+        StrokeFeedback.hit(sounds, Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
         loft = 0; // the next stroke starts as a putt again
     }
 

@@ -207,6 +207,11 @@ public final class SceneRenderer implements AutoCloseable {
         objects.setBalls(balls);
     }
 
+    /** The effects' particles for this frame (confetti, splashes: {@link Particles#mesh()}), or null. */
+    public void setEffects(MeshData particles) {
+        objects.setEffects(particles);
+    }
+
     /** Shows the aiming arrow on the ground from the ball; null hides it. */
     public void setAim(AimView aim) {
         objects.setAim(aim);

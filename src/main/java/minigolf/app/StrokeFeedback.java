@@ -3,9 +3,29 @@ package minigolf.app;
 import minigolf.physics.StrokeEvent;
 import minigolf.physics.TrajectoryListener;
 
-/** The sounds of a stroke: the hit itself, then its events (hits, landings, water, the cup, applause for a hole in one). */
-final class StrokeSounds {
-    private StrokeSounds() {
+/**
+ * What a stroke sounds and looks like: the hit itself, then its events (hits, landings, water, the
+ * cup, applause for a hole in one) as sounds, and as effects a splash where the ball meets the water
+ * and confetti from the cup when it drops (more for a hole in one).
+ */
+final class StrokeFeedback {
+    private StrokeFeedback() {
+    }
+
+    /** The sounds (none where {@code sounds} is null) and the effects' bursts into {@code effects} (none where null). */
+    static TrajectoryListener listener(Sounds sounds, boolean firstStroke, minigolf.render.Particles effects,
+                                       minigolf.physics.World world) {
+        return listener(sounds, firstStroke, e -> {
+            if (effects == null) return;
+            long seed = Double.doubleToLongBits(e.x()) * 31 + Double.doubleToLongBits(e.y());
+            if (e.type() == StrokeEvent.Type.WATER) {
+                effects.burst(minigolf.render.Particles.Kind.SPLASH, e.x(), e.y(), 0, seed); // the water's surface is h = 0
+            } else if (e.type() == StrokeEvent.Type.HOLED) {
+                double hx = world.hole().position().x(), hy = world.hole().position().y();
+                effects.burst(firstStroke ? minigolf.render.Particles.Kind.ACE_CONFETTI : minigolf.render.Particles.Kind.CONFETTI,
+                        hx, hy, world.terrain().height(hx, hy), seed);
+            }
+        });
     }
 
     /** The club meeting the ball: louder and brighter the faster it is hit (the whole velocity, chips included). */
