@@ -154,8 +154,10 @@ public final class CameraClearance {
         float[] grown = new float[6];
         for (float[] b : boxes) {
             // The line of sight is a narrow cone from the ball: a box is grown by the cone's radius at its
-            // distance, so what stands beside the line keeps out of the middle of the picture too.
-            float cx = 0.5f * (b[0] + b[3]) - from.x, cy = 0.5f * (b[1] + b[4]) - from.y, cz = 0.5f * (b[2] + b[5]) - from.z;
+            // nearest point, so what stands beside the line keeps out of the middle of the picture too.
+            float cx = Math.max(b[0] - from.x, Math.max(0, from.x - b[3]));
+            float cy = Math.max(b[1] - from.y, Math.max(0, from.y - b[4]));
+            float cz = Math.max(b[2] - from.z, Math.max(0, from.z - b[5]));
             float grow = c * (float) Math.sqrt(cx * cx + cy * cy + cz * cz);
             for (int k = 0; k < 3; k++) {
                 grown[k] = b[k] - grow;
