@@ -140,6 +140,11 @@ public final class SceneRenderer implements AutoCloseable {
         return objects;
     }
 
+    /** Rebuilds the water for changed ground (the editor's brush), so new water shows at once. */
+    public void updateWater(Course course, Terrain terrain) {
+        water.rebuild(course, terrain);
+    }
+
     public WaterPass waterPass() {
         return water;
     }

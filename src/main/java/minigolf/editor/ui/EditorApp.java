@@ -228,6 +228,9 @@ public final class EditorApp {
                 World w = editor.world();
                 renderer.terrainPass().updateRegion(w.course(), w.terrain(), c.nodeX(r[0]) - pad, c.nodeY(r[1]) - pad,
                         c.nodeX(r[2]) + pad, c.nodeY(r[3]) + pad);
+                // Ground lowered below zero is water at once, ground raised out of it dry at once (not only
+                // when the stroke ends and the scene is rebuilt).
+                if (renderer.waterPass().hasWater() || minigolf.editor.CourseWater.anyBelowZero(c, r)) renderer.updateWater(w.course(), w.terrain());
                 // The sun's shadow map and the minimap are redrawn once, when the stroke ends and the
                 // scene is rebuilt: redrawing them for every dab would cost more than the dab itself.
             }
