@@ -46,6 +46,7 @@ import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
+import minigolf.ui.CameraDrag;
 import minigolf.ui.ImGuiLayer;
 import minigolf.ui.PlayerColors;
 import minigolf.ui.Screen;
@@ -558,7 +559,14 @@ public final class GameApp implements UiActions, UiView {
             double[] x = new double[1], y = new double[1];
             glfwGetCursorPos(win, x, y);
             if (down && imgui != null && imgui.wantsMouse()) return;
-            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+            // The camera's scheme is the editor's (CameraDrag); a plain left-drag aims, or turns away from the ball.
+            CameraDrag drag = down && !aiming ? CameraDrag.of(button, mods) : CameraDrag.NONE;
+            if (drag != CameraDrag.NONE || !down) {
+                rotating = drag == CameraDrag.ROTATE;
+                panning = drag == CameraDrag.PAN;
+                if (down) turnToHole = false; // the player's own view wins
+            }
+            if (button == GLFW_MOUSE_BUTTON_LEFT && drag == CameraDrag.NONE) {
                 if (down && canAim() && nearBall(x[0], y[0])) {
                     aiming = true;
                     aimVelocity = null;
@@ -570,18 +578,14 @@ public final class GameApp implements UiActions, UiView {
                         double[] shot = Loft.velocity(v[0], v[1], loft, world.physics().maxSpeed());
                         hit(shot[0], shot[1], shot[2]);
                     }
-                } else {
-                    rotating = down;
-                    if (down) turnToHole = false; // the player's own view wins
+                } else if (down) {
+                    rotating = true;
+                    turnToHole = false;
                 }
             }
-            if (button == GLFW_MOUSE_BUTTON_RIGHT) {
-                if (down && aiming) {
-                    aiming = false; // right click cancels the aim
-                    aimVelocity = null;
-                } else {
-                    panning = down;
-                }
+            if (button == GLFW_MOUSE_BUTTON_RIGHT && down && aiming) {
+                aiming = false; // right click cancels the aim
+                aimVelocity = null;
             }
             lastX = x[0];
             lastY = y[0];
@@ -650,20 +654,10 @@ public final class GameApp implements UiActions, UiView {
     /** Where the cursor ray meets the horizontal plane through the ball, turned into a shot. */
     private double[] aimFromCursor(double x, double y) {
         PlayerState s = game.player(game.currentPlayer());
-        double z = world.terrain().height(s.x(), s.y());
-        int fw = window.framebufferWidth(), fh = window.framebufferHeight();
-        double[] c = toFramebuffer(x, y);
-        float nx = (float) (2 * c[0] / fw - 1), ny = (float) (1 - 2 * c[1] / fh);
-        Matrix4f inv = camera.viewProjection((float) fw / fh, new Matrix4f()).invert();
-        Vector4f near = new Vector4f(nx, ny, -1, 1).mul(inv), far = new Vector4f(nx, ny, 1, 1).mul(inv);
-        near.div(near.w);
-        far.div(far.w);
-        double dz = far.z - near.z;
-        if (Math.abs(dz) < 1e-9) return aimVelocity;
-        double t = (z - near.z) / dz;
-        if (t < 0) return aimVelocity;
-        double px = near.x + t * (far.x - near.x), py = near.y + t * (far.y - near.y);
-        return AimModel.velocityForPull(s.x(), s.y(), px, py, world.physics().maxSpeed(), AimModel.DEFAULT_FULL_PULL);
+        double[] c = toFramebuffer(x, y), p = minigolf.render.CursorRay.onPlane(camera, window.framebufferWidth(),
+                window.framebufferHeight(), c[0], c[1], world.terrain().height(s.x(), s.y()));
+        if (p == null) return aimVelocity;
+        return AimModel.velocityForPull(s.x(), s.y(), p[0], p[1], world.physics().maxSpeed(), AimModel.DEFAULT_FULL_PULL);
     }
 
     // ---- UiActions ----------------------------------------------------------------------------
@@ -966,6 +960,12 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public UserSettings settings() {
         return settings;
+    }
+
+    @Override
+    public void refreshCourses() {
+        courses = null;
+        rounds = null;
     }
 
     @Override

@@ -140,7 +140,10 @@ public final class Screens {
         ImGui.separator();
         float bw = 300, bh = 0;
         if (ImGui.button("Play", bw, bh)) show(Screen.NEW_GAME);
-        if (ImGui.button("Rounds and practice holes", bw, bh)) show(Screen.COURSES);
+        if (ImGui.button("Rounds and practice holes", bw, bh)) {
+            actions.refreshCourses(); // a course saved by the editor a moment ago is listed
+            show(Screen.COURSES);
+        }
         List<String> botNames = BotCatalog.names();
         if (ImGui.button("Test bot", bw, bh) && !botNames.isEmpty()) {
             actions.testBot(botNames.get(Math.min(testBot.get(), botNames.size() - 1)));
@@ -569,9 +572,9 @@ public final class Screens {
             {"Cancel an aim", "right click while dragging"},
             {"Power", "the longer the drag, the harder the putt (the bar shows it)"},
             {"Chip (loft)", "mouse wheel while dragging, or Up / Down: 0 (putt) to 60 degrees, shown in the HUD"},
-            {"Turn the camera", "drag with the left button away from the ball"},
-            {"Move the camera", "drag with the right button"},
-            {"Zoom", "mouse wheel"},
+            {CameraDrag.HELP[0][0], CameraDrag.HELP[0][1] + ", or left-drag away from the ball"},
+            CameraDrag.HELP[1],
+            CameraDrag.HELP[2],
             {"Reset the camera", "R"},
             {"Skip the rolling ball", "SPACE"},
             {"Height colours", "H"},

@@ -20,6 +20,10 @@ public interface UiActions {
 
     void selectCourse(Path course);
 
+    /** Reads the course and round folders again (the editor may have saved a course since). */
+    default void refreshCourses() {
+    }
+
     void testBot(String bot);
 
     void cancelBot();
