@@ -153,7 +153,12 @@ public final class Screens {
         ImGui.combo("##testbot", testBot, botNames.toArray(new String[0]));
         if (ImGui.button("Create course", bw, bh)) actions.createCourse();
         if (!view.savedGames().isEmpty() && ImGui.beginMenu("Load saved game")) {
-            for (Path p : view.savedGames()) if (ImGui.menuItem(p.getFileName().toString())) actions.loadGame(p);
+            // Newest first, by round or course, players and date (the file names are only timestamps).
+            List<Path> saves = new java.util.ArrayList<>(view.savedGames());
+            java.util.Collections.reverse(saves);
+            for (Path p : saves) {
+                if (ImGui.menuItem(minigolf.game.SavedGameSummary.cached(p).label() + "##" + p)) actions.loadGame(p);
+            }
             ImGui.endMenu();
         }
         if (ImGui.button("Settings", bw, bh)) openSettings(view, Screen.MAIN_MENU);
