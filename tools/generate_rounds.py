@@ -136,11 +136,12 @@ holes.append(("04-bunker", course("Bunker", "0.1 + 0.005*y", lane(-3.5, 3.5, 1.0
                                          {"shape": {"type": "rect", "min": [-0.5, 0.5], "max": [0.5, 1.0]},
                                           "kineticFriction": 0.6, "staticFriction": 0.7}]), 3))
 
-# 5. Island green: the cup on an island in a pond, reached by a narrow land bridge.
-ring = "exp(-(sqrt((x-1.8)^2+y^2)-1.0)^2/0.09)"
-bridge = "exp(-y^2/0.08-10*max(0,x-1.8)^2)"
-holes.append(("05-island", course("Island Green", "0.1 - 0.2*%s*(1-%s)" % (ring, bridge), lane(-3.5, 3.5, 1.5),
-                                  (-3.0, 0), (1.8, 0)), 3))
+# 5. Island green: the cup on an island ringed by a pond, no way round on the ground: chip over the
+# water (the loft), onto the island and putt, par 3. The ace is a chip from the tee that lands on
+# the island's bank and runs in (32 degrees, 4.85 m/s; under 1% of chips straight at the cup hole).
+ring = "exp(-(sqrt((x-1.8)^2+y^2)-0.9)^2/0.09)"
+holes.append(("05-island", course("Island Green", "0.1 - 0.2*%s" % ring, lane(-1.6, 3.5, 1.5),
+                                  (-1.0, 0), (1.8, 0)), 3))
 
 # 6. Tree slalom on a gentle slope down towards the cup.
 trees6 = [tree(-1.8, 0.25), tree(-1.0, -0.3), tree(-0.2, 0.3), tree(0.6, -0.25), tree(1.4, 0.2), tree(2.2, -0.2)]

@@ -14,6 +14,7 @@ import java.util.function.BiConsumer;
 import java.util.stream.Stream;
 import minigolf.course.CourseException;
 import minigolf.game.AimModel;
+import minigolf.game.Loft;
 import minigolf.game.BallReadout;
 import minigolf.game.BotSeats;
 import minigolf.game.BotCatalog;
@@ -45,6 +46,7 @@ import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
+import minigolf.ui.CameraDrag;
 import minigolf.ui.ImGuiLayer;
 import minigolf.ui.PlayerColors;
 import minigolf.ui.Screen;
@@ -91,6 +93,8 @@ public final class GameApp implements UiActions, UiView {
     private AudioSettings audio;
     /** Silent until the window is open, and where there is no audio device. */
     private Sounds sounds;
+    /** Confetti and splashes (the renderer draws them; they end by themselves). */
+    private final minigolf.render.Particles effects = new minigolf.render.Particles();
     /** The round the next game plays (set by {@link #playRound} or the menu). */
     private Round roundToPlay;
     /** Frames the between-holes card has been shown (the headless run moves on by itself). */
@@ -121,6 +125,8 @@ public final class GameApp implements UiActions, UiView {
     private boolean rotating, panning, aiming;
     private double lastX, lastY;
     private double[] aimVelocity;
+    /** The loft for the next stroke (Loft: 0 = putt, up to 60 degrees), set with the wheel while aiming or Up/Down. */
+    private int loft;
     /** The aim guide's path for {@link #guideKey} (x, y, vx, vy), reused while the aim holds (AimView compares it by identity). */
     private float[] guidePath;
     /** An aim to show as soon as a human player can aim (play --aim, for screenshots), or null. */
@@ -315,7 +321,7 @@ public final class GameApp implements UiActions, UiView {
                 BotTurn done = botTurn;
                 botTurn = null;
                 if (done.shot() != null) {
-                    hit(done.shot()[0], done.shot()[1]);
+                    hit(done.shot()[0], done.shot()[1], done.shot()[2]);
                 } else {
                     say(p.name() + ": " + done.failure());
                     if ("cancelled".equals(done.failure())) toMainMenu();
@@ -323,7 +329,7 @@ public final class GameApp implements UiActions, UiView {
             }
         } else if (!script.isEmpty()) {
             double[] v = script.poll();
-            hit(v[0], v[1]);
+            hit(v[0], v[1], v.length > 2 ? v[2] : 0);
         }
     }
 
@@ -338,10 +344,8 @@ public final class GameApp implements UiActions, UiView {
         if (replay.hasNext()) {
             replayShot = replay.shots().get(replay.position());
             replayAnimator = new StrokeAnimator(replay.nextStroke(strokeSounds(false)), game.settings().dt());
-            if (sounds != null) {
-                double max = world.physics().maxSpeed(), speed = Math.hypot(replayShot.vx(), replayShot.vy());
-                sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
-            }
+            StrokeFeedback.hit(sounds, Math.sqrt(replayShot.vx() * replayShot.vx() + replayShot.vy() * replayShot.vy()
+                    + replayShot.vz() * replayShot.vz()), world.physics().maxSpeed());
         } else {
             stopReplay();
             say(replayMismatches == 0 ? "replay over: every stroke ended exactly where it did in play"
@@ -401,6 +405,7 @@ public final class GameApp implements UiActions, UiView {
 
     private void buildScene() {
         rebuildScene = false;
+        effects.clear(); // a new hole: the last one's confetti stays behind
         if (renderer != null) renderer.close();
         renderer = null;
         renderer = new SceneRenderer(world.course(), world.terrain(),
@@ -409,6 +414,7 @@ public final class GameApp implements UiActions, UiView {
         renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0); // FXAA only without MSAA
         int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
         camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
+        camera.setClearance(minigolf.render.CameraClearance.of(world.course(), world.terrain()::height));
         followTarget.set(camera.target());
         window.setTitle("Minigolf - " + world.course().name());
     }
@@ -417,8 +423,9 @@ public final class GameApp implements UiActions, UiView {
      * Shows the aim (vx, vy) in m/s as if the player were dragging it, from the first frame a human
      * player can aim (until a mouse release or right click): for screenshots of the arrow and the aim guide.
      */
-    public void showAim(double vx, double vy) {
+    public void showAim(double vx, double vy, int loftDegrees) {
         pendingAim = new double[]{vx, vy};
+        loft = Loft.clamp(loftDegrees);
     }
 
     private void drawFrame(int fw, int fh, float time) {
@@ -429,6 +436,8 @@ public final class GameApp implements UiActions, UiView {
         }
         renderer.setBalls(ballViews());
         renderer.setAim(aimView());
+        effects.advanceTo(time);
+        renderer.setEffects(effects.mesh());
         followBall();
         renderer.render(camera, fw, fh, time);
         int mini = Math.min(fw, fh) / 4;
@@ -446,7 +455,7 @@ public final class GameApp implements UiActions, UiView {
         if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
             double x = replayAnimator.x(), y = replayAnimator.y();
             float[] c = PlayerColors.of(replayShot.player());
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, world.terrain().height(x, y)), c[0], c[1], c[2]));
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, replayAnimator.z()), c[0], c[1], c[2]));
             return views;
         }
         if (game == null) {
@@ -458,10 +467,11 @@ public final class GameApp implements UiActions, UiView {
         for (int i = 0; i < game.players().size(); i++) {
             PlayerState s = game.player(i);
             if (s.status() == minigolf.game.PlayerStatus.HOLED && i != rolling) continue;
-            double x = i == rolling && animator != null ? animator.x() : s.x();
-            double y = i == rolling && animator != null ? animator.y() : s.y();
+            boolean moving = i == rolling && animator != null;
+            double x = moving ? animator.x() : s.x(), y = moving ? animator.y() : s.y();
+            double z = moving ? animator.z() : world.terrain().height(x, y); // a chip's ball is drawn in the air
             float[] c = PlayerColors.of(i);
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, world.terrain().height(x, y)), c[0], c[1], c[2]));
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, z), c[0], c[1], c[2]));
         }
         return views;
     }
@@ -471,16 +481,17 @@ public final class GameApp implements UiActions, UiView {
         double speed = Math.hypot(aimVelocity[0], aimVelocity[1]);
         if (speed < 1e-6) return null;
         PlayerState s = game.player(game.currentPlayer());
+        double[] v = Loft.velocity(aimVelocity[0], aimVelocity[1], loft, world.physics().maxSpeed());
         return new AimView((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y()),
                 (float) aimVelocity[0], (float) aimVelocity[1], (float) (speed / world.physics().maxSpeed()),
-                settings.aimGuide() ? guidePath(s.x(), s.y(), aimVelocity[0], aimVelocity[1]) : null);
+                settings.aimGuide() ? guidePath(s.x(), s.y(), v) : null);
     }
 
-    /** The aim guide (AimGuide: the real engine, the game's settings, its first second), recomputed when the aim changes. */
-    private float[] guidePath(double x, double y, double vx, double vy) {
-        double[] key = {x, y, vx, vy};
+    /** The aim guide (AimGuide: the real engine, the game's settings; a chip's flight too), recomputed when the aim changes. */
+    private float[] guidePath(double x, double y, double[] v) {
+        double[] key = {x, y, v[0], v[1], v[2]};
         if (!java.util.Arrays.equals(key, guideKey)) {
-            guidePath = minigolf.game.AimGuide.preview(game.world(), game.settings(), x, y, vx, vy, minigolf.game.AimGuide.SECONDS).points();
+            guidePath = minigolf.game.AimGuide.preview(game.world(), game.settings(), x, y, v[0], v[1], v[2], minigolf.game.AimGuide.SECONDS).points();
             guideKey = key;
         }
         return guidePath;
@@ -531,6 +542,7 @@ public final class GameApp implements UiActions, UiView {
                 }
                 case GLFW_KEY_F11 -> window.toggleFullscreen();
                 case GLFW_KEY_R -> camera.reset();
+                case GLFW_KEY_UP, GLFW_KEY_DOWN -> loft = Loft.step(loft, key == GLFW_KEY_UP ? 1 : -1);
                 case GLFW_KEY_H -> renderer.terrainPass().setColorMode(renderer.terrainPass().colorMode().next());
                 case GLFW_KEY_SPACE -> {
                     if (animator != null) { // skip the animation: the same stroke, run to its end
@@ -547,7 +559,14 @@ public final class GameApp implements UiActions, UiView {
             double[] x = new double[1], y = new double[1];
             glfwGetCursorPos(win, x, y);
             if (down && imgui != null && imgui.wantsMouse()) return;
-            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+            // The camera's scheme is the editor's (CameraDrag); a plain left-drag aims, or turns away from the ball.
+            CameraDrag drag = down && !aiming ? CameraDrag.of(button, mods) : CameraDrag.NONE;
+            if (drag != CameraDrag.NONE || !down) {
+                rotating = drag == CameraDrag.ROTATE;
+                panning = drag == CameraDrag.PAN;
+                if (down) turnToHole = false; // the player's own view wins
+            }
+            if (button == GLFW_MOUSE_BUTTON_LEFT && drag == CameraDrag.NONE) {
                 if (down && canAim() && nearBall(x[0], y[0])) {
                     aiming = true;
                     aimVelocity = null;
@@ -555,19 +574,18 @@ public final class GameApp implements UiActions, UiView {
                     aiming = false;
                     double[] v = aimVelocity;
                     aimVelocity = null;
-                    if (v != null && Math.hypot(v[0], v[1]) > 0.02) hit(v[0], v[1]);
-                } else {
-                    rotating = down;
-                    if (down) turnToHole = false; // the player's own view wins
+                    if (v != null && Math.hypot(v[0], v[1]) > 0.02) {
+                        double[] shot = Loft.velocity(v[0], v[1], loft, world.physics().maxSpeed());
+                        hit(shot[0], shot[1], shot[2]);
+                    }
+                } else if (down) {
+                    rotating = true;
+                    turnToHole = false;
                 }
             }
-            if (button == GLFW_MOUSE_BUTTON_RIGHT) {
-                if (down && aiming) {
-                    aiming = false; // right click cancels the aim
-                    aimVelocity = null;
-                } else {
-                    panning = down;
-                }
+            if (button == GLFW_MOUSE_BUTTON_RIGHT && down && aiming) {
+                aiming = false; // right click cancels the aim
+                aimVelocity = null;
             }
             lastX = x[0];
             lastY = y[0];
@@ -588,7 +606,9 @@ public final class GameApp implements UiActions, UiView {
             }
         });
         glfwSetScrollCallback(h, (win, xoff, yoff) -> {
-            if (imgui == null || !imgui.wantsMouse()) camera.zoom((float) yoff);
+            if (imgui != null && imgui.wantsMouse()) return;
+            if (aiming) loft = Loft.step(loft, (int) Math.signum(yoff)); // while aiming the wheel lofts the shot
+            else camera.zoom((float) yoff);
         });
     }
 
@@ -634,47 +654,16 @@ public final class GameApp implements UiActions, UiView {
     /** Where the cursor ray meets the horizontal plane through the ball, turned into a shot. */
     private double[] aimFromCursor(double x, double y) {
         PlayerState s = game.player(game.currentPlayer());
-        double z = world.terrain().height(s.x(), s.y());
-        int fw = window.framebufferWidth(), fh = window.framebufferHeight();
-        double[] c = toFramebuffer(x, y);
-        float nx = (float) (2 * c[0] / fw - 1), ny = (float) (1 - 2 * c[1] / fh);
-        Matrix4f inv = camera.viewProjection((float) fw / fh, new Matrix4f()).invert();
-        Vector4f near = new Vector4f(nx, ny, -1, 1).mul(inv), far = new Vector4f(nx, ny, 1, 1).mul(inv);
-        near.div(near.w);
-        far.div(far.w);
-        double dz = far.z - near.z;
-        if (Math.abs(dz) < 1e-9) return aimVelocity;
-        double t = (z - near.z) / dz;
-        if (t < 0) return aimVelocity;
-        double px = near.x + t * (far.x - near.x), py = near.y + t * (far.y - near.y);
-        return AimModel.velocityForPull(s.x(), s.y(), px, py, world.physics().maxSpeed(), AimModel.DEFAULT_FULL_PULL);
+        double[] c = toFramebuffer(x, y), p = minigolf.render.CursorRay.onPlane(camera, window.framebufferWidth(),
+                window.framebufferHeight(), c[0], c[1], world.terrain().height(s.x(), s.y()));
+        if (p == null) return aimVelocity;
+        return AimModel.velocityForPull(s.x(), s.y(), p[0], p[1], world.physics().maxSpeed(), AimModel.DEFAULT_FULL_PULL);
     }
 
     // ---- UiActions ----------------------------------------------------------------------------
 
-    /** The sounds of a stroke's events: hits, landings, water, the cup (and applause for a hole in one). */
     private minigolf.physics.TrajectoryListener strokeSounds(boolean firstStroke) {
-        return new minigolf.physics.TrajectoryListener() {
-            @Override
-            public void onStep(double t, double x, double y, double vx, double vy) {
-            }
-
-            @Override
-            public void onEvent(minigolf.physics.StrokeEvent e) {
-                if (sounds == null) return;
-                switch (e.type()) {
-                    case COLLISION -> sounds.play(SoundSynth.Sound.KNOCK, e.speedBefore() / 3, 0.9 + 0.1 * Math.min(2, e.speedBefore()));
-                    case LAND, BOUNCE -> sounds.play(SoundSynth.Sound.THUD, e.speedBefore() / 3, 1);
-                    case WATER -> sounds.play(SoundSynth.Sound.SPLASH, 0.8, 1);
-                    case HOLED -> {
-                        sounds.play(SoundSynth.Sound.CUP, 0.9, 1);
-                        if (firstStroke) sounds.play(SoundSynth.Sound.APPLAUSE, 0.8, 1);
-                    }
-                    default -> {
-                    }
-                }
-            }
-        };
+        return StrokeFeedback.listener(sounds, firstStroke, effects, world);
     }
 
     @Override
@@ -774,17 +763,17 @@ public final class GameApp implements UiActions, UiView {
     }
 
     @Override
-    public void hit(double vx, double vy) {
+    public void hit(double vx, double vy, double vz) {
         if (game == null || game.isShotInFlight() || game.isOver()) return;
-        String problem = AimModel.checkTyped(vx, vy, world.physics().maxSpeed());
+        String problem = AimModel.checkTyped(vx, vy, vz, world.physics().maxSpeed());
         if (problem != null) {
             say(problem);
             return;
         }
-        double max = world.physics().maxSpeed(), speed = Math.hypot(vx, vy);
         boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
-        animator = new StrokeAnimator(game.startShot(vx, vy, strokeSounds(firstStroke)), game.settings().dt());
-        if (sounds != null) sounds.play(SoundSynth.Sound.PUTT, 0.25 + 0.75 * speed / max, 0.9 + 0.2 * speed / max);
+        animator = new StrokeAnimator(game.startShot(vx, vy, vz, strokeSounds(firstStroke)), game.settings().dt());
+        StrokeFeedback.hit(sounds, Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
+        loft = 0; // the next stroke starts as a putt again
     }
 
     @Override
@@ -974,6 +963,12 @@ public final class GameApp implements UiActions, UiView {
     }
 
     @Override
+    public void refreshCourses() {
+        courses = null;
+        rounds = null;
+    }
+
+    @Override
     public List<CourseEntry> courses() {
         if (courses == null) courses = CourseFolders.list(store);
         return courses;
@@ -1008,6 +1003,11 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public double aimSpeed() {
         return aiming && aimVelocity != null ? Math.hypot(aimVelocity[0], aimVelocity[1]) : -1;
+    }
+
+    @Override
+    public int loftDegrees() {
+        return loft;
     }
 
     @Override

@@ -100,7 +100,7 @@ public final class CountingSimulator {
         return world;
     }
 
-    /** Whether the shot chosen will be played as a putt only (the game has no chips yet): no chips. */
+    /** Whether the shot chosen will be played as a putt only (a caller that cannot play chips): no chips. */
     public boolean puttsOnly() {
         return account.puttsOnly;
     }

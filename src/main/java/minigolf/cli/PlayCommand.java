@@ -44,13 +44,18 @@ final class PlayCommand implements Callable<Integer> {
                     "Bot:NAME seats a bot (e.g. Bot:planner) (default: none, the main menu opens)."})
     List<String> players;
 
-    @Option(names = "--shots", paramLabel = "VX:VY", split = ",",
-            description = "Scripted shots for the human players, through the game's HIT input, in m/s, e.g. 1.5:0.2,2:0 (default: none).")
+    @Option(names = "--shots", paramLabel = "VX:VY[:VZ]", split = ",",
+            description = {"Scripted shots for the human players, through the game's HIT input, in m/s, e.g. 1.5:0.2,2:0;",
+                    "a third number VZ > 0 makes it a chip, e.g. 2:0:1.5 (default: none)."})
     List<String> shots;
 
     @Option(names = "--aim", paramLabel = "VX:VY",
             description = "Shows this aim (m/s) as if the first human player were dragging it, with the aim guide if it is on (for screenshots; default: none).")
     String aim;
+
+    @Option(names = "--loft", paramLabel = "DEG",
+            description = "With --aim: the loft of the shown aim, 0 (a putt) to 60 degrees, as the player sets it with the wheel (default: ${DEFAULT-VALUE}).")
+    int loft;
 
     @Option(names = "--time-scale", paramLabel = "K", description = "Animation speed as a multiple of real time (default: ${DEFAULT-VALUE}).")
     double timeScale = 1;
@@ -96,7 +101,11 @@ final class PlayCommand implements Callable<Integer> {
         if (aim != null) {
             if (seats == null) throw new UserError("--aim needs --players");
             double[] v = parseVelocity("--aim", aim);
-            app.showAim(v[0], v[1]);
+            if (v.length != 2) throw new UserError("--aim: expected VX:VY (the loft is --loft), got '" + aim + "'");
+            if (loft < 0 || loft > minigolf.game.Loft.MAX_DEGREES) {
+                throw new UserError("--loft: must be 0 to " + minigolf.game.Loft.MAX_DEGREES + " degrees, got " + loft);
+            }
+            app.showAim(v[0], v[1], loft);
         }
         if (theRound != null) app.playRound(theRound);
         FrameClock clock = timing ? new FrameClock(frames / 4) : null;
@@ -137,10 +146,13 @@ final class PlayCommand implements Callable<Integer> {
     private static double[] parseVelocity(String option, String s) {
         String[] p = s.split(":");
         try {
-            if (p.length != 2) throw new NumberFormatException();
-            return new double[]{Double.parseDouble(p[0]), Double.parseDouble(p[1])};
+            if (p.length != 2 && p.length != 3) throw new NumberFormatException();
+            double[] v = new double[p.length];
+            for (int i = 0; i < p.length; i++) v[i] = Double.parseDouble(p[i]);
+            if (v.length == 3 && !(v[2] >= 0)) throw new UserError(option + ": VZ must be 0 or more, got '" + s + "'");
+            return v;
         } catch (NumberFormatException e) {
-            throw new UserError(option + ": expected VX:VY such as 1.5:-0.2, got '" + s + "'");
+            throw new UserError(option + ": expected VX:VY or VX:VY:VZ such as 1.5:-0.2 or 2:0:1.2, got '" + s + "'");
         }
     }
 }

@@ -106,7 +106,7 @@ public final class BotCheck {
             if (control.isCancelled()) throw new CancellationException();
             double[] v = planner.plan(world, settings, game.player(0).x(), game.player(0).y(), game.player(0).total(),
                     seed + 31L * shot, BotConditions.of(game, 0, conditions.hideFriction()), control);
-            game.play(v[0], v[1]);
+            game.play(v[0], v[1], v.length > 2 ? v[2] : 0); // a chip when the bot chose one
         }
         return new Result(game.player(0).status() == PlayerStatus.HOLED, game.player(0).total(), planner.name(),
                 conditions);

@@ -24,9 +24,15 @@ public record AimGuide(float[] points, Outcome outcome) {
         return points.length / 3;
     }
 
-    /** The guide for a shot (vx, vy) from (x, y), simulated for {@code seconds} with the game's settings. */
+    /** The guide for a putt (vx, vy) from (x, y), simulated for {@code seconds} with the game's settings. */
     public static AimGuide preview(World world, SimulationSettings settings, double x, double y, double vx, double vy,
                                    double seconds) {
+        return preview(world, settings, x, y, vx, vy, 0, seconds);
+    }
+
+    /** The guide for a putt or a chip (vz &gt; 0: its flight, then its roll), as the engine plays it. */
+    public static AimGuide preview(World world, SimulationSettings settings, double x, double y, double vx, double vy,
+                                   double vz, double seconds) {
         if (!(seconds > 0)) throw new IllegalArgumentException("seconds must be > 0, got " + seconds);
         SimulationSettings cut = new SimulationSettings(settings.integrator(), settings.dt(), Math.min(seconds, settings.maxTime()));
         float[][] buffer = {new float[3 * 64]};
@@ -44,7 +50,7 @@ public record AimGuide(float[] points, Outcome outcome) {
             }
         };
         add(buffer, n, x, y, world.terrain().height(x, y));
-        ShotResult r = new Simulator(world, cut).simulate(x, y, vx, vy, recorder);
+        ShotResult r = new Simulator(world, cut).simulate(x, y, vx, vy, vz, recorder);
         Outcome outcome = r.outcome() == Outcome.TIMEOUT ? null : r.outcome();
         if (outcome != null) {
             // The stroke ended inside the window: the guide ends where it ended (the rest point, the water's edge, ...).

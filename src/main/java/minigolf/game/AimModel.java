@@ -27,8 +27,14 @@ public final class AimModel {
      * @return null if it is acceptable, else the one-line reason
      */
     public static String checkTyped(double vx, double vy, double maxSpeed) {
-        if (!Double.isFinite(vx) || !Double.isFinite(vy)) return "the velocity must be numbers";
-        double speed = Math.hypot(vx, vy);
+        return checkTyped(vx, vy, 0, maxSpeed);
+    }
+
+    /** As {@link #checkTyped(double, double, double)} for a chip: vz &gt;= 0, the limit on the whole vector. */
+    public static String checkTyped(double vx, double vy, double vz, double maxSpeed) {
+        if (!Double.isFinite(vx) || !Double.isFinite(vy) || !Double.isFinite(vz)) return "the velocity must be numbers";
+        if (vz < 0) return "vz must be 0 or more (the ball cannot be hit into the ground)";
+        double speed = Math.sqrt(vx * vx + vy * vy + vz * vz);
         if (speed == 0) return "the velocity is zero";
         if (speed > maxSpeed * (1 + 1e-12)) {
             return String.format(java.util.Locale.ROOT, "%.3f m/s is faster than the course's maximum %.3f m/s", speed, maxSpeed);

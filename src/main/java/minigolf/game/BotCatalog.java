@@ -44,7 +44,7 @@ public final class BotCatalog {
 
             public double[] plan(World w, SimulationSettings s, double x, double y, int strokes, long seed, Control c) {
                 Shot shot = SearchBot.directGuess(w, x, y).limitedTo(w.physics().maxSpeed());
-                return new double[]{shot.vx(), shot.vy()};
+                return new double[]{shot.vx(), shot.vy(), shot.vz()}; // the game plays chips too
             }
         });
     }
@@ -114,10 +114,9 @@ public final class BotCatalog {
                 // Hidden friction: the bot simulates the prior, re-fitted to its own strokes (counted in its budget).
                 World seen = conditions.hideFriction() ? FrictionPrior.scaled(world, 1) : world;
                 CountingSimulator sim = new CountingSimulator(seen, settings, BUDGET_PER_STROKE, token, progress);
-                sim.allowPuttsOnly(); // the game plays putts: a bot's chip would be flattened into one
                 CountingSimulator botSim = conditions.hideFriction() ? estimated(sim, conditions) : sim;
                 Shot shot = sim.limit(bot.nextShot(new BotRequest(botSim, x, y, strokes, seed, conditions.noise())));
-                return new double[]{shot.vx(), shot.vy()};
+                return new double[]{shot.vx(), shot.vy(), shot.vz()}; // the game plays chips too
             }
         };
     }

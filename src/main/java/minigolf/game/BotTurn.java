@@ -28,12 +28,15 @@ public final class BotTurn {
                 double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, conditions, control);
                 if (control.isCancelled()) {
                     failure = "cancelled";
-                } else if (v == null || v.length != 2 || !Double.isFinite(v[0]) || !Double.isFinite(v[1])) {
+                } else if (v == null || v.length < 2 || v.length > 3 || !java.util.Arrays.stream(v).allMatch(Double::isFinite)
+                        || (v.length == 3 && v[2] < 0)) {
                     failure = planner.name() + " gave no shot";
                 } else {
-                    double speed = Math.hypot(v[0], v[1]), max = world.physics().maxSpeed();
-                    // A bot may round just past the limit; the game never hits harder than maxSpeed.
-                    shot = speed > max ? new double[]{v[0] * max / speed, v[1] * max / speed} : v.clone();
+                    double vz = v.length == 3 ? v[2] : 0;
+                    double speed = Math.sqrt(v[0] * v[0] + v[1] * v[1] + vz * vz), max = world.physics().maxSpeed();
+                    // A bot may round just past the limit; the game never hits harder than maxSpeed (the whole vector).
+                    double k = speed > max ? max / speed : 1;
+                    shot = k == 1 ? new double[]{v[0], v[1], vz} : new double[]{v[0] * k, v[1] * k, vz * k};
                 }
             } catch (CancellationException | minigolf.bot.BotCancelledException e) {
                 failure = "cancelled";
@@ -64,7 +67,7 @@ public final class BotTurn {
         return control.plan();
     }
 
-    /** The shot once done and successful, else null. */
+    /** The shot (vx, vy, vz; vz = 0 for a putt) once done and successful, else null. */
     public double[] shot() {
         return shot;
     }

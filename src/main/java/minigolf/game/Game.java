@@ -45,7 +45,7 @@ public final class Game {
     private Stroke stroke;
     private int strokePlayer = -1;
     /** The stroke in flight as the player chose it (what a save keeps: the noise is drawn again, the same). */
-    private double strokeVx, strokeVy;
+    private double strokeVx, strokeVy, strokeVz;
     /** The stroke in flight as played (what the history and replays keep). */
     private PlayedStroke strokePlayed;
 
@@ -87,14 +87,15 @@ public final class Game {
         if (saved.pendingShot() != null) {
             int who = game.currentPlayer();
             if (who < 0) throw new IllegalArgumentException("the saved game has a shot in flight but nobody left to play");
-            game.startShot(saved.pendingShot().vx(), saved.pendingShot().vy());
+            PendingShot p = saved.pendingShot();
+            game.startShot(p.vx(), p.vy(), p.vz(), null);
         }
         return game;
     }
 
     /** Everything needed to resume this game exactly. A stroke in flight is saved as its start and velocity. */
     public GameState state() {
-        PendingShot pending = stroke == null ? null : new PendingShot(strokeVx, strokeVy);
+        PendingShot pending = stroke == null ? null : new PendingShot(strokeVx, strokeVy, strokeVz);
         return new GameState(settings, players, strokeLimit, List.copyOf(states), List.copyOf(history), pending, noise,
                 noiseSeed);
     }
@@ -186,21 +187,32 @@ public final class Game {
 
     /** As {@link #startShot(double, double)}, with a listener for the stroke's events (the game's sounds). */
     public Stroke startShot(double vx, double vy, minigolf.physics.TrajectoryListener listener) {
+        return startShot(vx, vy, 0, listener);
+    }
+
+    /**
+     * Hits the ball with velocity (vx, vy, vz): vz = 0 is a putt, vz &gt; 0 a chip (the ball leaves
+     * the ground). The course's speed limit applies to the whole vector.
+     */
+    public Stroke startShot(double vx, double vy, double vz, minigolf.physics.TrajectoryListener listener) {
         if (stroke != null) throw new IllegalStateException("a stroke is still rolling");
         int who = currentPlayer();
         if (who < 0) throw new IllegalStateException("the game is over");
+        if (!(vz >= 0)) throw new IllegalArgumentException("the vertical velocity must be 0 or more, got " + vz);
         PlayerState s = states.get(who);
         // The aimed stroke is checked as before (finite, not too fast); then the noise is drawn.
-        Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, listener);
-        PlayedStroke played = new PlayedStroke(s.x(), s.y(), Shot.of(vx, vy));
+        Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, vz, listener, false);
+        PlayedStroke played = new PlayedStroke(s.x(), s.y(), new Shot(vx, vy, vz));
         if (!noise.isNone()) {
             played = new ShotNoise(noise, world, noiseSeed + 0x9E3779B97F4A7C15L * history.size()).play(s.x(), s.y(), played.shot());
-            started = new Stroke(world, settings, played.x(), played.y(), played.shot().vx(), played.shot().vy(), listener);
+            Shot p = played.shot();
+            started = new Stroke(world, settings, played.x(), played.y(), p.vx(), p.vy(), p.vz(), listener, false);
         }
         stroke = started;
         strokePlayer = who;
         strokeVx = vx;
         strokeVy = vy;
+        strokeVz = vz;
         strokePlayed = played;
         return started;
     }
@@ -223,8 +235,9 @@ public final class Game {
                 : hits + penalties >= strokeLimit ? PlayerStatus.PICKED_UP : PlayerStatus.PLAYING;
         states.set(strokePlayer, new PlayerState(x, y, hits, penalties, status));
         // The stroke as played: a replay from the record ends exactly where play did.
-        ShotRecord record = new ShotRecord(strokePlayer, strokePlayed.x(), strokePlayed.y(), strokePlayed.shot().vx(),
-                strokePlayed.shot().vy(), r.outcome(), r.endX(), r.endY());
+        Shot v = strokePlayed.shot();
+        ShotRecord record = new ShotRecord(strokePlayer, strokePlayed.x(), strokePlayed.y(), v.vx(), v.vy(), v.vz(),
+                r.outcome(), r.endX(), r.endY());
         history.add(record);
         stroke = null;
         strokePlayer = -1;
@@ -235,6 +248,12 @@ public final class Game {
     /** Plays a whole stroke at once (bots, tests, a skipped animation). */
     public ShotRecord play(double vx, double vy) {
         startShot(vx, vy).run();
+        return completeShot();
+    }
+
+    /** Plays a whole stroke, putt or chip, at once. */
+    public ShotRecord play(double vx, double vy, double vz) {
+        startShot(vx, vy, vz, null).run();
         return completeShot();
     }
 

@@ -120,6 +120,23 @@ final class JsonFields {
         return out;
     }
 
+    /**
+     * A stroke's velocity: [vx, vy] (a putt, as in every file from before chips) or [vx, vy, vz]
+     * with vz &gt;= 0 (a chip). Always returns three numbers.
+     */
+    double[] velocity(JsonNode node, String path, String name) throws SaveGameException {
+        JsonNode v = field(node, path, name);
+        String p = join(path, name);
+        if (!v.isArray() || v.size() < 2 || v.size() > 3) throw error(p, "must be [vx, vy] or [vx, vy, vz]");
+        double[] out = new double[3];
+        for (int i = 0; i < v.size(); i++) {
+            if (!v.get(i).isNumber() || !Double.isFinite(v.get(i).doubleValue())) throw error(p + "[" + i + "]", "must be a finite number");
+            out[i] = v.get(i).doubleValue();
+        }
+        if (out[2] < 0) throw error(p + "[2]", "must be 0 or more (the ball is hit upwards or along the ground)");
+        return out;
+    }
+
     JsonNode array(JsonNode node, String path, String name) throws SaveGameException {
         JsonNode v = field(node, path, name);
         if (!v.isArray()) throw error(join(path, name), "must be an array");

@@ -1,5 +1,9 @@
 package minigolf.game;
 
-/** A stroke that was rolling when the game was saved: it is replayed from its start on load. */
-public record PendingShot(double vx, double vy) {
+/** A stroke that was rolling (or flying) when the game was saved: it is replayed from its start on load. */
+public record PendingShot(double vx, double vy, double vz) {
+    /** A putt. */
+    public PendingShot(double vx, double vy) {
+        this(vx, vy, 0);
+    }
 }

@@ -92,12 +92,13 @@ public final class SavedGames {
             ObjectNode o = history.addObject();
             o.put("player", r.player());
             o.putArray("start").add(r.startX()).add(r.startY());
-            o.putArray("velocity").add(r.vx()).add(r.vy());
+            velocity(o, r.vx(), r.vy(), r.vz());
             o.put("outcome", r.outcome().jsonName());
             o.putArray("end").add(r.endX()).add(r.endY());
         }
         if (s.pendingShot() != null) {
-            root.putObject("pendingShot").putArray("velocity").add(s.pendingShot().vx()).add(s.pendingShot().vy());
+            PendingShot p = s.pendingShot();
+            velocity(root.putObject("pendingShot"), p.vx(), p.vy(), p.vz());
         }
         if (!s.noise().isNone()) {
             ObjectNode noise = root.putObject("noise");
@@ -110,6 +111,12 @@ public final class SavedGames {
         } catch (IOException e) {
             throw new IllegalStateException("cannot write JSON", e);
         }
+    }
+
+    /** A putt is written [vx, vy], as before chips (older versions read it); a chip [vx, vy, vz]. */
+    private static void velocity(ObjectNode o, double vx, double vy, double vz) {
+        ArrayNode v = o.putArray("velocity").add(vx).add(vy);
+        if (vz != 0) v.add(vz);
     }
 
     public static Loaded parse(String json, String source) throws SaveGameException {
@@ -198,10 +205,10 @@ public final class SavedGames {
             JsonNode o = f.object(historyNode.get(i), p);
             f.onlyFields(o, p, SHOT);
             int who = f.integer(o, p, "player", 0, players.size() - 1);
-            double[] start = f.vec(o, p, "start"), v = f.vec(o, p, "velocity"), end = f.vec(o, p, "end");
+            double[] start = f.vec(o, p, "start"), v = f.velocity(o, p, "velocity"), end = f.vec(o, p, "end");
             Outcome outcome = outcomeNamed(f.text(o, p, "outcome"));
             if (outcome == null) throw f.error(p + ".outcome", "must be holed, stopped, water, out or timeout");
-            history.add(new ShotRecord(who, start[0], start[1], v[0], v[1], outcome, end[0], end[1]));
+            history.add(new ShotRecord(who, start[0], start[1], v[0], v[1], v[2], outcome, end[0], end[1]));
         }
 
         PendingShot pending = null;
@@ -209,14 +216,14 @@ public final class SavedGames {
         if (pendingNode != null && !pendingNode.isNull()) {
             f.object(pendingNode, "pendingShot");
             f.onlyFields(pendingNode, "pendingShot", PENDING);
-            double[] v = f.vec(pendingNode, "pendingShot", "velocity");
-            if (Math.hypot(v[0], v[1]) > world.physics().maxSpeed() * (1 + 1e-12)) {
+            double[] v = f.velocity(pendingNode, "pendingShot", "velocity");
+            if (Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) > world.physics().maxSpeed() * (1 + 1e-12)) {
                 throw f.error("pendingShot.velocity", "is faster than the course's maxSpeed " + world.physics().maxSpeed() + " m/s");
             }
             if (states.stream().noneMatch(PlayerState::isPlaying)) {
                 throw f.error("pendingShot", "a shot is in flight but every player has finished");
             }
-            pending = new PendingShot(v[0], v[1]);
+            pending = new PendingShot(v[0], v[1], v[2]);
         }
         NoiseModel noise = NoiseModel.NONE;
         long noiseSeed = 0;

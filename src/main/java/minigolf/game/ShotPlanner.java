@@ -26,7 +26,8 @@ public interface ShotPlanner {
     String name();
 
     /**
-     * The velocity (vx, vy) to hit the ball at (x, y) with; it must not exceed the course's maxSpeed.
+     * The velocity (vx, vy) for a putt or (vx, vy, vz), vz &gt;= 0, for a chip, to hit the ball at (x, y)
+     * with; its whole length must not exceed the course's maxSpeed.
      * The same arguments (seed included) give the same shot.
      *
      * @throws java.util.concurrent.CancellationException if {@code control.isCancelled()} became true

@@ -16,8 +16,8 @@ public final class StrokeAnimator {
     private final Stroke stroke;
     private final double dt;
     private double accumulator;
-    private double prevX, prevY, prevVx, prevVy;
-    private double curX, curY, curVx, curVy;
+    private double prevX, prevY, prevZ, prevVx, prevVy;
+    private double curX, curY, curZ, curVx, curVy;
     private double ax, ay;
     private double alpha;
 
@@ -26,6 +26,7 @@ public final class StrokeAnimator {
         this.dt = dt;
         prevX = curX = stroke.x();
         prevY = curY = stroke.y();
+        prevZ = curZ = stroke.z();
         prevVx = curVx = stroke.vx();
         prevVy = curVy = stroke.vy();
     }
@@ -42,6 +43,7 @@ public final class StrokeAnimator {
             }
             prevX = curX;
             prevY = curY;
+            prevZ = curZ;
             prevVx = curVx;
             prevVy = curVy;
             try {
@@ -53,6 +55,9 @@ public final class StrokeAnimator {
             }
             curX = stroke.isFinished() ? stroke.result().endX() : stroke.x();
             curY = stroke.isFinished() ? stroke.result().endY() : stroke.y();
+            // A chip's ball is drawn in the air; an ended stroke (water, the cup) keeps its last height.
+            double endZ = stroke.isFinished() ? stroke.result().endZ() : stroke.z();
+            curZ = Double.isFinite(endZ) ? endZ : curZ;
             curVx = stroke.vx();
             curVy = stroke.vy();
             double stepTime = dt;
@@ -80,6 +85,11 @@ public final class StrokeAnimator {
 
     public double y() {
         return prevY + (curY - prevY) * alpha;
+    }
+
+    /** The drawn height of the ball's contact point: the ground while it rolls, above it in flight. */
+    public double z() {
+        return prevZ + (curZ - prevZ) * alpha;
     }
 
     public double vx() {

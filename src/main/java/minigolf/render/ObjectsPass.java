@@ -31,6 +31,8 @@ public final class ObjectsPass implements RenderPass {
     private final Mesh cup;
     /** The flagstick (models/flag.obj: pole, gold ball, waving cloth), placed at the hole. */
     private final Mesh flag;
+    /** Confetti and splashes (Particles), rebuilt each frame while they last; null when none. */
+    private Mesh effects;
     private final Mesh ball;
     private final List<BallView> defaultBalls;
     private List<BallView> balls;
@@ -81,6 +83,20 @@ public final class ObjectsPass implements RenderPass {
 
     public List<BallView> balls() {
         return balls;
+    }
+
+    /** The effects' particles to draw this frame ({@link Particles#mesh()}), or null for none. */
+    public void setEffects(MeshData particles) {
+        if (effects != null) {
+            effects.close();
+            effects = null;
+        }
+        if (particles != null && particles.triangleCount() > 0) effects = new Mesh(particles);
+    }
+
+    /** Whether effect particles are being drawn. */
+    public boolean hasEffects() {
+        return effects != null;
     }
 
     /** Shows the aiming arrow, or hides it for null. The arrow mesh is rebuilt only when the aim changes. */
@@ -145,6 +161,7 @@ public final class ObjectsPass implements RenderPass {
         draw(flag, model.identity(), 0.3f, 32f);
         if (arrow != null) draw(arrow, model.identity(), 0.2f, 16f);
         drawBalls((float) visualBallRadius());
+        if (effects != null) draw(effects, model.identity(), 0.4f, 24f);
     }
 
     /**
@@ -216,6 +233,7 @@ public final class ObjectsPass implements RenderPass {
         flag.close();
         ball.close();
         if (arrow != null) arrow.close();
+        if (effects != null) effects.close();
         shader.close();
     }
 }

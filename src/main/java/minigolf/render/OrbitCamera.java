@@ -31,6 +31,9 @@ public final class OrbitCamera {
     private float minDistance = 0.3f;
     private float maxDistance = 200f;
 
+    /** Keeps the ball in sight (the eye moves in front of trees, walls, the flag), or null. */
+    private CameraClearance clearance;
+
     private final Vector3f homeTarget = new Vector3f();
     private float homeYaw, homePitch, homeDistance;
 
@@ -181,7 +184,13 @@ public final class OrbitCamera {
         return distance;
     }
 
+    /** Lets {@code c} move the eye where something would hide the target (null: the plain orbit). */
+    public void setClearance(CameraClearance c) {
+        clearance = c;
+    }
+
     public Vector3f eye() {
+        if (clearance != null) return clearance.place(target, yaw, pitch, distance, minDistance, MAX_PITCH, new Vector3f());
         float cp = (float) Math.cos(pitch);
         return new Vector3f(target).add(distance * cp * (float) Math.cos(yaw), distance * cp * (float) Math.sin(yaw),
                 distance * (float) Math.sin(pitch));

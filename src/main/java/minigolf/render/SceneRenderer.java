@@ -140,6 +140,11 @@ public final class SceneRenderer implements AutoCloseable {
         return objects;
     }
 
+    /** Rebuilds the water for changed ground (the editor's brush), so new water shows at once. */
+    public void updateWater(Course course, Terrain terrain) {
+        water.rebuild(course, terrain);
+    }
+
     public WaterPass waterPass() {
         return water;
     }
@@ -205,6 +210,11 @@ public final class SceneRenderer implements AutoCloseable {
     /** The balls to draw (contact points, see {@link BallView}); null restores the default ball at the start, empty draws none. */
     public void setBalls(List<BallView> balls) {
         objects.setBalls(balls);
+    }
+
+    /** The effects' particles for this frame (confetti, splashes: {@link Particles#mesh()}), or null. */
+    public void setEffects(MeshData particles) {
+        objects.setEffects(particles);
     }
 
     /** Shows the aiming arrow on the ground from the ball; null hides it. */

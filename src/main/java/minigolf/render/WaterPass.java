@@ -19,35 +19,37 @@ public final class WaterPass implements RenderPass {
     /** How far the ripples shift the reflected and refracted images, in screen units. */
     public static final float DISTORTION = 0.012f;
 
-    private final ShaderProgram shader;
-    private final Mesh mesh;
-    private final Texture dudv;
+    private ShaderProgram shader;
+    private Mesh mesh;
+    private Texture dudv;
     private final RenderTarget reflection = new RenderTarget();
     private final RenderTarget refraction = new RenderTarget();
     private boolean targetsReady;
     /** The wet part of the plane (x, y at z = 0): minX, minY, maxX, maxY; null without water. */
-    private final float[] wetBox;
+    private float[] wetBox;
 
     public WaterPass(Course course, Terrain terrain) {
-        MeshData data = buildPlane(course.bounds(), terrain);
-        wetBox = data == null ? null : wetBox(data);
-        if (data == null) {
-            shader = null;
-            mesh = null;
-            dudv = null;
-        } else {
-            shader = ShaderProgram.load("water");
-            Mesh m = null;
-            try {
-                m = new Mesh(data);
-                dudv = Texture.load("water-dudv.png", true);
-            } catch (RuntimeException e) {
-                if (m != null) m.close();
-                shader.close();
-                throw e;
-            }
-            mesh = m;
+        try {
+            rebuild(course, terrain);
+        } catch (RuntimeException e) {
+            close();
+            throw e;
         }
+    }
+
+    /**
+     * The plane again for changed ground (the editor's brush: ground lowered below zero is water at
+     * once). The shader and the ripple texture are loaded the first time there is water and kept.
+     */
+    public void rebuild(Course course, Terrain terrain) {
+        MeshData data = buildPlane(course.bounds(), terrain);
+        if (mesh != null) mesh.close();
+        mesh = null;
+        wetBox = data == null ? null : wetBox(data);
+        if (data == null) return;
+        if (shader == null) shader = ShaderProgram.load("water");
+        if (dudv == null) dudv = Texture.load("water-dudv.png", true);
+        mesh = new Mesh(data);
     }
     /** The z = 0 grid with a depth per vertex (layout {3, 1}); null when the terrain never dips below 0. */
     static MeshData buildPlane(Bounds b, Terrain terrain) {

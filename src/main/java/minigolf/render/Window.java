@@ -108,6 +108,7 @@ public final class Window implements AutoCloseable {
                 throw new RenderException("OpenGL functions could not be loaded for the new context: " + e.getMessage(), e);
             }
             glfwSwapInterval(options.vsync() ? 1 : 0);
+            if (options.visible()) fitToScreen();
             try (MemoryStack stack = MemoryStack.stackPush()) {
                 IntBuffer w = stack.mallocInt(1);
                 IntBuffer h = stack.mallocInt(1);
@@ -123,6 +124,32 @@ public final class Window implements AutoCloseable {
         } finally {
             if (!ok) releaseGlfw();
         }
+    }
+
+    /** A window asked for larger than the screen's work area (a 1366 x 768 laptop) is made to fit it. */
+    private void fitToScreen() {
+        long monitor = glfwGetPrimaryMonitor();
+        if (monitor == NULL) return;
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            IntBuffer ax = stack.mallocInt(1), ay = stack.mallocInt(1), aw = stack.mallocInt(1), ah = stack.mallocInt(1);
+            IntBuffer w = stack.mallocInt(1), h = stack.mallocInt(1);
+            glfwGetMonitorWorkarea(monitor, ax, ay, aw, ah);
+            glfwGetWindowSize(handle, w, h);
+            int[] fitted = fitted(w.get(0), h.get(0), aw.get(0), ah.get(0));
+            if (fitted[0] != w.get(0) || fitted[1] != h.get(0)) {
+                glfwSetWindowSize(handle, fitted[0], fitted[1]);
+                glfwSetWindowPos(handle, ax.get(0), ay.get(0));
+            }
+        }
+    }
+
+    /**
+     * The window size (w, h) fitted inside a work area (areaW x areaH), keeping 40 pixels for the
+     * title bar; unchanged when it fits or the area is unknown (0).
+     */
+    static int[] fitted(int w, int h, int areaW, int areaH) {
+        if (areaW <= 0 || areaH <= 0) return new int[]{w, h};
+        return new int[]{Math.max(320, Math.min(w, areaW)), Math.max(200, Math.min(h, areaH - 40))};
     }
 
     private static SurfacelessContext createSurfaceless(Options options, String glfwProblem) {

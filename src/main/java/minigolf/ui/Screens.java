@@ -44,6 +44,7 @@ public final class Screens {
     // Typed shot.
     private final ImDouble typedVx = new ImDouble(1.0);
     private final ImDouble typedVy = new ImDouble(0.0);
+    private final ImDouble typedVz = new ImDouble(0.0);
     // Settings form.
     private final ImInt integrator = new ImInt(2);
     private final ImInt stepsPerSecond = new ImInt(60);
@@ -139,7 +140,10 @@ public final class Screens {
         ImGui.separator();
         float bw = 300, bh = 0;
         if (ImGui.button("Play", bw, bh)) show(Screen.NEW_GAME);
-        if (ImGui.button("Rounds and practice holes", bw, bh)) show(Screen.COURSES);
+        if (ImGui.button("Rounds and practice holes", bw, bh)) {
+            actions.refreshCourses(); // a course saved by the editor a moment ago is listed
+            show(Screen.COURSES);
+        }
         List<String> botNames = BotCatalog.names();
         if (ImGui.button("Test bot", bw, bh) && !botNames.isEmpty()) {
             actions.testBot(botNames.get(Math.min(testBot.get(), botNames.size() - 1)));
@@ -149,7 +153,12 @@ public final class Screens {
         ImGui.combo("##testbot", testBot, botNames.toArray(new String[0]));
         if (ImGui.button("Create course", bw, bh)) actions.createCourse();
         if (!view.savedGames().isEmpty() && ImGui.beginMenu("Load saved game")) {
-            for (Path p : view.savedGames()) if (ImGui.menuItem(p.getFileName().toString())) actions.loadGame(p);
+            // Newest first, by round or course, players and date (the file names are only timestamps).
+            List<Path> saves = new java.util.ArrayList<>(view.savedGames());
+            java.util.Collections.reverse(saves);
+            for (Path p : saves) {
+                if (ImGui.menuItem(minigolf.game.SavedGameSummary.cached(p).label() + "##" + p)) actions.loadGame(p);
+            }
             ImGui.endMenu();
         }
         if (ImGui.button("Settings", bw, bh)) openSettings(view, Screen.MAIN_MENU);
@@ -345,6 +354,7 @@ public final class Screens {
             double max = view.world().physics().maxSpeed();
             ImGui.progressBar((float) (aim / max), 260, 0, String.format(Locale.ROOT, "power %.0f%%", 100 * aim / max));
         }
+        if (g != null && !g.isOver()) ImGui.text(minigolf.game.Loft.describe(view.loftDegrees()) + "   (wheel while aiming, Up/Down)");
         if (g != null) ImGui.checkbox("details", details);
         BallReadout r = details.get() ? view.readout() : null;
         if (r != null) {
@@ -383,12 +393,14 @@ public final class Screens {
         ImGui.inputDouble("vx", typedVx, 0.1, 0.5, "%.3f");
         ImGui.setNextItemWidth(120);
         ImGui.inputDouble("vy", typedVy, 0.1, 0.5, "%.3f");
-        double speed = Math.hypot(typedVx.get(), typedVy.get());
+        ImGui.setNextItemWidth(120);
+        ImGui.inputDouble("vz (0 = putt)", typedVz, 0.1, 0.5, "%.3f");
+        double speed = Math.sqrt(typedVx.get() * typedVx.get() + typedVy.get() * typedVy.get() + typedVz.get() * typedVz.get());
         ImGui.progressBar((float) Math.min(1, speed / max), 240, 0, String.format(Locale.ROOT, "%.2f m/s", speed));
-        String problem = minigolf.game.AimModel.checkTyped(typedVx.get(), typedVy.get(), max);
+        String problem = minigolf.game.AimModel.checkTyped(typedVx.get(), typedVy.get(), typedVz.get(), max);
         if (problem != null) ImGui.textColored(1f, 0.5f, 0.4f, 1f, problem);
         if (problem != null) ImGui.beginDisabled();
-        if (ImGui.button("HIT", 120, 0)) actions.hit(typedVx.get(), typedVy.get());
+        if (ImGui.button("HIT", 120, 0)) actions.hit(typedVx.get(), typedVy.get(), typedVz.get());
         if (problem != null) ImGui.endDisabled();
         double aim = view.aimSpeed();
         if (aim >= 0) {
@@ -564,9 +576,10 @@ public final class Screens {
             {"Aim and hit", "press on your ball, drag back away from where it should go, release"},
             {"Cancel an aim", "right click while dragging"},
             {"Power", "the longer the drag, the harder the putt (the bar shows it)"},
-            {"Turn the camera", "drag with the left button away from the ball"},
-            {"Move the camera", "drag with the right button"},
-            {"Zoom", "mouse wheel"},
+            {"Chip (loft)", "mouse wheel while dragging, or Up / Down: 0 (putt) to 60 degrees, shown in the HUD"},
+            {CameraDrag.HELP[0][0], CameraDrag.HELP[0][1] + ", or left-drag away from the ball"},
+            CameraDrag.HELP[1],
+            CameraDrag.HELP[2],
             {"Reset the camera", "R"},
             {"Skip the rolling ball", "SPACE"},
             {"Height colours", "H"},

@@ -11,9 +11,18 @@ public interface UiActions {
     void startGame(List<Player> players);
 
     /** Hits the current player's ball (the HIT button and the mouse drag both end here). */
-    void hit(double vx, double vy);
+    /** Hits the ball: vz = 0 is a putt, vz &gt; 0 a chip. */
+    void hit(double vx, double vy, double vz);
+
+    default void hit(double vx, double vy) {
+        hit(vx, vy, 0);
+    }
 
     void selectCourse(Path course);
+
+    /** Reads the course and round folders again (the editor may have saved a course since). */
+    default void refreshCourses() {
+    }
 
     void testBot(String bot);
 

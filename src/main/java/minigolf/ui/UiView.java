@@ -47,6 +47,11 @@ public interface UiView {
     /** The aim being dragged: speed in m/s, or negative when not aiming. */
     double aimSpeed();
 
+    /** The loft chosen for the next stroke in degrees (0 = a putt; {@link minigolf.game.Loft}). */
+    default int loftDegrees() {
+        return 0;
+    }
+
     /** ImGui texture id of a course's preview, or 0 while it is not rendered yet. */
     int thumbnail(CourseEntry course);
 

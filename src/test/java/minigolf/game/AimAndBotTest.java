@@ -88,7 +88,7 @@ class AimAndBotTest {
         };
         BotTurn capped = new BotTurn(greedy, GameTest.FLAT, SimulationSettings.DEFAULT, -3, 0, 0, 1L);
         capped.join(5_000);
-        assertArrayEquals(new double[]{2.4, 3.2}, capped.shot(), 1e-12, "scaled to maxSpeed 4");
+        assertArrayEquals(new double[]{2.4, 3.2, 0}, capped.shot(), 1e-12, "scaled to maxSpeed 4 (vz 0: a putt)");
     }
 
     @Test

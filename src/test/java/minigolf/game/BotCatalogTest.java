@@ -44,7 +44,7 @@ class BotCatalogTest {
             public void whenCancelled(Runnable action) {
             }
         });
-        assertEquals(2, v.length);
-        assertEquals(Outcome.HOLED, new Simulator(world, SimulationSettings.DEFAULT).simulate(x, y, v[0], v[1]).outcome());
+        assertEquals(3, v.length, "(vx, vy, vz): the game plays chips too");
+        assertEquals(Outcome.HOLED, new Simulator(world, SimulationSettings.DEFAULT).simulate(x, y, v[0], v[1], v[2]).outcome());
     }
 }

@@ -20,13 +20,13 @@ import org.junit.jupiter.api.Test;
  * the largest success region); the sweep's share of holing strokes, 0.002% to 2.8%, is in the README.
  */
 public class RoundFilesTest {
-    /** One first stroke (vx, vy) per hole of meadowbrook-18 that holes in one. */
+    /** One first stroke (vx, vy) per hole of meadowbrook-18 that holes in one; (vx, vy, vz) where it is a chip. */
     public static final double[][] HOLE_IN_ONE = {
             {4.2930808673884890, 1.6051171641058921},
             {3.9667667014561756, 3.0438071450436030},
             {3.5664619361068257, -1.1588137289060536},
             {3.7544468696578788, 2.6288919999422940},
-            {-4.5833333333333330, 5.6129644960920360e-16},
+            {4.117273506839396, 0.0, 2.5727580278521773}, // a chip over the pond (AceSweep along the line to the cup)
             {3.8974802591409405, -0.89980421737546130},
             {3.8333333333333335, 0.0000000000000000},
             {2.9835656861048196, -0.31358538980296025},
@@ -41,6 +41,30 @@ public class RoundFilesTest {
             {3.6042044086648100, 2.2521568729911210},
             {4.0853622077378550, 1.1714587622222465}
     };
+
+    private static double vz(double[] v) {
+        return v.length > 2 ? v[2] : 0;
+    }
+
+    /** The holes of the 18 whose ace is a chip: at least one in the front nine (the island green). */
+    @Test
+    void aChipOverWaterIsPartOfBothRounds() throws Exception {
+        Round r9 = load("meadowbrook-9.json");
+        int island = 4;
+        assertEquals("Island Green", r9.hole(island).world().course().name());
+        assertEquals(3, HOLE_IN_ONE[island].length, "the island's ace is a chip");
+        World w = r9.hole(island).world();
+        // No putt from the tee reaches the island: every one of 72 directions x 15 speeds ends in the pond or short.
+        assertEquals(0, HoleInOneSweep.sweep(w, 72, 15).holed(), "no putt holes in one");
+        double sx = w.course().start().x(), sy = w.course().start().y();
+        boolean anyPuttOnIsland = false;
+        Simulator sim = new Simulator(w, SimulationSettings.DEFAULT);
+        for (int k = 1; k <= 50; k++) {
+            var res = sim.simulate(sx, sy, 0.1 * k, 0);
+            if (res.outcome() == Outcome.STOPPED && Math.hypot(res.endX() - 1.8, res.endY()) < 0.6) anyPuttOnIsland = true;
+        }
+        assertFalse(anyPuttOnIsland, "a putt straight at the cup never stops on the island");
+    }
 
     static Path rounds() {
         return Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "rounds");
@@ -75,7 +99,7 @@ public class RoundFilesTest {
             World w = r.hole(i).world();
             Simulator sim = new Simulator(w, SimulationSettings.DEFAULT);
             double[] v = HOLE_IN_ONE[i];
-            assertEquals(Outcome.HOLED, sim.simulate(w.course().start().x(), w.course().start().y(), v[0], v[1]).outcome(),
+            assertEquals(Outcome.HOLED, sim.simulate(w.course().start().x(), w.course().start().y(), v[0], v[1], vz(v)).outcome(),
                     "hole " + (i + 1) + " " + w.course().name());
         }
     }
@@ -94,13 +118,14 @@ public class RoundFilesTest {
             World w = r.hole(i).world();
             Simulator sim = new Simulator(w, SimulationSettings.DEFAULT);
             double[] v = HOLE_IN_ONE[i];
-            double a = Math.atan2(v[1], v[0]), s = Math.hypot(v[0], v[1]);
+            // Turned 5 degrees either way, or 10% faster or slower (the whole velocity, the loft kept).
+            double a = Math.atan2(v[1], v[0]), ground = Math.hypot(v[0], v[1]), s = Math.hypot(ground, vz(v));
             int misses = 0;
             for (double[] d : List.of(new double[]{Math.toRadians(5), 1}, new double[]{-Math.toRadians(5), 1},
                     new double[]{0, 1.1}, new double[]{0, 0.9})) {
-                double sp = Math.min(w.physics().maxSpeed(), s * d[1]);
-                if (sim.simulate(w.course().start().x(), w.course().start().y(), sp * Math.cos(a + d[0]), sp * Math.sin(a + d[0]))
-                        .outcome() != Outcome.HOLED) misses++;
+                double k = Math.min(w.physics().maxSpeed(), s * d[1]) / s;
+                if (sim.simulate(w.course().start().x(), w.course().start().y(), k * ground * Math.cos(a + d[0]),
+                        k * ground * Math.sin(a + d[0]), k * vz(v)).outcome() != Outcome.HOLED) misses++;
             }
             assertTrue(misses >= 1, "hole " + (i + 1) + ": no stroke near the ace misses");
         }

@@ -58,7 +58,8 @@ import static org.lwjgl.opengl.GL11.*;
  * The course editor's window: the game's renderer and orbit camera, ImGui panels, mouse picking
  * of the terrain and the original keyboard scheme. All editing goes through {@link ToolController}
  * and {@link CourseEditor}; this class only turns input into their calls and draws.
- * Camera: right drag turns, middle drag pans, the wheel zooms; the left button uses the tool.
+ * Camera (the game's scheme, minigolf.ui.CameraDrag): right drag or Ctrl + left drag turns, Shift + right drag, middle drag
+ * or Ctrl + Shift + left drag pans, the wheel zooms; the left button uses the tool.
  */
 public final class EditorApp {
     /**
@@ -230,6 +231,9 @@ public final class EditorApp {
                 World w = editor.world();
                 renderer.terrainPass().updateRegion(w.course(), w.terrain(), c.nodeX(r[0]) - pad, c.nodeY(r[1]) - pad,
                         c.nodeX(r[2]) + pad, c.nodeY(r[3]) + pad);
+                // Ground lowered below zero is water at once, ground raised out of it dry at once (not only
+                // when the stroke ends and the scene is rebuilt).
+                if (renderer.waterPass().hasWater() || minigolf.editor.CourseWater.anyBelowZero(c, r)) renderer.updateWater(w.course(), w.terrain());
                 // The sun's shadow map and the minimap are redrawn once, when the stroke ends and the
                 // scene is rebuilt: redrawing them for every dab would cost more than the dab itself.
             }
@@ -290,11 +294,26 @@ public final class EditorApp {
             lastX = x[0];
             lastY = y[0];
             if (down && imgui != null && imgui.wantsMouse()) return;
-            if (button == GLFW_MOUSE_BUTTON_RIGHT) rotating = down;
-            if (button == GLFW_MOUSE_BUTTON_MIDDLE) panning = down;
+            // The game's camera scheme (CameraDrag): right-drag or Ctrl + left-drag turns, Shift + right,
+            // middle or Ctrl + Shift + left moves; a plain left press is the tool.
+            minigolf.ui.CameraDrag drag = down ? minigolf.ui.CameraDrag.of(button, mods) : minigolf.ui.CameraDrag.NONE;
+            if (down && drag != minigolf.ui.CameraDrag.NONE) {
+                rotating = drag == minigolf.ui.CameraDrag.ROTATE;
+                panning = drag == minigolf.ui.CameraDrag.PAN;
+            } else if (!down && button != GLFW_MOUSE_BUTTON_LEFT) {
+                rotating = false;
+                panning = false;
+            }
             if (button == GLFW_MOUSE_BUTTON_LEFT) {
-                if (down) toolDown(x[0], y[0]);
-                else toolUp(x[0], y[0]);
+                if (down && drag == minigolf.ui.CameraDrag.NONE) {
+                    toolDown(x[0], y[0]);
+                } else if (!down) {
+                    if (rotating || panning) {
+                        rotating = false;
+                        panning = false;
+                    }
+                    toolUp(x[0], y[0]);
+                }
             }
         });
         glfwSetCursorPosCallback(h, (win, x, y) -> {
@@ -439,18 +458,28 @@ public final class EditorApp {
 
     private void save() {
         if (editor.file() == null) {
-            dialog = Dialog.SAVE_AS;
+            openSaveAs();
             return;
         }
         saveTo(editor.file());
     }
 
+    /** "Save as", suggesting the course's file or a new one in the player's courses folder (the game lists it). */
+    private void openSaveAs() {
+        pathField.set(minigolf.editor.SaveLocation.suggest(options.recoveryDir(), editor.file(), editor.world().course().name()).toString());
+        dialog = Dialog.SAVE_AS;
+    }
+
     private boolean saveTo(Path file) {
         try {
+            if (file.toAbsolutePath().getParent() != null) java.nio.file.Files.createDirectories(file.toAbsolutePath().getParent());
             editor.saveAs(file);
             say("saved " + file);
             rebuildScene = true; // the title shows the file
             return true;
+        } catch (IOException e) {
+            say("cannot save: " + e.getMessage());
+            return false;
         } catch (CourseException e) {
             say(e.getMessage());
             problems = editor.validate();
@@ -465,11 +494,16 @@ public final class EditorApp {
             java.nio.file.Files.createDirectories(folder);
             playFile = folder.resolve(".editor-play.json");
             CourseWriter.save(c, playFile);
-            ProcessLauncher.start("play", playFile.toString());
+            ProcessLauncher.start(playArguments(playFile).toArray(new String[0]));
             say("the game opens in its own window");
         } catch (IOException | CourseException e) {
             say("cannot play: " + e.getMessage());
         }
+    }
+
+    /** The command line of "Play it": a game at once with one player, on the tee (not the main menu). */
+    static List<String> playArguments(Path course) {
+        return List.of("play", course.toString(), "--players", "Player");
     }
 
     private void askBot() {
@@ -569,7 +603,7 @@ public final class EditorApp {
             if (ImGui.menuItem("New...", "")) dialog = Dialog.NEW;
             if (ImGui.menuItem("Open...", "")) dialog = Dialog.OPEN;
             if (ImGui.menuItem("Save", "Ctrl+S")) save();
-            if (ImGui.menuItem("Save as...", "")) dialog = Dialog.SAVE_AS;
+            if (ImGui.menuItem("Save as...", "")) openSaveAs();
             if (ImGui.menuItem("Quit", "")) {
                 if (editor.isDirty()) dialog = Dialog.CONFIRM_CLOSE;
                 else glfwSetWindowShouldClose(window.handle(), true);
@@ -926,7 +960,7 @@ public final class EditorApp {
             case CONFIRM_CLOSE -> {
                 ImGui.text("The course has unsaved changes.");
                 if (ImGui.button("Save and close")) {
-                    if (editor.file() == null) dialog = Dialog.SAVE_AS;
+                    if (editor.file() == null) openSaveAs();
                     else if (saveTo(editor.file())) glfwSetWindowShouldClose(window.handle(), true);
                 }
                 ImGui.sameLine();

@@ -48,7 +48,7 @@ class PlannerChipTest {
 
     @org.junit.jupiter.api.Test
     void whereOnlyPuttsArePlayedThePlannerDoesNotChip() throws Exception {
-        // The game plays putts only: a chip chosen there would be played flattened into a putt.
+        // A simulator told to allow putts only (CountingSimulator.allowPuttsOnly) gets no chip.
         World world = World.load(Path.of("courses/chips/island-green.json"));
         minigolf.bot.CountingSimulator sim = new minigolf.bot.CountingSimulator(world, SimulationSettings.DEFAULT,
                 100_000, CancellationToken.none(), BotProgress.NONE);
