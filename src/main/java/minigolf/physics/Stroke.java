@@ -35,8 +35,6 @@ public final class Stroke {
     static final int MAX_PIECES = 16;
     /** A ball leaving a surface lower than this (m) stays on it: it hops slower than sqrt(2 g HOP_HEIGHT). */
     static final double HOP_HEIGHT = 0.001;
-    /** Coulomb friction of a landing ball on turf; the tangential loss is at most 2/7 (the ball then rolls). */
-    static final double IMPACT_FRICTION = 0.4;
 
     private final Terrain terrain;
     private final FrictionField friction;
@@ -59,7 +57,7 @@ public final class Stroke {
     private final boolean zoned;
     private final CollisionScene scene;
     private final double ballRadius;
-    private final Double groundRestitution;
+    private final GroundImpact impact;
     private final EventLog events;
     private final PathSweep paths;
     private final TakeOff takeOff;
@@ -139,7 +137,7 @@ public final class Stroke {
         this.zoned = friction.hasZones();
         this.scene = world.obstacles();
         this.ballRadius = physics.ballRadius();
-        this.groundRestitution = physics.groundRestitution();
+        this.impact = new GroundImpact(physics.groundRestitution(), hopSpeed);
         this.events = recordEvents ? new EventLog() : null;
         this.x = x0;
         this.y = y0;
@@ -555,10 +553,8 @@ public final class Stroke {
 
     /**
      * The ball reaches the ground. Water or outside the bounds ends the stroke; inside the hole's
-     * radius at a horizontal speed below v_c (1 - (delta/r)^2) it drops. Otherwise it bounces:
-     * normal speed times e (the course's groundRestitution or Penner's turf model), tangential
-     * speed reduced by Coulomb friction (at most to 5/7, where the ball rolls). A bounce lower than
-     * 1 mm settles the ball into rolling.
+     * radius at a horizontal speed below v_c (1 - (delta/r)^2) it drops. Otherwise it bounces or
+     * settles into rolling ({@link GroundImpact}).
      */
     private void land() {
         if (!area.contains(x, y)) {
@@ -581,41 +577,17 @@ public final class Stroke {
                 return;
             }
         }
-        double norm = Math.sqrt(1 + hx * hx + hy * hy);
-        double gx = -hx / norm, gy = -hy / norm, gz = 1 / norm;
-        double before = Math.sqrt(vx * vx + vy * vy + vz * vz);
-        double vn = -(vx * gx + vy * gy + vz * gz); // speed into the ground
-        if (vn < 0) vn = 0;
-        double e = groundRestitution != null ? groundRestitution : pennerRestitution(vn);
-        double tx = vx + vn * gx, ty = vy + vn * gy, tz = vz + vn * gz;
-        double tangential = Math.sqrt(tx * tx + ty * ty + tz * tz);
-        if (tangential > 0) {
-            double loss = Math.min(IMPACT_FRICTION * (1 + e) * vn, 2.0 / 7.0 * tangential);
-            double keep = 1 - loss / tangential;
-            tx *= keep;
-            ty *= keep;
-            tz *= keep;
-        }
-        double up = e * vn;
-        if (up < hopSpeed) {
+        impact.impact(vx, vy, vz, hx, hy);
+        vx = impact.vx;
+        vy = impact.vy;
+        vz = impact.vz;
+        if (impact.settles) {
             flying = false;
-            vx = tx;
-            vy = ty;
-            vz = 0;
-            event(StrokeEvent.Type.LAND, before, Math.sqrt(tx * tx + ty * ty + tz * tz));
+            event(StrokeEvent.Type.LAND, impact.before, impact.after);
         } else {
-            vx = tx + up * gx;
-            vy = ty + up * gy;
-            vz = tz + up * gz;
-            event(StrokeEvent.Type.BOUNCE, before, Math.sqrt(vx * vx + vy * vy + vz * vz));
+            event(StrokeEvent.Type.BOUNCE, impact.before, impact.after);
         }
         resume = true;
-    }
-
-    /** Penner's turf restitution e = 0.510 - 0.0375 vn + 0.000903 vn^2 (fitted for vn up to 20 m/s), kept in [0, 1]. */
-    static double pennerRestitution(double vn) {
-        double v = Math.min(vn, 20);
-        return Math.max(0, Math.min(1, 0.510 - 0.0375 * v + 0.000903 * v * v));
     }
 
     /** A flight sub-step of length tau from the current state into f*. */

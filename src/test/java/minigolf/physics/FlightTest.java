@@ -59,7 +59,7 @@ class FlightTest {
                 assertTrue(bounces.get(k).speedAfter() < bounces.get(k - 1).speedAfter(), "lower each time");
             }
             if (e != null) assertEquals(0.6, bounces.get(1).speedAfter() / bounces.get(1).speedBefore(), 1e-9);
-            else assertEquals(Stroke.pennerRestitution(bounces.get(0).speedBefore()),
+            else assertEquals(GroundImpact.pennerRestitution(bounces.get(0).speedBefore()),
                     bounces.get(0).speedAfter() / bounces.get(0).speedBefore(), 1e-9);
             assertEquals(Outcome.STOPPED, r.outcome());
             assertEquals(1, r.endX(), 1e-12);
