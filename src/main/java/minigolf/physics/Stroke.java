@@ -76,6 +76,12 @@ public final class Stroke {
     private double px, py, pvx, pvy, pt, ph, phx, phy, pMuK;
     private int pSteps;
 
+    /** The RK4 step's error control; null for the other integrators. */
+    private final StepControl control;
+    // Whether n* holds the controlled step of length trialTau, and whether this piece was one it shortened.
+    private boolean trialHeld, subPiece;
+    private double trialTau;
+
     private Outcome outcome;
     private double endX, endY, endZ;
     // Flight scratch: the state a flight sub-step produced.
@@ -126,6 +132,7 @@ public final class Stroke {
         this.paths = new PathSweep(world.obstacles(), terrain, physics.ballRadius());
         this.takeOff = new TakeOff(terrain, rolling, gravity);
         this.dt = settings.dt();
+        this.control = settings.integrator() == Integrator.RK4 ? new StepControl(rolling, dt) : null;
         this.maxTime = settings.maxTime();
         Hole hole = world.hole();
         this.holeX = hole.position().x();
@@ -184,10 +191,14 @@ public final class Stroke {
     public void step() {
         if (outcome != null) return;
         double remaining = dt;
-        for (int piece = 0; piece < MAX_PIECES; piece++) {
+        int pieces = 0;
+        while (pieces < MAX_PIECES) {
             resume = false;
+            subPiece = false;
             remaining -= flying ? flightPiece(remaining) : rollingPiece(remaining);
             if (!resume || outcome != null || remaining <= 1e-9 * dt) return;
+            // A sub-step the error control asked for is no contact: it does not count towards a wedge.
+            if (!subPiece) pieces++;
         }
         // Wedged: more contacts in one step than we follow. The ball stops where it is for the rest of it.
         t += remaining;
@@ -230,13 +241,29 @@ public final class Stroke {
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
             // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
             // in a step. Such steps treat friction implicitly (see subStep).
-            double maxChange = gravity * (slope + muK) * tau;
+            double maxChange = gravity * (slope + muK) * tau * (control != null ? StepControl.SLOW_FRACTION : 1);
             if (decelerationAlongV > 0 && speed <= maxChange) {
                 finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
                 return pieceTime;
             }
         }
+        double whole = tau;
+        if (control != null) {
+            rolling.from(x, y, vx, vy, hx, hy, muK);
+            tau = control.length(tau, a1x, a1y);
+            nx = rolling.nx;
+            ny = rolling.ny;
+            nvx = rolling.nvx;
+            nvy = rolling.nvy;
+            trialHeld = true;
+            trialTau = tau;
+        }
+        pieceTime = tau;
         finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
+        if (tau < whole && !resume && outcome == null) {
+            resume = true;
+            subPiece = true;
+        }
         return pieceTime;
     }
 
@@ -297,7 +324,7 @@ public final class Stroke {
             launchWithin(tau, a1x, a1y);
             return;
         }
-        subStep(tau, kind, a1x, a1y);
+        if (!(trialHeld && tau == trialTau && kind == RollingStep.Kind.INTEGRATOR)) subStep(tau, kind, a1x, a1y);
         if (!Double.isFinite(nx + ny + nvx + nvy)) throw NonFiniteMotionException.motion(x, y);
         // A stop step ends at rest, and so does a slow step in which friction held the ball.
         boolean stopping = kind == RollingStep.Kind.STOP || (kind == RollingStep.Kind.SLOW && nvx == 0 && nvy == 0);
@@ -616,6 +643,7 @@ public final class Stroke {
 
     /** Writes the state after a sub-step of length tau from the current state into n*. */
     private void subStep(double tau, RollingStep.Kind kind, double a1x, double a1y) {
+        trialHeld = false;
         rolling.from(x, y, vx, vy, hx, hy, muK);
         rolling.advance(tau, kind, a1x, a1y);
         nx = rolling.nx;

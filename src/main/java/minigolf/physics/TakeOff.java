@@ -71,14 +71,27 @@ final class TakeOff {
     /**
      * How long into a step of length tau that ends in the air the ball still rolls: the first
      * moment from which a ball thrown along the ground would be above it a short probe later
-     * (tau / 8, with the tolerance scaled alike), by bisection on the rolling sub-step. Without
-     * it the ball would leave at the step's start, up to a step early (millimetres where it lands).
+     * (tau / 8, with the tolerance scaled alike), by a forward scan and bisection on the rolling
+     * sub-step, then the continuous criterion's moment near it ({@link #exactTime}). Without it
+     * the ball would leave at the step's start, up to a step early (millimetres where it lands).
      */
     double time(double tau, double a1x, double a1y) {
         double probe = tau / 8;
         double tolerance = LIFT_TOLERANCE / 64;
-        double onGround = 0, flying = tau;
         if (leaves(0, probe, tolerance, a1x, a1y)) return exactTime(tau, 0, probe, a1x, a1y);
+        // At a crease (the edge of a drop) the probe leaves only from the last probe's reach
+        // before it, not from beyond: scanned forward in half-probes, the first moment it leaves
+        // is found, then the edge of that window by bisection.
+        double onGround = 0, flying = -1;
+        for (int k = 1; k <= 2 * 8; k++) {
+            double at = k * tau / 16;
+            if (leaves(at, probe, tolerance, a1x, a1y)) {
+                flying = at;
+                break;
+            }
+            onGround = at;
+        }
+        if (flying < 0) return exactTime(tau, tau, probe, a1x, a1y);
         for (int k = 0; k < 30; k++) {
             double mid = 0.5 * (onGround + flying);
             if (leaves(mid, probe, tolerance, a1x, a1y)) flying = mid; else onGround = mid;
