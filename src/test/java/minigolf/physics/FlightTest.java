@@ -133,6 +133,33 @@ class FlightTest {
     }
 
     @Test
+    void aBallRollingOffAnEdgeTakesOffAtTheEdgeWhereverItsStepsFall() {
+        // The same drop, the ball started at 25 positions so the edge falls anywhere in a step
+        // (and in the step control's sub-steps): it leaves at the edge, never rolls over it first
+        // (a ball once launched 23 mm past it, on the slope, and landed at once).
+        Terrain cliff = new Terrain() {
+            public double height(double x, double y) {
+                return x < 0 ? 3 : 3 - x;
+            }
+
+            public void sample(double x, double y, double[] out) {
+                out[0] = height(x, y);
+                out[1] = x < 0 ? 0 : -1;
+                out[2] = 0;
+            }
+        };
+        World w = TestObstacles.withFlight(TestWorlds.world(cliff, 0.1, 0.2, 20), 0, null);
+        for (int k = 0; k < 25; k++) {
+            double start = -2 - k * 0.0029;
+            ShotResult r = TestWorlds.rk4(w).simulate(start, 0, 4, 0, 0, null);
+            StrokeEvent launch = first(r, StrokeEvent.Type.LAUNCH);
+            assertTrue(launch.x() <= 1e-4 && launch.x() > -0.01, "start " + start + ": launch at " + launch.x());
+            StrokeEvent landing = first(r, StrokeEvent.Type.BOUNCE, StrokeEvent.Type.LAND);
+            assertTrue(landing.x() > 2, "start " + start + ": lands at " + landing.x());
+        }
+    }
+
+    @Test
     void landingInTheHoleSlowlyIsHoledAndInWaterIsWater() {
         Hole hole = new Hole(new Vec2(2, 0), 0.1, HoleRule.REST, null);
         World w = TestObstacles.withFlight(
