@@ -248,16 +248,7 @@ public final class Stroke {
             }
         }
         double whole = tau;
-        if (control != null) {
-            rolling.from(x, y, vx, vy, hx, hy, muK);
-            tau = control.length(tau, a1x, a1y);
-            nx = rolling.nx;
-            ny = rolling.ny;
-            nvx = rolling.nvx;
-            nvy = rolling.nvy;
-            trialHeld = true;
-            trialTau = tau;
-        }
+        if (control != null) tau = controlledLength(tau, a1x, a1y);
         pieceTime = tau;
         finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
         if (tau < whole && !resume && outcome == null) {
@@ -265,6 +256,19 @@ public final class Stroke {
             subPiece = true;
         }
         return pieceTime;
+    }
+
+    /** The step control's length for the coming RK4 step (at most tau); n* then hold that step. */
+    private double controlledLength(double tau, double a1x, double a1y) {
+        rolling.from(x, y, vx, vy, hx, hy, muK);
+        double h = control.length(tau, a1x, a1y);
+        nx = rolling.nx;
+        ny = rolling.ny;
+        nvx = rolling.nvx;
+        nvy = rolling.nvy;
+        trialHeld = true;
+        trialTau = h;
+        return h;
     }
 
     /**
