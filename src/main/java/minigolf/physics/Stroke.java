@@ -308,7 +308,7 @@ public final class Stroke {
      */
     private double stopAtZoneEdge(double tau, double a1x, double a1y) {
         int zone = friction.zoneAt(x, y);
-        subStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+        if (!(trialHeld && tau == trialTau)) subStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
         if (friction.zoneAt(nx, ny) == zone) return tau;
         rolling.frozenMuK = muK;
         double inside = 0, beyond = tau;
