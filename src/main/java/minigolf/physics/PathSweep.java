@@ -16,9 +16,9 @@ final class PathSweep {
     static final double STRAIGHT = 1e-6;
     /**
      * Where a chord meets an obstacle, the path between its ends is swept again as 4 chords, this
-     * many times over: the contact lies on the curve to within its 1/256th chords' sagitta.
+     * many times over: the contact lies on the curve to within its 1/64th chords' sagitta.
      */
-    static final int REFINEMENTS = 3;
+    static final int REFINEMENTS = 2;
     /** A ball stops this far short of its contact point along its path, so it never ends a step touching. */
     static final double SKIN = 1e-7;
 
