@@ -35,8 +35,6 @@ public final class Stroke {
     static final int MAX_PIECES = 16;
     /** A ball leaving a surface lower than this (m) stays on it: it hops slower than sqrt(2 g HOP_HEIGHT). */
     static final double HOP_HEIGHT = 0.001;
-    /** Coulomb friction of a landing ball on turf; the tangential loss is at most 2/7 (the ball then rolls). */
-    static final double IMPACT_FRICTION = 0.4;
 
     private final Terrain terrain;
     private final FrictionField friction;
@@ -59,7 +57,7 @@ public final class Stroke {
     private final boolean zoned;
     private final CollisionScene scene;
     private final double ballRadius;
-    private final Double groundRestitution;
+    private final GroundImpact impact;
     private final EventLog events;
     private final PathSweep paths;
     private final TakeOff takeOff;
@@ -77,6 +75,12 @@ public final class Stroke {
     // The state at the start of the last rolling step, for a take-off found at its end.
     private double px, py, pvx, pvy, pt, ph, phx, phy, pMuK;
     private int pSteps;
+
+    /** The RK4 step's error control; null for the other integrators. */
+    private final StepControl control;
+    // Whether n* holds the controlled step of length trialTau, and whether this piece was one it shortened.
+    private boolean trialHeld, subPiece;
+    private double trialTau;
 
     private Outcome outcome;
     private double endX, endY, endZ;
@@ -128,6 +132,7 @@ public final class Stroke {
         this.paths = new PathSweep(world.obstacles(), terrain, physics.ballRadius());
         this.takeOff = new TakeOff(terrain, rolling, gravity);
         this.dt = settings.dt();
+        this.control = settings.integrator() == Integrator.RK4 ? new StepControl(rolling, dt) : null;
         this.maxTime = settings.maxTime();
         Hole hole = world.hole();
         this.holeX = hole.position().x();
@@ -139,7 +144,7 @@ public final class Stroke {
         this.zoned = friction.hasZones();
         this.scene = world.obstacles();
         this.ballRadius = physics.ballRadius();
-        this.groundRestitution = physics.groundRestitution();
+        this.impact = new GroundImpact(physics.groundRestitution(), hopSpeed);
         this.events = recordEvents ? new EventLog() : null;
         this.x = x0;
         this.y = y0;
@@ -186,10 +191,14 @@ public final class Stroke {
     public void step() {
         if (outcome != null) return;
         double remaining = dt;
-        for (int piece = 0; piece < MAX_PIECES; piece++) {
+        int pieces = 0;
+        while (pieces < MAX_PIECES) {
             resume = false;
+            subPiece = false;
             remaining -= flying ? flightPiece(remaining) : rollingPiece(remaining);
             if (!resume || outcome != null || remaining <= 1e-9 * dt) return;
+            // A sub-step the error control asked for is no contact: it does not count towards a wedge.
+            if (!subPiece) pieces++;
         }
         // Wedged: more contacts in one step than we follow. The ball stops where it is for the rest of it.
         t += remaining;
@@ -232,14 +241,34 @@ public final class Stroke {
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
             // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
             // in a step. Such steps treat friction implicitly (see subStep).
-            double maxChange = gravity * (slope + muK) * tau;
+            double maxChange = gravity * (slope + muK) * tau * (control != null ? StepControl.SLOW_FRACTION : 1);
             if (decelerationAlongV > 0 && speed <= maxChange) {
                 finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
                 return pieceTime;
             }
         }
+        double whole = tau;
+        if (control != null) tau = controlledLength(tau, a1x, a1y);
+        pieceTime = tau;
         finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
+        if (tau < whole && !resume && outcome == null) {
+            resume = true;
+            subPiece = true;
+        }
         return pieceTime;
+    }
+
+    /** The step control's length for the coming RK4 step (at most tau); n* then hold that step. */
+    private double controlledLength(double tau, double a1x, double a1y) {
+        rolling.from(x, y, vx, vy, hx, hy, muK);
+        double h = control.length(tau, a1x, a1y);
+        nx = rolling.nx;
+        ny = rolling.ny;
+        nvx = rolling.nvx;
+        nvy = rolling.nvy;
+        trialHeld = true;
+        trialTau = h;
+        return h;
     }
 
     /**
@@ -279,7 +308,7 @@ public final class Stroke {
      */
     private double stopAtZoneEdge(double tau, double a1x, double a1y) {
         int zone = friction.zoneAt(x, y);
-        subStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+        if (!(trialHeld && tau == trialTau)) subStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
         if (friction.zoneAt(nx, ny) == zone) return tau;
         rolling.frozenMuK = muK;
         double inside = 0, beyond = tau;
@@ -299,7 +328,7 @@ public final class Stroke {
             launchWithin(tau, a1x, a1y);
             return;
         }
-        subStep(tau, kind, a1x, a1y);
+        if (!(trialHeld && tau == trialTau && kind == RollingStep.Kind.INTEGRATOR)) subStep(tau, kind, a1x, a1y);
         if (!Double.isFinite(nx + ny + nvx + nvy)) throw NonFiniteMotionException.motion(x, y);
         // A stop step ends at rest, and so does a slow step in which friction held the ball.
         boolean stopping = kind == RollingStep.Kind.STOP || (kind == RollingStep.Kind.SLOW && nvx == 0 && nvy == 0);
@@ -555,10 +584,8 @@ public final class Stroke {
 
     /**
      * The ball reaches the ground. Water or outside the bounds ends the stroke; inside the hole's
-     * radius at a horizontal speed below v_c (1 - (delta/r)^2) it drops. Otherwise it bounces:
-     * normal speed times e (the course's groundRestitution or Penner's turf model), tangential
-     * speed reduced by Coulomb friction (at most to 5/7, where the ball rolls). A bounce lower than
-     * 1 mm settles the ball into rolling.
+     * radius at a horizontal speed below v_c (1 - (delta/r)^2) it drops. Otherwise it bounces or
+     * settles into rolling ({@link GroundImpact}).
      */
     private void land() {
         if (!area.contains(x, y)) {
@@ -581,41 +608,17 @@ public final class Stroke {
                 return;
             }
         }
-        double norm = Math.sqrt(1 + hx * hx + hy * hy);
-        double gx = -hx / norm, gy = -hy / norm, gz = 1 / norm;
-        double before = Math.sqrt(vx * vx + vy * vy + vz * vz);
-        double vn = -(vx * gx + vy * gy + vz * gz); // speed into the ground
-        if (vn < 0) vn = 0;
-        double e = groundRestitution != null ? groundRestitution : pennerRestitution(vn);
-        double tx = vx + vn * gx, ty = vy + vn * gy, tz = vz + vn * gz;
-        double tangential = Math.sqrt(tx * tx + ty * ty + tz * tz);
-        if (tangential > 0) {
-            double loss = Math.min(IMPACT_FRICTION * (1 + e) * vn, 2.0 / 7.0 * tangential);
-            double keep = 1 - loss / tangential;
-            tx *= keep;
-            ty *= keep;
-            tz *= keep;
-        }
-        double up = e * vn;
-        if (up < hopSpeed) {
+        impact.impact(vx, vy, vz, hx, hy);
+        vx = impact.vx;
+        vy = impact.vy;
+        vz = impact.vz;
+        if (impact.settles) {
             flying = false;
-            vx = tx;
-            vy = ty;
-            vz = 0;
-            event(StrokeEvent.Type.LAND, before, Math.sqrt(tx * tx + ty * ty + tz * tz));
+            event(StrokeEvent.Type.LAND, impact.before, impact.after);
         } else {
-            vx = tx + up * gx;
-            vy = ty + up * gy;
-            vz = tz + up * gz;
-            event(StrokeEvent.Type.BOUNCE, before, Math.sqrt(vx * vx + vy * vy + vz * vz));
+            event(StrokeEvent.Type.BOUNCE, impact.before, impact.after);
         }
         resume = true;
-    }
-
-    /** Penner's turf restitution e = 0.510 - 0.0375 vn + 0.000903 vn^2 (fitted for vn up to 20 m/s), kept in [0, 1]. */
-    static double pennerRestitution(double vn) {
-        double v = Math.min(vn, 20);
-        return Math.max(0, Math.min(1, 0.510 - 0.0375 * v + 0.000903 * v * v));
     }
 
     /** A flight sub-step of length tau from the current state into f*. */
@@ -644,6 +647,7 @@ public final class Stroke {
 
     /** Writes the state after a sub-step of length tau from the current state into n*. */
     private void subStep(double tau, RollingStep.Kind kind, double a1x, double a1y) {
+        trialHeld = false;
         rolling.from(x, y, vx, vy, hx, hy, muK);
         rolling.advance(tau, kind, a1x, a1y);
         nx = rolling.nx;

@@ -9,6 +9,8 @@ import minigolf.terrain.Terrain;
 final class TakeOff {
     /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */
     static final double LIFT_TOLERANCE = 1e-6;
+    /** Half the span (m) of the central difference that gives the ground's curvature along v. */
+    static final double CURVATURE_SPAN = 1e-5;
 
     private final Terrain terrain;
     private final RollingStep rolling;
@@ -47,7 +49,8 @@ final class TakeOff {
         double tangent = h + (hx * vx + hy * vy) * tau;
         double ground = terrain.height(x + vx * tau, y + vy * tau);
         if (ground < tangent - 0.5 * gravity * tau * tau - LIFT_TOLERANCE) return true;
-        return tangent - ground >= 0.25 * gravity * tau * tau && curvesAwayWithin(tau, a1x, a1y);
+        return tangent - ground >= 0.25 * gravity * tau * tau
+                && (curvesAwayWithin(tau, a1x, a1y) || curvesAway(tau, a1x, a1y));
     }
 
     /**
@@ -68,19 +71,80 @@ final class TakeOff {
     /**
      * How long into a step of length tau that ends in the air the ball still rolls: the first
      * moment from which a ball thrown along the ground would be above it a short probe later
-     * (tau / 8, with the tolerance scaled alike), by bisection on the rolling sub-step. Without
-     * it the ball would leave at the step's start, up to a step early (millimetres where it lands).
+     * (tau / 8, with the tolerance scaled alike), by a forward scan and bisection on the rolling
+     * sub-step, then the continuous criterion's moment near it ({@link #exactTime}). Without it
+     * the ball would leave at the step's start, up to a step early (millimetres where it lands).
      */
     double time(double tau, double a1x, double a1y) {
         double probe = tau / 8;
         double tolerance = LIFT_TOLERANCE / 64;
-        double onGround = 0, flying = tau;
-        if (leaves(0, probe, tolerance, a1x, a1y)) return 0;
+        if (leaves(0, probe, tolerance, a1x, a1y)) return exactTime(tau, 0, probe, a1x, a1y);
+        // At a crease (the edge of a drop) the probe leaves only from the last probe's reach
+        // before it, not from beyond: scanned forward in half-probes, the first moment it leaves
+        // is found, then the edge of that window by bisection.
+        double onGround = 0, flying = -1;
+        for (int k = 1; k <= 2 * 8; k++) {
+            double at = k * tau / 16;
+            if (leaves(at, probe, tolerance, a1x, a1y)) {
+                flying = at;
+                break;
+            }
+            onGround = at;
+        }
+        if (flying < 0) return exactTime(tau, tau, probe, a1x, a1y);
         for (int k = 0; k < 30; k++) {
             double mid = 0.5 * (onGround + flying);
             if (leaves(mid, probe, tolerance, a1x, a1y)) flying = mid; else onGround = mid;
         }
+        return exactTime(tau, onGround, probe, a1x, a1y);
+    }
+
+    /**
+     * The moment the continuous criterion v^T H v &lt; -g starts to hold, near the probe's
+     * moment {@code found}. The probe looks a short way ahead (tau / 8), so it sees a crest's
+     * edge about a third of it early: millimetres where the ball lands. Where the criterion is
+     * off at found - probe and on at some moment up to found + probe (within the step), the
+     * crossing between is located by bisection; otherwise the probe's moment stands.
+     */
+    private double exactTime(double tau, double found, double probe, double a1x, double a1y) {
+        double onGround = Math.max(0, found - probe);
+        if (curvesAway(onGround, a1x, a1y)) return found;
+        double flying = -1;
+        for (int k = 0; k <= 4; k++) {
+            double at = Math.min(tau, found + 0.25 * k * probe);
+            if (curvesAway(at, a1x, a1y)) {
+                flying = at;
+                break;
+            }
+            onGround = at;
+        }
+        if (flying < 0) return found;
+        for (int k = 0; k < 40; k++) {
+            double mid = 0.5 * (onGround + flying);
+            if (curvesAway(mid, a1x, a1y)) flying = mid; else onGround = mid;
+        }
         return onGround;
+    }
+
+    /** Whether v^T H v &lt; -g for the ball rolled for tau from the step's start (H v by a central difference of the gradient). */
+    private boolean curvesAway(double tau, double a1x, double a1y) {
+        double sx = x, sy = y, svx = vx, svy = vy;
+        if (tau > 0) {
+            rolling.from(x, y, vx, vy, hx, hy, muK);
+            rolling.advance(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+            sx = rolling.nx;
+            sy = rolling.ny;
+            svx = rolling.nvx;
+            svy = rolling.nvy;
+        }
+        double speed = Math.sqrt(svx * svx + svy * svy);
+        if (speed == 0) return false;
+        double ux = svx / speed, uy = svy / speed, eps = CURVATURE_SPAN;
+        terrain.sample(sx + eps * ux, sy + eps * uy, sample);
+        double gx = sample[1], gy = sample[2];
+        terrain.sample(sx - eps * ux, sy - eps * uy, sample);
+        double curvature = ((gx - sample[1]) * ux + (gy - sample[2]) * uy) / (2 * eps);
+        return curvature * speed * speed < -gravity;
     }
 
     /** Whether a ball rolled for tau from the step's start, then thrown along the ground, is above it after probe. */

@@ -59,7 +59,7 @@ class FlightTest {
                 assertTrue(bounces.get(k).speedAfter() < bounces.get(k - 1).speedAfter(), "lower each time");
             }
             if (e != null) assertEquals(0.6, bounces.get(1).speedAfter() / bounces.get(1).speedBefore(), 1e-9);
-            else assertEquals(Stroke.pennerRestitution(bounces.get(0).speedBefore()),
+            else assertEquals(GroundImpact.pennerRestitution(bounces.get(0).speedBefore()),
                     bounces.get(0).speedAfter() / bounces.get(0).speedBefore(), 1e-9);
             assertEquals(Outcome.STOPPED, r.outcome());
             assertEquals(1, r.endX(), 1e-12);
@@ -130,6 +130,33 @@ class FlightTest {
         double v = Math.sqrt(16 - 2 * 0.1 * G * 2);
         double x = 2 * v * v / G;
         assertEquals(x, landing.x(), 0.1);
+    }
+
+    @Test
+    void aBallRollingOffAnEdgeTakesOffAtTheEdgeWhereverItsStepsFall() {
+        // The same drop, the ball started at 25 positions so the edge falls anywhere in a step
+        // (and in the step control's sub-steps): it leaves at the edge, never rolls over it first
+        // (a ball once launched 23 mm past it, on the slope, and landed at once).
+        Terrain cliff = new Terrain() {
+            public double height(double x, double y) {
+                return x < 0 ? 3 : 3 - x;
+            }
+
+            public void sample(double x, double y, double[] out) {
+                out[0] = height(x, y);
+                out[1] = x < 0 ? 0 : -1;
+                out[2] = 0;
+            }
+        };
+        World w = TestObstacles.withFlight(TestWorlds.world(cliff, 0.1, 0.2, 20), 0, null);
+        for (int k = 0; k < 25; k++) {
+            double start = -2 - k * 0.0029;
+            ShotResult r = TestWorlds.rk4(w).simulate(start, 0, 4, 0, 0, null);
+            StrokeEvent launch = first(r, StrokeEvent.Type.LAUNCH);
+            assertTrue(launch.x() <= 1e-4 && launch.x() > -0.01, "start " + start + ": launch at " + launch.x());
+            StrokeEvent landing = first(r, StrokeEvent.Type.BOUNCE, StrokeEvent.Type.LAND);
+            assertTrue(landing.x() > 2, "start " + start + ": lands at " + landing.x());
+        }
     }
 
     @Test
