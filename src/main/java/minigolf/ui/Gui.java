@@ -1,0 +1,777 @@
+package minigolf.ui;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.lwjgl.nuklear.NkColor;
+import org.lwjgl.nuklear.NkContext;
+import org.lwjgl.nuklear.NkImage;
+import org.lwjgl.nuklear.NkPanel;
+import org.lwjgl.nuklear.NkRect;
+import org.lwjgl.nuklear.NkVec2;
+import org.lwjgl.system.MemoryStack;
+
+import static org.lwjgl.nuklear.Nuklear.*;
+
+/**
+ * The screens' immediate-mode interface on Nuklear, with ImGui's names and argument order (so that
+ * {@code ImGui.button("Play")} reads {@code Gui.button("Play")}). Calls go to the {@link NuklearLayer}
+ * whose frame is open. ImGui's flow layout is kept: each widget starts a new row unless
+ * {@link #sameLine()} came before it; a window without a size takes its content's size, measured the
+ * frame before (so a new window settles in its second frame). Labels "Text##id" show "Text";
+ * "Text###id" also names the window "id". Edit fields, sliders and combos show their label on the right.
+ */
+public final class Gui {
+    private static final int MAX_COLUMNS = 64;
+
+    /** What a frame leaves for input between frames: where the interface is, whether a field is edited. */
+    static final class FrameResult {
+        List<float[]> rects = new ArrayList<>();
+        boolean textFieldActive;
+    }
+
+    private static final class WindowMemory {
+        float needW, needH;
+        boolean measured;
+    }
+
+    /** The window being built. */
+    private static final class Win {
+        String id;
+        WindowMemory memory;
+        float x, y, w, h;
+        boolean rowOpen, sameLine, frameText, inMenuBar;
+        float rowW, contentW, sameLineOffset;
+        // Table.
+        String table;
+        int tableFlags, tableRow, nextColumn;
+        float[] widths, measured;
+        List<String> headers;
+        boolean cellPending;
+        float cellWidth;
+        int cellColumn;
+    }
+
+    private record Menu(boolean combo, String key) {
+    }
+
+    static NuklearLayer layer;
+    static NkContext ctx;
+    static FontAtlas font;
+    private static float scale = 1, textH, frameH, spacingX, itemW;
+    private static Win win;
+    private static float[] nextPos, nextSize;
+    private static float nextItemWidth = -1;
+    private static final float[] lastItem = new float[4];
+    private static boolean lastDeactivatedAfterEdit;
+    private static final Deque<String> ids = new ArrayDeque<>();
+    private static final Deque<Menu> menus = new ArrayDeque<>();
+    private static final Map<String, WindowMemory> windows = new HashMap<>();
+    private static final Map<String, float[]> tableWidths = new HashMap<>();
+    private static final Map<String, float[]> menuSizes = new HashMap<>();
+    private static final GuiDrawList background = new GuiDrawList();
+    private static FrameResult building = new FrameResult();
+    private static long frame;
+
+    private Gui() {
+    }
+
+    // ---- Frame ------------------------------------------------------------------------------------
+
+    static void beginFrame(NuklearLayer l) {
+        if (layer != l) forget();
+        layer = l;
+        ctx = l.context();
+        font = l.font();
+        scale = l.scale();
+        textH = font.height();
+        frameH = Math.round(font.height() + 8 * scale);
+        spacingX = ctx.style().window().spacing().x();
+        itemW = Math.round(10 * font.height());
+        building = new FrameResult();
+        win = null;
+        ids.clear();
+        menus.clear();
+        frame++;
+    }
+
+    static void endFrame(FrameResult result) {
+        if (win != null) throw new IllegalStateException("window '" + win.id + "' was not ended");
+        background.flush(ctx, layer.displayWidth(), layer.displayHeight(), font);
+        result.rects = building.rects;
+        result.textFieldActive = building.textFieldActive;
+        GuiFields.forgetUnseen(frame);
+    }
+
+    static void detach(NuklearLayer l) {
+        if (layer == l) forget();
+    }
+
+    /** Drops every remembered size and field (a new layer, or the layer closed). */
+    static void forget() {
+        layer = null;
+        ctx = null;
+        windows.clear();
+        tableWidths.clear();
+        menuSizes.clear();
+        background.clear();
+        GuiFields.clear();
+    }
+
+    static long frameNumber() {
+        return frame;
+    }
+
+    static FrameResult building() {
+        return building;
+    }
+
+    private static void requireWindow() {
+        if (win == null) throw new IllegalStateException("a widget outside Gui.begin/end");
+    }
+
+    public static float displayWidth() {
+        return layer.displayWidth();
+    }
+
+    public static float displayHeight() {
+        return layer.displayHeight();
+    }
+
+    /** The line height of the interface font. */
+    public static float textLineHeight() {
+        return textH;
+    }
+
+    /** The height of a button or field. */
+    public static float frameHeight() {
+        return frameH;
+    }
+
+    static float textWidth(String s) {
+        return font.width(s);
+    }
+
+    // ---- Windows ----------------------------------------------------------------------------------
+
+    public static void setNextWindowPos(float x, float y, int cond) {
+        setNextWindowPos(x, y, cond, 0, 0);
+    }
+
+    /** Places the next window with its point (pivotX, pivotY), as fractions of its size, at (x, y). */
+    public static void setNextWindowPos(float x, float y, int cond, float pivotX, float pivotY) {
+        nextPos = new float[]{x, y, pivotX, pivotY};
+    }
+
+    public static void setNextWindowSize(float width, float height) {
+        nextSize = new float[]{width, height};
+    }
+
+    public static void setNextWindowSize(float width, float height, int cond) {
+        setNextWindowSize(width, height);
+    }
+
+    public static boolean begin(String name) {
+        return begin(name, GuiWindowFlags.None);
+    }
+
+    /** Opens a window; always pair with {@link #end()}. A zero width or height is the content's. */
+    public static boolean begin(String name, int flags) {
+        if (win != null) throw new IllegalStateException("window '" + name + "' inside '" + win.id + "'");
+        String title = displayLabel(name), id = windowId(name);
+        WindowMemory m = windows.computeIfAbsent(id, k -> new WindowMemory());
+        boolean titled = (flags & GuiWindowFlags.NoTitleBar) == 0 && !title.isEmpty();
+        float dw = layer.displayWidth(), dh = layer.displayHeight(), margin = 4 * scale;
+        float w = nextSize != null && nextSize[0] > 0 ? nextSize[0] : m.measured ? m.needW : 300 * scale;
+        float h = nextSize != null && nextSize[1] > 0 ? nextSize[1] : m.measured ? m.needH : 200 * scale;
+        float[] pos = nextPos != null ? nextPos : new float[]{40 * scale, 40 * scale, 0, 0};
+        nextPos = null;
+        nextSize = null;
+        // Too tall for the screen: as tall as fits, with a scrollbar.
+        float top = Math.max(0, pos[1] - h * pos[3]);
+        boolean scroll = h > dh - 2 * margin || (pos[3] == 0 && top + h > dh - margin);
+        if (scroll) h = pos[3] == 0 ? Math.max(frameH * 3, dh - top - margin) : dh - 2 * margin;
+        if (scroll) w += ctx.style().window().scrollbar_size().x();
+        float x = Math.round(pos[0] - w * pos[2]), y = Math.round(pos[1] - h * pos[3]);
+        x = Math.max(0, Math.min(x, dw - w));
+        y = Math.max(0, Math.min(y, dh - h));
+        int nk = NK_WINDOW_BORDER | (titled ? NK_WINDOW_TITLE : 0) | (scroll ? 0 : NK_WINDOW_NO_SCROLLBAR)
+                | ((flags & GuiWindowFlags.NoInputs) != 0 ? NK_WINDOW_NO_INPUT : 0);
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkRect r = NkRect.malloc(stack).set(x, y, w, h);
+            nk_window_set_bounds(ctx, id, r);
+            nk_begin_titled(ctx, id, title.isEmpty() ? " " : title, r, nk);
+        }
+        if ((flags & GuiWindowFlags.NoInputs) == 0) building.rects.add(new float[]{x, y, w, h});
+        win = new Win();
+        win.id = id;
+        win.memory = m;
+        win.x = x;
+        win.y = y;
+        win.w = w;
+        win.h = h;
+        win.contentW = titled ? font.width(title) + 2 * ctx.style().window().header().padding().x() : 0;
+        return true;
+    }
+
+    public static void end() {
+        requireWindow();
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkPanel p = nk_window_get_panel(ctx);
+            float bottom = p.at_y() + p.row().height();
+            float padY = ctx.style().window().padding().y(), spY = ctx.style().window().spacing().y();
+            win.memory.needH = (float) Math.ceil(bottom - win.y + Math.max(0, padY - spY) + p.footer_height() + p.border());
+            float chromeW = win.w - p.bounds().w();
+            win.memory.needW = (float) Math.ceil(win.contentW + chromeW);
+            win.memory.measured = true;
+        }
+        nk_end(ctx);
+        win = null;
+        ids.clear();
+    }
+
+    /** "Play##main" shows "Play"; "Card: A###card" shows "Card: A". */
+    static String displayLabel(String label) {
+        int i = label.indexOf("##");
+        return i < 0 ? label : label.substring(0, i);
+    }
+
+    private static String windowId(String name) {
+        int i = name.indexOf("###");
+        return i < 0 ? name : name.substring(i + 3);
+    }
+
+    public static void pushID(int id) {
+        ids.push(Integer.toString(id));
+    }
+
+    public static void pushID(String id) {
+        ids.push(id);
+    }
+
+    public static void popID() {
+        ids.pop();
+    }
+
+    static String idPath(String label) {
+        return win.id + "/" + String.join("/", ids) + "/" + label;
+    }
+
+    // ---- Layout -----------------------------------------------------------------------------------
+
+    /** The next widget goes on the same row as the last one. */
+    public static void sameLine() {
+        sameLine(0);
+    }
+
+    /** The same row, the next widget at {@code offsetFromStart} pixels from the content's left edge (0: right after). */
+    public static void sameLine(float offsetFromStart) {
+        requireWindow();
+        win.sameLine = true;
+        win.sameLineOffset = offsetFromStart;
+    }
+
+    /** Ends a row left open by {@link #sameLine()}, or leaves an empty line. */
+    public static void newLine() {
+        requireWindow();
+        if (win.sameLine) {
+            win.sameLine = false;
+            win.rowOpen = false;
+            return;
+        }
+        win.rowOpen = false;
+        nk_layout_row_dynamic(ctx, textH, 1);
+        nk_spacing(ctx, 1);
+    }
+
+    public static void separator() {
+        requireWindow();
+        win.rowOpen = false;
+        win.sameLine = false;
+        nk_layout_row_dynamic(ctx, Math.max(1, Math.round(2 * scale)), 1);
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkRect r = NkRect.malloc(stack);
+            if (nk_widget(r, ctx) != NK_WIDGET_INVALID) {
+                NkColor c = colour(stack, Theme.BORDER);
+                nk_fill_rect(nk_window_get_canvas(ctx), r.set(r.x(), r.y() + r.h() / 2 - scale / 2, r.w(), Math.max(1, scale)), 0, c);
+            }
+        }
+    }
+
+    public static void setNextItemWidth(float width) {
+        nextItemWidth = width;
+    }
+
+    /** The next text line is as tall as a button, its text centred like a button's. */
+    public static void alignTextToFramePadding() {
+        requireWindow();
+        win.frameText = true;
+    }
+
+    static float takeItemWidth() {
+        float w = nextItemWidth > 0 ? nextItemWidth : itemW;
+        nextItemWidth = -1;
+        return w;
+    }
+
+    /** Room for the next widget: a new row, or the rest of the row after sameLine, or a table cell. */
+    static void place(float w, float h) {
+        requireWindow();
+        lastDeactivatedAfterEdit = false;
+        if (win.cellPending) {
+            nk_layout_row_push(ctx, win.cellWidth);
+            win.cellPending = false;
+            recordItem();
+            return;
+        }
+        if (win.sameLine && win.rowOpen) {
+            float x = win.rowW + spacingX;
+            float gap = win.sameLineOffset - x - spacingX;
+            if (win.sameLineOffset > 0 && gap > 0) {
+                nk_layout_row_push(ctx, gap);
+                nk_spacing(ctx, 1);
+                x += gap + spacingX;
+            }
+            nk_layout_row_push(ctx, w);
+            win.rowW = x + w;
+        } else {
+            nk_layout_row_begin(ctx, NK_STATIC, h, MAX_COLUMNS);
+            nk_layout_row_push(ctx, w);
+            win.rowOpen = true;
+            win.rowW = w;
+        }
+        win.sameLine = false;
+        win.sameLineOffset = 0;
+        win.contentW = Math.max(win.contentW, win.rowW);
+        recordItem();
+    }
+
+    /** A whole-width row of its own (selectables, menu items), {@code w} wide in a window that takes its content's size. */
+    static void placeFullRow(float w, float h) {
+        requireWindow();
+        lastDeactivatedAfterEdit = false;
+        win.rowOpen = false;
+        win.sameLine = false;
+        nk_layout_row_dynamic(ctx, h, 1);
+        win.contentW = Math.max(win.contentW, w);
+        recordItem();
+    }
+
+    private static void recordItem() {
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkRect r = nk_widget_bounds(ctx, NkRect.malloc(stack));
+            lastItem[0] = r.x();
+            lastItem[1] = r.y();
+            lastItem[2] = r.w();
+            lastItem[3] = r.h();
+        }
+    }
+
+    static float[] lastItemRect() {
+        return lastItem;
+    }
+
+    static void setDeactivatedAfterEdit(boolean value) {
+        lastDeactivatedAfterEdit = value;
+    }
+
+    /** Whether the edit field just drawn lost the keyboard after its text was changed. */
+    public static boolean isItemDeactivatedAfterEdit() {
+        return lastDeactivatedAfterEdit;
+    }
+
+    public static boolean isItemHovered() {
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            return nk_input_is_mouse_hovering_rect(ctx.input(), NkRect.malloc(stack).set(lastItem[0], lastItem[1], lastItem[2], lastItem[3]));
+        }
+    }
+
+    public static void setTooltip(String text) {
+        nk_tooltip(ctx, text);
+    }
+
+    public static void beginDisabled() {
+        nk_widget_disable_begin(ctx);
+    }
+
+    public static void endDisabled() {
+        nk_widget_disable_end(ctx);
+    }
+
+    // ---- Text and buttons -------------------------------------------------------------------------
+
+    public static void text(String text) {
+        label(text, Theme.TEXT);
+    }
+
+    public static void textColored(float r, float g, float b, float a, String text) {
+        label(text, new int[]{Math.round(r * 255), Math.round(g * 255), Math.round(b * 255), Math.round(a * 255)});
+    }
+
+    public static void textDisabled(String text) {
+        label(text, Theme.DISABLED_TEXT);
+    }
+
+    /** Text broken into lines at spaces to the window's width. */
+    public static void textWrapped(String text) {
+        requireWindow();
+        float avail;
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            avail = nk_window_get_content_region(ctx, NkRect.malloc(stack)).w();
+        }
+        StringBuilder line = new StringBuilder();
+        for (String word : text.split(" ")) {
+            String candidate = line.length() == 0 ? word : line + " " + word;
+            if (line.length() > 0 && font.width(candidate) > avail - 4) {
+                wrappedLine(line.toString(), avail);
+                line.setLength(0);
+                line.append(word);
+            } else {
+                line.setLength(0);
+                line.append(candidate);
+            }
+        }
+        if (line.length() > 0) wrappedLine(line.toString(), avail);
+    }
+
+    private static void wrappedLine(String s, float avail) {
+        place(Math.min(avail, font.width(s) + 2), textH);
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            nk_label_colored(ctx, s, NK_TEXT_LEFT, colour(stack, Theme.TEXT));
+        }
+    }
+
+    private static void label(String text, int[] rgba) {
+        requireWindow();
+        float w = font.width(text) + 2;
+        place(w, win.frameText ? frameH : textH);
+        win.frameText = false;
+        if (win.table != null) win.measured[win.cellColumn] = Math.max(win.measured[win.cellColumn], w);
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            nk_label_colored(ctx, text, NK_TEXT_LEFT, colour(stack, rgba));
+        }
+    }
+
+    public static boolean button(String label) {
+        return button(label, 0, 0);
+    }
+
+    /** A button; a zero width or height fits the label. */
+    public static boolean button(String label, float width, float height) {
+        String shown = displayLabel(label);
+        float w = width > 0 ? width : buttonWidth(shown);
+        place(w, height > 0 ? height : frameH);
+        return nk_button_label(ctx, shown);
+    }
+
+    static float buttonWidth(String shown) {
+        var b = ctx.style().button();
+        return (float) Math.ceil(font.width(shown) + 2 * (b.padding().x() + b.border() + b.rounding()) + 4 * scale);
+    }
+
+    /** A button showing a texture (a course preview) at width x height. */
+    public static boolean imageButton(int texture, float width, float height) {
+        var b = ctx.style().button();
+        float pad = b.padding().x() + b.border() + b.image_padding().x();
+        place(width + 2 * pad, height + 2 * (b.padding().y() + b.border() + b.image_padding().y()));
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkImage image = nk_image_id(texture, NkImage.malloc(stack));
+            return nk_button_image(ctx, image);
+        }
+    }
+
+    public static boolean checkbox(String label, GuiBool value) {
+        String shown = displayLabel(label);
+        place(font.width(shown) + textH + 16 * scale + 4, frameH);
+        boolean now = nk_check_label(ctx, shown, value.get());
+        if (now == value.get()) return false;
+        value.set(now);
+        return true;
+    }
+
+    /** A round option; true when clicked. */
+    public static boolean radioButton(String label, boolean active) {
+        String shown = displayLabel(label);
+        place(font.width(shown) + textH + 16 * scale + 4, frameH);
+        return nk_option_label(ctx, shown, active) && !active;
+    }
+
+    /** A row that can be selected (lists); true when clicked. */
+    public static boolean selectable(String label, boolean selected) {
+        String shown = displayLabel(label);
+        placeFullRow(font.width(shown) + 16 * scale, textH + 4 * scale);
+        return nk_select_label(ctx, shown, NK_TEXT_LEFT, selected) != selected;
+    }
+
+    public static void progressBar(float fraction, float width, float height) {
+        progressBar(fraction, width, height, null);
+    }
+
+    /** A bar filled to {@code fraction}, with {@code overlay} (or the percentage) over it. */
+    public static void progressBar(float fraction, float width, float height, String overlay) {
+        float f = Math.max(0, Math.min(1, Float.isNaN(fraction) ? 0 : fraction));
+        place(width > 0 ? width : takeItemWidth(), height > 0 ? height : frameH);
+        nk_prog(ctx, Math.round(f * 1000), 1000, false);
+        String text = overlay != null ? overlay : Math.round(f * 100) + "%";
+        float tw = font.width(text);
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkRect r = NkRect.malloc(stack).set(lastItem[0] + (lastItem[2] - tw) / 2, lastItem[1] + (lastItem[3] - textH) / 2, tw + 2, textH);
+            nk_draw_text(nk_window_get_canvas(ctx), r, text, font.userFont(), NkColor.calloc(stack), colour(stack, Theme.TEXT));
+        }
+    }
+
+    // ---- Menus ------------------------------------------------------------------------------------
+
+    /** A bar across the top of the screen for {@link #beginMenu}; pair with {@link #endMainMenuBar()}. */
+    public static boolean beginMainMenuBar() {
+        float padY = 4 * scale;
+        var style = ctx.style().window();
+        setNextWindowPos(0, 0, GuiCond.Always);
+        setNextWindowSize(layer.displayWidth(), frameH + 2 * padY + 2);
+        float keptX = style.padding().x(), keptY = style.padding().y();
+        style.padding().set(6 * scale, padY);
+        begin("##mainmenubar", GuiWindowFlags.NoDecoration);
+        style.padding().set(keptX, keptY);
+        nk_menubar_begin(ctx);
+        nk_layout_row_begin(ctx, NK_STATIC, frameH, MAX_COLUMNS);
+        win.inMenuBar = true;
+        return true;
+    }
+
+    public static void endMainMenuBar() {
+        nk_menubar_end(ctx);
+        end();
+    }
+
+    /**
+     * A menu: in the main menu bar a title that drops down, elsewhere a drop-down box with the label.
+     * When it is open, add {@link #menuItem}s and call {@link #endMenu()}.
+     */
+    public static boolean beginMenu(String label) {
+        requireWindow();
+        String shown = displayLabel(label), key = idPath(label);
+        float[] size = menuSizes.getOrDefault(key, new float[]{200 * scale, 8});
+        var pad = ctx.style().window().menu_padding();
+        float spY = ctx.style().window().spacing().y();
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkVec2 popup = NkVec2.malloc(stack).set(size[0] + 2 * pad.x(), size[1] * (frameH + spY) + 2 * pad.y() + spY);
+            boolean open;
+            if (win.inMenuBar) {
+                nk_layout_row_push(ctx, font.width(shown) + 2 * ctx.style().menu_button().padding().x() + 8 * scale);
+                open = nk_menu_begin_label(ctx, shown, NK_TEXT_CENTERED, popup);
+            } else {
+                float w = Math.max(takeItemWidth(), font.width(shown) + frameH + 24 * scale);
+                place(w, frameH);
+                open = nk_combo_begin_label(ctx, shown, popup.x(Math.max(popup.x(), w)));
+            }
+            if (!open) return false;
+            recordPopup(stack);
+            menus.push(new Menu(!win.inMenuBar, key));
+            menuSizes.put(key, new float[]{0, 0});
+            return true;
+        }
+    }
+
+    private static void recordPopup(MemoryStack stack) {
+        NkRect r = nk_window_get_bounds(ctx, NkRect.malloc(stack));
+        building.rects.add(new float[]{r.x(), r.y(), r.w(), r.h()});
+    }
+
+    public static void endMenu() {
+        Menu m = menus.pop();
+        if (m.combo) nk_combo_end(ctx);
+        else nk_menu_end(ctx);
+    }
+
+    public static boolean menuItem(String label) {
+        return menuItem(label, "", false, true);
+    }
+
+    public static boolean menuItem(String label, String shortcut) {
+        return menuItem(label, shortcut, false, true);
+    }
+
+    /** An entry of the open menu: the shortcut on the right, a mark when selected, grey when not enabled. */
+    public static boolean menuItem(String label, String shortcut, boolean selected, boolean enabled) {
+        Menu m = menus.peek();
+        if (m == null) throw new IllegalStateException("menuItem outside beginMenu");
+        String shown = displayLabel(label), keys = shortcut == null ? "" : shortcut;
+        float[] size = menuSizes.get(m.key);
+        size[0] = Math.max(size[0], font.width(shown) + font.width(keys) + 48 * scale);
+        size[1]++;
+        nk_layout_row_dynamic(ctx, frameH, 1);
+        recordItem();
+        boolean hit;
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            if (!enabled) {
+                nk_label_colored(ctx, "  " + shown, NK_TEXT_LEFT, colour(stack, Theme.DISABLED_TEXT));
+                hit = false;
+            } else {
+                hit = m.combo ? nk_combo_item_label(ctx, shown, NK_TEXT_LEFT) : nk_menu_item_label(ctx, shown, NK_TEXT_LEFT);
+            }
+            var canvas = nk_window_get_canvas(ctx);
+            float right = lastItem[0] + lastItem[2] - 6 * scale;
+            if (!keys.isEmpty()) {
+                float kw = font.width(keys);
+                right -= kw;
+                nk_draw_text(canvas, NkRect.malloc(stack).set(right, lastItem[1] + (lastItem[3] - textH) / 2, kw + 2, textH),
+                        keys, font.userFont(), NkColor.calloc(stack), colour(stack, Theme.DISABLED_TEXT));
+                right -= 10 * scale;
+            }
+            if (selected) {
+                float s = textH * 0.5f;
+                nk_fill_rect(canvas, NkRect.malloc(stack).set(right - s, lastItem[1] + (lastItem[3] - s) / 2, s, s), 2,
+                        colour(stack, Theme.ACCENT));
+            }
+        }
+        return hit;
+    }
+
+    // ---- Tables -----------------------------------------------------------------------------------
+
+    /** A table whose columns fit their widest cell (measured the frame before). */
+    public static boolean beginTable(String id, int columns, int flags) {
+        requireWindow();
+        win.table = idPath(id);
+        win.tableFlags = flags;
+        win.tableRow = 0;
+        float[] known = tableWidths.get(win.table);
+        win.widths = known != null && known.length == columns ? known : filled(columns, 60 * scale);
+        win.measured = new float[columns];
+        win.headers = new ArrayList<>();
+        win.rowOpen = false;
+        return true;
+    }
+
+    private static float[] filled(int n, float v) {
+        float[] a = new float[n];
+        java.util.Arrays.fill(a, v);
+        return a;
+    }
+
+    public static void tableSetupColumn(String label) {
+        win.headers.add(displayLabel(label));
+    }
+
+    public static void tableHeadersRow() {
+        tableNextRow();
+        for (int i = 0; i < win.headers.size() && i < win.widths.length; i++) {
+            tableSetColumnIndex(i);
+            label(win.headers.get(i), Theme.ACCENT);
+        }
+        win.tableRow = 0; // bands count from the first row under the header
+    }
+
+    public static void tableNextRow() {
+        requireWindow();
+        nk_layout_row_begin(ctx, NK_STATIC, textH + 2 * scale, MAX_COLUMNS);
+        win.rowOpen = true;
+        win.sameLine = false;
+        win.nextColumn = 0;
+        win.tableRow++;
+        float rowW = 0;
+        for (float w : win.widths) rowW += w;
+        rowW += spacingX * (win.widths.length - 1);
+        win.rowW = rowW;
+        win.contentW = Math.max(win.contentW, rowW);
+    }
+
+    public static void tableSetColumnIndex(int column) {
+        requireWindow();
+        if (column < win.nextColumn || column >= win.widths.length) return;
+        while (win.nextColumn < column) {
+            nk_layout_row_push(ctx, win.widths[win.nextColumn++]);
+            nk_spacing(ctx, 1);
+        }
+        win.cellPending = true;
+        win.cellWidth = win.widths[column];
+        win.cellColumn = column;
+        win.nextColumn = column + 1;
+        if (column == 0 && (win.tableFlags & GuiTableFlags.RowBg) != 0 && win.tableRow % 2 == 0) {
+            nk_layout_row_push(ctx, win.cellWidth);
+            try (MemoryStack stack = MemoryStack.stackPush()) {
+                NkRect r = nk_widget_bounds(ctx, NkRect.malloc(stack));
+                nk_fill_rect(nk_window_get_canvas(ctx), r.set(r.x() - 3 * scale, r.y(), win.rowW + 6 * scale, r.h()), 3 * scale,
+                        colour(stack, new int[]{255, 255, 255, 14}));
+            }
+        }
+    }
+
+    public static void endTable() {
+        requireWindow();
+        float[] w = new float[win.measured.length];
+        for (int i = 0; i < w.length; i++) w[i] = Math.max(8 * scale, win.measured[i] + 6 * scale);
+        tableWidths.put(win.table, w);
+        win.table = null;
+        win.cellPending = false;
+        win.rowOpen = false;
+    }
+
+    // ---- Fields (GuiFields) -----------------------------------------------------------------------
+
+    public static boolean inputText(String label, GuiString value) {
+        return GuiFields.inputText(label, value);
+    }
+
+    public static boolean inputDouble(String label, GuiDouble value) {
+        return GuiFields.inputDouble(label, value, 0, 0, null);
+    }
+
+    public static boolean inputDouble(String label, GuiDouble value, double step, double stepFast) {
+        return GuiFields.inputDouble(label, value, step, stepFast, null);
+    }
+
+    public static boolean inputDouble(String label, GuiDouble value, double step, double stepFast, String format) {
+        return GuiFields.inputDouble(label, value, step, stepFast, format);
+    }
+
+    public static boolean inputInt(String label, GuiInt value) {
+        return GuiFields.inputInt(label, value);
+    }
+
+    public static boolean sliderFloat(String label, float[] value, float min, float max) {
+        return GuiFields.sliderFloat(label, value, min, max, "%.2f");
+    }
+
+    public static boolean sliderFloat(String label, float[] value, float min, float max, String format) {
+        return GuiFields.sliderFloat(label, value, min, max, format);
+    }
+
+    public static boolean sliderInt(String label, int[] value, int min, int max) {
+        return GuiFields.sliderInt(label, value, min, max);
+    }
+
+    public static boolean combo(String label, GuiInt selected, String[] items) {
+        return GuiFields.combo(label, selected, items);
+    }
+
+    // ---- Drawing ----------------------------------------------------------------------------------
+
+    /** Shapes behind every window, in window coordinates (this frame only). */
+    public static GuiDrawList getBackgroundDrawList() {
+        return background;
+    }
+
+    static NkColor colour(MemoryStack stack, int[] rgba) {
+        return NkColor.malloc(stack).set((byte) rgba[0], (byte) rgba[1], (byte) rgba[2], (byte) rgba[3]);
+    }
+
+    /** Draws a label with the text colour to the right of the last widget, on its row. */
+    static void trailingLabel(String label) {
+        String shown = displayLabel(label);
+        if (shown.isEmpty()) return;
+        sameLine();
+        boolean keep = lastDeactivatedAfterEdit;
+        float[] item = lastItem.clone(); // the widget stays the last item (isItemHovered, tests)
+        float w = font.width(shown) + 2;
+        place(w, frameH);
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            nk_label_colored(ctx, shown, NK_TEXT_LEFT, colour(stack, Theme.TEXT));
+        }
+        lastDeactivatedAfterEdit = keep;
+        System.arraycopy(item, 0, lastItem, 0, 4);
+    }
+}
