@@ -370,6 +370,16 @@ public final class Gui {
         }
     }
 
+    /** The width of the last widget. */
+    public static float getItemRectSizeX() {
+        return lastItem[2];
+    }
+
+    /** The horizontal gap between widgets on a row. */
+    public static float itemSpacingX() {
+        return spacingX;
+    }
+
     static float[] lastItemRect() {
         return lastItem;
     }

@@ -34,9 +34,9 @@ public final class Theme {
             set(table, NK_COLOR_BUTTON, BUTTON);
             set(table, NK_COLOR_BUTTON_HOVER, BUTTON_HOVER);
             set(table, NK_COLOR_BUTTON_ACTIVE, BUTTON_ACTIVE);
-            set(table, NK_COLOR_TOGGLE, FIELD);
-            set(table, NK_COLOR_TOGGLE_HOVER, new int[]{50, 78, 57, 255});
-            set(table, NK_COLOR_TOGGLE_CURSOR, BUTTON_ACTIVE);
+            set(table, NK_COLOR_TOGGLE, new int[]{75, 110, 85, 255}); // the box shows on the dark window
+            set(table, NK_COLOR_TOGGLE_HOVER, new int[]{95, 135, 105, 255});
+            set(table, NK_COLOR_TOGGLE_CURSOR, ACCENT);
             set(table, NK_COLOR_SELECT, FIELD);
             set(table, NK_COLOR_SELECT_ACTIVE, BUTTON);
             set(table, NK_COLOR_SLIDER, FIELD);
@@ -90,12 +90,5 @@ public final class Theme {
 
     private static void set(NkColor.Buffer table, int index, int[] rgba) {
         table.get(index).set((byte) rgba[0], (byte) rgba[1], (byte) rgba[2], (byte) rgba[3]);
-    }
-
-    /** The ImGui look, until the last ImGui screen is ported. */
-    static void apply(float scale) {
-        imgui.ImGui.styleColorsDark();
-        imgui.ImGuiStyle s = imgui.ImGui.getStyle();
-        s.scaleAllSizes(scale);
     }
 }

@@ -28,15 +28,4 @@ public final class UiFont {
             throw new IllegalStateException("font " + RESOURCE + " could not be read: " + e.getMessage(), e);
         }
     }
-
-    /** Adds the font to an ImGui atlas (until the last ImGui screen is ported). */
-    public static imgui.ImFont addTo(imgui.ImFontAtlas atlas, float pixels) {
-        imgui.ImFontConfig config = new imgui.ImFontConfig();
-        try {
-            config.setName("DejaVu Sans");
-            return atlas.addFontFromMemoryTTF(bytes(), Math.round(pixels), config);
-        } finally {
-            config.destroy();
-        }
-    }
 }
