@@ -945,6 +945,11 @@ public final class GameApp implements UiActions, UiView {
         return screens.screen();
     }
 
+    /** Opens a screen as its button would (for tests and screenshots; call on the render thread, e.g. from a loop hook). */
+    public void showScreen(Screen s) {
+        screens.open(s, this);
+    }
+
     @Override
     public BallReadout readout() {
         if (game == null || game.currentPlayer() < 0) return null;

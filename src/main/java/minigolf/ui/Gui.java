@@ -88,7 +88,7 @@ public final class Gui {
         font = l.font();
         scale = l.scale();
         textH = font.height();
-        frameH = Math.round(font.height() + 8 * scale);
+        frameH = Math.round(font.height() + 6 * scale);
         spacingX = ctx.style().window().spacing().x();
         itemW = Math.round(10 * font.height());
         building = new FrameResult();
@@ -475,6 +475,24 @@ public final class Gui {
         float w = width > 0 ? width : buttonWidth(shown);
         place(w, height > 0 ? height : frameH);
         return nk_button_label(ctx, shown);
+    }
+
+    /** A square button with a minus or plus sign (the step buttons of number fields). */
+    static boolean stepButton(boolean plus) {
+        place(frameH, frameH);
+        pushID(plus ? "+" : "-");
+        boolean hit = nk_button_label(ctx, "");
+        popID();
+        // The sign drawn over the button: Nuklear's symbols shrink to nothing in a small button.
+        float cx = lastItem[0] + lastItem[2] / 2, cy = lastItem[1] + lastItem[3] / 2, half = Math.round(textH * 0.3f);
+        float t = Math.max(1, Math.round(1.5f * scale));
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            var canvas = nk_window_get_canvas(ctx);
+            NkColor c = colour(stack, Theme.TEXT);
+            nk_fill_rect(canvas, NkRect.malloc(stack).set(cx - half, cy - t / 2, 2 * half, t), 0, c);
+            if (plus) nk_fill_rect(canvas, NkRect.malloc(stack).set(cx - t / 2, cy - half, t, 2 * half), 0, c);
+        }
+        return hit;
     }
 
     static float buttonWidth(String shown) {

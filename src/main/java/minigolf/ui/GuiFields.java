@@ -123,18 +123,16 @@ final class GuiFields {
             }
         }
         if (steps) {
-            Gui.pushID(label);
             Gui.sameLine();
-            if (Gui.button("-", small, 0)) {
+            if (Gui.stepButton(false)) {
                 value.set(value.get() - step);
                 changed = true;
             }
             Gui.sameLine();
-            if (Gui.button("+", small, 0)) {
+            if (Gui.stepButton(true)) {
                 value.set(value.get() + step);
                 changed = true;
             }
-            Gui.popID();
         }
         Gui.trailingLabel(label);
         Gui.setDeactivatedAfterEdit(deactivated);
@@ -158,12 +156,12 @@ final class GuiFields {
             }
         }
         Gui.sameLine();
-        if (Gui.button("-##" + label, small, 0)) {
+        if (Gui.stepButton(false)) {
             value.set(value.get() - 1);
             changed = true;
         }
         Gui.sameLine();
-        if (Gui.button("+##" + label, small, 0)) {
+        if (Gui.stepButton(true)) {
             value.set(value.get() + 1);
             changed = true;
         }

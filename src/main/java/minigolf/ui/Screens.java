@@ -236,6 +236,13 @@ public final class Screens {
         Gui.end();
     }
 
+    /** Opens a screen as its button does: the settings form filled from the view, help remembering where it was opened. */
+    public void open(Screen s, UiView view) {
+        if (s == Screen.SETTINGS) openSettings(view, screen);
+        else if (s == Screen.HELP) openHelp();
+        else show(s);
+    }
+
     private void openSettings(UiView view, Screen returnTo) {
         UserSettings s = view.settings();
         integrator.set(s.integrator().ordinal());
@@ -265,14 +272,16 @@ public final class Screens {
         Gui.text("Yours (kept in your config folder)");
         Gui.combo("Integrator", integrator, INTEGRATORS);
         Gui.inputInt("Physics steps per second", stepsPerSecond);
-        Gui.checkbox("Vsync", vsync);
         Gui.inputInt("Frame limit (0 = none)", frameLimit);
+        Gui.sameLine(); // pairs on a row: the form fits a 720-pixel-high window
+        Gui.checkbox("Vsync", vsync);
         Gui.inputInt("Stroke limit", strokeLimit);
         Gui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
         Gui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
         Gui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
         Gui.checkbox("Aim guide (off: pro)", aimGuide);
         if (Gui.isItemHovered()) Gui.setTooltip("While aiming, dots show where the ball goes in its first second");
+        Gui.sameLine();
         Gui.checkbox("Smooth edges (FXAA)", antiAliasing);
         if (Gui.isItemHovered()) Gui.setTooltip("Anti-aliasing where there is no MSAA; costs about 8 ms a frame with software rendering");
         Gui.sliderFloat("Volume", masterVolume, 0f, 1f);
@@ -282,7 +291,12 @@ public final class Screens {
         Gui.text("This course (" + view.world().course().name() + "): applies to the next game");
         String[] labels = {"Gravity (m/s^2)", "Kinetic friction", "Static friction", "Max speed (m/s)", "Start x",
                 "Start y", "Hole x", "Hole y", "Hole radius"};
-        for (int i = 0; i < labels.length; i++) Gui.inputDouble(labels[i], course[i], 0, 0, "%.4f");
+        for (int i = 0; i < labels.length; i++) {
+            boolean pair = i >= 4 && i <= 7; // start x and y, hole x and y side by side
+            if (pair) Gui.setNextItemWidth(100);
+            if (pair && i % 2 == 1) Gui.sameLine();
+            Gui.inputDouble(labels[i], course[i], 0, 0, "%.4f");
+        }
         if (formError != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, formError);
         if (Gui.button("Apply")) {
             try {

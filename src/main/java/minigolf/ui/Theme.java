@@ -59,7 +59,7 @@ public final class Theme {
         }
         NkStyle s = ctx.style();
         s.window().padding().set(14 * scale, 12 * scale);
-        s.window().spacing().set(10 * scale, 8 * scale);
+        s.window().spacing().set(10 * scale, 6 * scale); // the settings form fits a 720-pixel-high window
         s.window().rounding(8 * scale);
         s.window().border(1);
         s.window().header().padding().set(10 * scale, 4 * scale);

@@ -597,7 +597,8 @@ public final class EditorApp {
         if (Gui.radioButton("Terrain tool", tool.mode() == ToolController.Mode.TERRAIN)) tool.setMode(ToolController.Mode.TERRAIN);
         Gui.sameLine();
         if (Gui.radioButton("Object tool", tool.mode() == ToolController.Mode.OBJECT)) tool.setMode(ToolController.Mode.OBJECT);
-        Gui.textDisabled("SHIFT switches, WASD moves, ENTER applies");
+        Gui.textDisabled("SHIFT switches, WASD moves,");
+        Gui.textDisabled("ENTER applies");
         Gui.separator();
         if (tool.mode() == ToolController.Mode.TERRAIN) {
             ToolController.TerrainAction[] all = ToolController.TerrainAction.values();
@@ -625,7 +626,8 @@ public final class EditorApp {
                 Gui.sameLine();
             }
             Gui.newLine();
-            Gui.textDisabled("M wall, B tree, ENTER places, P deletes, Q/E turn");
+            Gui.textDisabled("M wall, B tree, ENTER places,");
+            Gui.textDisabled("P deletes, Q/E turn");
             newObjectSettings();
         }
         Gui.separator();
