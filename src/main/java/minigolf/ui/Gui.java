@@ -25,7 +25,7 @@ import static org.lwjgl.nuklear.Nuklear.*;
  * "Text###id" also names the window "id". Edit fields, sliders and combos show their label on the right.
  */
 public final class Gui {
-    private static final int MAX_COLUMNS = 64;
+    static final int MAX_COLUMNS = 64;
 
     /** What a frame leaves for input between frames: where the interface is, whether a field is edited. */
     static final class FrameResult {
@@ -33,13 +33,13 @@ public final class Gui {
         boolean textFieldActive;
     }
 
-    private static final class WindowMemory {
+    static final class WindowMemory {
         float needW, needH;
         boolean measured;
     }
 
     /** The window being built. */
-    private static final class Win {
+    static final class Win {
         String id;
         WindowMemory memory;
         float x, y, w, h;
@@ -55,26 +55,26 @@ public final class Gui {
         int cellColumn;
     }
 
-    private record Menu(boolean combo, String key) {
+    record Menu(boolean combo, String key) {
     }
 
     static NuklearLayer layer;
     static NkContext ctx;
     static FontAtlas font;
-    private static float scale = 1, textH, frameH, spacingX, itemW;
-    private static Win win;
-    private static float[] nextPos, nextSize;
-    private static float nextItemWidth = -1;
-    private static final float[] lastItem = new float[4];
-    private static boolean lastDeactivatedAfterEdit;
-    private static final Deque<String> ids = new ArrayDeque<>();
-    private static final Deque<Menu> menus = new ArrayDeque<>();
-    private static final Map<String, WindowMemory> windows = new HashMap<>();
-    private static final Map<String, float[]> tableWidths = new HashMap<>();
-    private static final Map<String, float[]> menuSizes = new HashMap<>();
-    private static final GuiDrawList background = new GuiDrawList();
-    private static FrameResult building = new FrameResult();
-    private static long frame;
+    static float scale = 1, textH, frameH, spacingX, itemW;
+    static Win win;
+    static float[] nextPos, nextSize, nextConstraints;
+    static float nextItemWidth = -1;
+    static final float[] lastItem = new float[4];
+    static boolean lastDeactivatedAfterEdit;
+    static final Deque<String> ids = new ArrayDeque<>();
+    static final Deque<Menu> menus = new ArrayDeque<>();
+    static final Map<String, WindowMemory> windows = new HashMap<>();
+    static final Map<String, float[]> tableWidths = new HashMap<>();
+    static final Map<String, float[]> menuSizes = new HashMap<>();
+    static final GuiDrawList background = new GuiDrawList();
+    static FrameResult building = new FrameResult();
+    static long frame;
 
     private Gui() {
     }
@@ -129,7 +129,7 @@ public final class Gui {
         return building;
     }
 
-    private static void requireWindow() {
+    static void requireWindow() {
         if (win == null) throw new IllegalStateException("a widget outside Gui.begin/end");
     }
 
@@ -170,6 +170,11 @@ public final class Gui {
         nextSize = new float[]{width, height};
     }
 
+    /** Bounds for the next window's size (a content-sized window scrolls beyond the maximum). */
+    public static void setNextWindowSizeConstraints(float minWidth, float minHeight, float maxWidth, float maxHeight) {
+        nextConstraints = new float[]{minWidth, minHeight, maxWidth, maxHeight};
+    }
+
     public static void setNextWindowSize(float width, float height, int cond) {
         setNextWindowSize(width, height);
     }
@@ -188,12 +193,19 @@ public final class Gui {
         float w = nextSize != null && nextSize[0] > 0 ? nextSize[0] : m.measured ? m.needW : 300 * scale;
         float h = nextSize != null && nextSize[1] > 0 ? nextSize[1] : m.measured ? m.needH : 200 * scale;
         float[] pos = nextPos != null ? nextPos : new float[]{40 * scale, 40 * scale, 0, 0};
+        float maxH = dh - 2 * margin;
+        if (nextConstraints != null) {
+            w = Math.max(nextConstraints[0], Math.min(w, nextConstraints[2]));
+            h = Math.max(nextConstraints[1], h);
+            maxH = Math.min(maxH, nextConstraints[3]);
+        }
         nextPos = null;
         nextSize = null;
+        nextConstraints = null;
         // Too tall for the screen: as tall as fits, with a scrollbar.
         float top = Math.max(0, pos[1] - h * pos[3]);
-        boolean scroll = h > dh - 2 * margin || (pos[3] == 0 && top + h > dh - margin);
-        if (scroll) h = pos[3] == 0 ? Math.max(frameH * 3, dh - top - margin) : dh - 2 * margin;
+        boolean scroll = h > maxH || (pos[3] == 0 && top + h > dh - margin);
+        if (scroll) h = Math.min(maxH, pos[3] == 0 ? Math.max(frameH * 3, dh - top - margin) : maxH);
         if (scroll) w += ctx.style().window().scrollbar_size().x();
         float x = Math.round(pos[0] - w * pos[2]), y = Math.round(pos[1] - h * pos[3]);
         x = Math.max(0, Math.min(x, dw - w));
@@ -239,7 +251,7 @@ public final class Gui {
         return i < 0 ? label : label.substring(0, i);
     }
 
-    private static String windowId(String name) {
+    static String windowId(String name) {
         int i = name.indexOf("###");
         return i < 0 ? name : name.substring(i + 3);
     }
@@ -360,7 +372,7 @@ public final class Gui {
         recordItem();
     }
 
-    private static void recordItem() {
+    static void recordItem() {
         try (MemoryStack stack = MemoryStack.stackPush()) {
             NkRect r = nk_widget_bounds(ctx, NkRect.malloc(stack));
             lastItem[0] = r.x();
@@ -447,14 +459,14 @@ public final class Gui {
         if (line.length() > 0) wrappedLine(line.toString(), avail);
     }
 
-    private static void wrappedLine(String s, float avail) {
+    static void wrappedLine(String s, float avail) {
         place(Math.min(avail, font.width(s) + 2), textH);
         try (MemoryStack stack = MemoryStack.stackPush()) {
             nk_label_colored(ctx, s, NK_TEXT_LEFT, colour(stack, Theme.TEXT));
         }
     }
 
-    private static void label(String text, int[] rgba) {
+    static void label(String text, int[] rgba) {
         requireWindow();
         float w = font.width(text) + 2;
         place(w, win.frameText ? frameH : textH);
@@ -551,27 +563,15 @@ public final class Gui {
         }
     }
 
-    // ---- Menus ------------------------------------------------------------------------------------
+    // ---- Menus (GuiMenus) and tables (GuiTables) ----------------------------------------------
 
     /** A bar across the top of the screen for {@link #beginMenu}; pair with {@link #endMainMenuBar()}. */
     public static boolean beginMainMenuBar() {
-        float padY = 4 * scale;
-        var style = ctx.style().window();
-        setNextWindowPos(0, 0, GuiCond.Always);
-        setNextWindowSize(layer.displayWidth(), frameH + 2 * padY + 2);
-        float keptX = style.padding().x(), keptY = style.padding().y();
-        style.padding().set(6 * scale, padY);
-        begin("##mainmenubar", GuiWindowFlags.NoDecoration);
-        style.padding().set(keptX, keptY);
-        nk_menubar_begin(ctx);
-        nk_layout_row_begin(ctx, NK_STATIC, frameH, MAX_COLUMNS);
-        win.inMenuBar = true;
-        return true;
+        return GuiMenus.beginMainMenuBar();
     }
 
     public static void endMainMenuBar() {
-        nk_menubar_end(ctx);
-        end();
+        GuiMenus.endMainMenuBar();
     }
 
     /**
@@ -579,163 +579,49 @@ public final class Gui {
      * When it is open, add {@link #menuItem}s and call {@link #endMenu()}.
      */
     public static boolean beginMenu(String label) {
-        requireWindow();
-        String shown = displayLabel(label), key = idPath(label);
-        float[] size = menuSizes.getOrDefault(key, new float[]{200 * scale, 8});
-        var pad = ctx.style().window().menu_padding();
-        float spY = ctx.style().window().spacing().y();
-        try (MemoryStack stack = MemoryStack.stackPush()) {
-            NkVec2 popup = NkVec2.malloc(stack).set(size[0] + 2 * pad.x(), size[1] * (frameH + spY) + 2 * pad.y() + spY);
-            boolean open;
-            if (win.inMenuBar) {
-                nk_layout_row_push(ctx, font.width(shown) + 2 * ctx.style().menu_button().padding().x() + 8 * scale);
-                open = nk_menu_begin_label(ctx, shown, NK_TEXT_CENTERED, popup);
-            } else {
-                float w = Math.max(takeItemWidth(), font.width(shown) + frameH + 24 * scale);
-                place(w, frameH);
-                open = nk_combo_begin_label(ctx, shown, popup.x(Math.max(popup.x(), w)));
-            }
-            if (!open) return false;
-            recordPopup(stack);
-            menus.push(new Menu(!win.inMenuBar, key));
-            menuSizes.put(key, new float[]{0, 0});
-            return true;
-        }
-    }
-
-    private static void recordPopup(MemoryStack stack) {
-        NkRect r = nk_window_get_bounds(ctx, NkRect.malloc(stack));
-        building.rects.add(new float[]{r.x(), r.y(), r.w(), r.h()});
+        return GuiMenus.beginMenu(label);
     }
 
     public static void endMenu() {
-        Menu m = menus.pop();
-        if (m.combo) nk_combo_end(ctx);
-        else nk_menu_end(ctx);
+        GuiMenus.endMenu();
     }
 
     public static boolean menuItem(String label) {
-        return menuItem(label, "", false, true);
+        return GuiMenus.menuItem(label);
     }
 
     public static boolean menuItem(String label, String shortcut) {
-        return menuItem(label, shortcut, false, true);
+        return GuiMenus.menuItem(label, shortcut);
     }
 
     /** An entry of the open menu: the shortcut on the right, a mark when selected, grey when not enabled. */
     public static boolean menuItem(String label, String shortcut, boolean selected, boolean enabled) {
-        Menu m = menus.peek();
-        if (m == null) throw new IllegalStateException("menuItem outside beginMenu");
-        String shown = displayLabel(label), keys = shortcut == null ? "" : shortcut;
-        float[] size = menuSizes.get(m.key);
-        size[0] = Math.max(size[0], font.width(shown) + font.width(keys) + 48 * scale);
-        size[1]++;
-        nk_layout_row_dynamic(ctx, frameH, 1);
-        recordItem();
-        boolean hit;
-        try (MemoryStack stack = MemoryStack.stackPush()) {
-            if (!enabled) {
-                nk_label_colored(ctx, "  " + shown, NK_TEXT_LEFT, colour(stack, Theme.DISABLED_TEXT));
-                hit = false;
-            } else {
-                hit = m.combo ? nk_combo_item_label(ctx, shown, NK_TEXT_LEFT) : nk_menu_item_label(ctx, shown, NK_TEXT_LEFT);
-            }
-            var canvas = nk_window_get_canvas(ctx);
-            float right = lastItem[0] + lastItem[2] - 6 * scale;
-            if (!keys.isEmpty()) {
-                float kw = font.width(keys);
-                right -= kw;
-                nk_draw_text(canvas, NkRect.malloc(stack).set(right, lastItem[1] + (lastItem[3] - textH) / 2, kw + 2, textH),
-                        keys, font.userFont(), NkColor.calloc(stack), colour(stack, Theme.DISABLED_TEXT));
-                right -= 10 * scale;
-            }
-            if (selected) {
-                float s = textH * 0.5f;
-                nk_fill_rect(canvas, NkRect.malloc(stack).set(right - s, lastItem[1] + (lastItem[3] - s) / 2, s, s), 2,
-                        colour(stack, Theme.ACCENT));
-            }
-        }
-        return hit;
+        return GuiMenus.menuItem(label, shortcut, selected, enabled);
     }
-
-    // ---- Tables -----------------------------------------------------------------------------------
 
     /** A table whose columns fit their widest cell (measured the frame before). */
     public static boolean beginTable(String id, int columns, int flags) {
-        requireWindow();
-        win.table = idPath(id);
-        win.tableFlags = flags;
-        win.tableRow = 0;
-        float[] known = tableWidths.get(win.table);
-        win.widths = known != null && known.length == columns ? known : filled(columns, 60 * scale);
-        win.measured = new float[columns];
-        win.headers = new ArrayList<>();
-        win.rowOpen = false;
-        return true;
-    }
-
-    private static float[] filled(int n, float v) {
-        float[] a = new float[n];
-        java.util.Arrays.fill(a, v);
-        return a;
+        return GuiTables.beginTable(id, columns, flags);
     }
 
     public static void tableSetupColumn(String label) {
-        win.headers.add(displayLabel(label));
+        GuiTables.tableSetupColumn(label);
     }
 
     public static void tableHeadersRow() {
-        tableNextRow();
-        for (int i = 0; i < win.headers.size() && i < win.widths.length; i++) {
-            tableSetColumnIndex(i);
-            label(win.headers.get(i), Theme.ACCENT);
-        }
-        win.tableRow = 0; // bands count from the first row under the header
+        GuiTables.tableHeadersRow();
     }
 
     public static void tableNextRow() {
-        requireWindow();
-        nk_layout_row_begin(ctx, NK_STATIC, textH + 2 * scale, MAX_COLUMNS);
-        win.rowOpen = true;
-        win.sameLine = false;
-        win.nextColumn = 0;
-        win.tableRow++;
-        float rowW = 0;
-        for (float w : win.widths) rowW += w;
-        rowW += spacingX * (win.widths.length - 1);
-        win.rowW = rowW;
-        win.contentW = Math.max(win.contentW, rowW);
+        GuiTables.tableNextRow();
     }
 
     public static void tableSetColumnIndex(int column) {
-        requireWindow();
-        if (column < win.nextColumn || column >= win.widths.length) return;
-        while (win.nextColumn < column) {
-            nk_layout_row_push(ctx, win.widths[win.nextColumn++]);
-            nk_spacing(ctx, 1);
-        }
-        win.cellPending = true;
-        win.cellWidth = win.widths[column];
-        win.cellColumn = column;
-        win.nextColumn = column + 1;
-        if (column == 0 && (win.tableFlags & GuiTableFlags.RowBg) != 0 && win.tableRow % 2 == 0) {
-            nk_layout_row_push(ctx, win.cellWidth);
-            try (MemoryStack stack = MemoryStack.stackPush()) {
-                NkRect r = nk_widget_bounds(ctx, NkRect.malloc(stack));
-                nk_fill_rect(nk_window_get_canvas(ctx), r.set(r.x() - 3 * scale, r.y(), win.rowW + 6 * scale, r.h()), 3 * scale,
-                        colour(stack, new int[]{255, 255, 255, 14}));
-            }
-        }
+        GuiTables.tableSetColumnIndex(column);
     }
 
     public static void endTable() {
-        requireWindow();
-        float[] w = new float[win.measured.length];
-        for (int i = 0; i < w.length; i++) w[i] = Math.max(8 * scale, win.measured[i] + 6 * scale);
-        tableWidths.put(win.table, w);
-        win.table = null;
-        win.cellPending = false;
-        win.rowOpen = false;
+        GuiTables.endTable();
     }
 
     // ---- Fields (GuiFields) -----------------------------------------------------------------------

@@ -179,4 +179,34 @@ class NuklearLayerTest {
         assertFalse(layer.wantsKeyboard());
         assertEquals(1.5, speed.get());
     }
+
+    @Test
+    void backgroundLinesGoBehindWindowsAndAWindowTakesItsContentsSize() {
+        Runnable ui = () -> {
+            GuiDrawList dl = Gui.getBackgroundDrawList();
+            dl.addLine(10, 50, 350, 50, 0xFF0000FF, 5f); // ABGR: opaque red, under the window at x < ~200
+            dl.addLine(10, 200, 350, 200, 0xFF0000FF, 5f);
+            Gui.setNextWindowPos(20, 20, GuiCond.Always);
+            Gui.begin("##auto", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
+            Gui.button("A wide button", 150, 0);
+            Gui.text("and a line of text");
+            Gui.end();
+        };
+        for (int i = 0; i < 3; i++) frame(ui);
+        // The window fits its content: a 150-pixel button and padding, two rows.
+        assertTrue(layer.overInterface(20 + 160, 30));
+        assertFalse(layer.overInterface(20 + 230, 30), "no wider than its content");
+        assertTrue(layer.overInterface(30, 20 + 50));
+        assertFalse(layer.overInterface(30, 20 + 130), "no taller than its content");
+        ByteBuffer pixels = memAlloc(W * H * 4);
+        try {
+            target.readPixels(pixels);
+            int[] free = rgb(pixels, 300, 200), open = rgb(pixels, 300, 50), covered = rgb(pixels, 60, 50);
+            assertTrue(free[0] > 200 && free[1] < 60 && free[2] < 60, "a red line: " + java.util.Arrays.toString(free));
+            assertTrue(open[0] > 200 && open[2] < 60, "beside the window: " + java.util.Arrays.toString(open));
+            assertTrue(covered[0] < 100, "under the window the line is hidden: " + java.util.Arrays.toString(covered));
+        } finally {
+            memFree(pixels);
+        }
+    }
 }

@@ -593,6 +593,7 @@ public final class EditorApp {
     private void toolsPanel(int fh) {
         Gui.setNextWindowPos(8, 32, GuiCond.Always);
         Gui.setNextWindowSize(300, 0, GuiCond.Always);
+        Gui.setNextWindowSizeConstraints(300, 0, 300, fh - 32 - 3 * Gui.frameHeight()); // above the status line
         Gui.begin("Tools", GuiWindowFlags.NoMove | GuiWindowFlags.NoResize | GuiWindowFlags.NoCollapse);
         if (Gui.radioButton("Terrain tool", tool.mode() == ToolController.Mode.TERRAIN)) tool.setMode(ToolController.Mode.TERRAIN);
         Gui.sameLine();
