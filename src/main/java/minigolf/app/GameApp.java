@@ -970,7 +970,8 @@ public final class GameApp implements UiActions, UiView {
         if (camera == null || world == null) return null;
         // A little above the ground, so the line is not hidden in the grass.
         float z = (float) (world.terrain().height(x, y) + 0.03);
-        return camera.project(new Vector3f((float) x, (float) y, z), window.framebufferWidth(), window.framebufferHeight());
+        float[] p = camera.project(new Vector3f((float) x, (float) y, z), window.framebufferWidth(), window.framebufferHeight());
+        return uiLayer == null ? p : uiLayer.toInterface(p, window.framebufferWidth());
     }
 
     @Override

@@ -75,13 +75,16 @@ public final class Gui {
     static final GuiDrawList background = new GuiDrawList();
     static FrameResult building = new FrameResult();
     static long frame;
+    /** ESC came since the last frame: a text field being edited lets go. */
+    static boolean escape;
 
     private Gui() {
     }
 
     // ---- Frame ------------------------------------------------------------------------------------
 
-    static void beginFrame(NuklearLayer l) {
+    static void beginFrame(NuklearLayer l, boolean escapePressed) {
+        escape = escapePressed;
         if (layer != l) forget();
         layer = l;
         ctx = l.context();
@@ -210,6 +213,11 @@ public final class Gui {
         float x = Math.round(pos[0] - w * pos[2]), y = Math.round(pos[1] - h * pos[3]);
         x = Math.max(0, Math.min(x, dw - w));
         y = Math.max(0, Math.min(y, dh - h));
+        boolean hidden = !m.measured; // its first frame only measures it: off screen, so it does not flash at a guessed size
+        if (hidden) {
+            x = -4000;
+            y = -4000;
+        }
         int nk = NK_WINDOW_BORDER | (titled ? NK_WINDOW_TITLE : 0) | (scroll ? 0 : NK_WINDOW_NO_SCROLLBAR)
                 | ((flags & GuiWindowFlags.NoInputs) != 0 ? NK_WINDOW_NO_INPUT : 0);
         try (MemoryStack stack = MemoryStack.stackPush()) {
@@ -217,7 +225,7 @@ public final class Gui {
             nk_window_set_bounds(ctx, id, r);
             nk_begin_titled(ctx, id, title.isEmpty() ? " " : title, r, nk);
         }
-        if ((flags & GuiWindowFlags.NoInputs) == 0) building.rects.add(new float[]{x, y, w, h});
+        if ((flags & GuiWindowFlags.NoInputs) == 0 && !hidden) building.rects.add(new float[]{x, y, w, h});
         win = new Win();
         win.id = id;
         win.memory = m;

@@ -52,7 +52,7 @@ final class GuiFields {
         boolean clickedElsewhere = left.clicked() != 0 && left.down()
                 && !(mouse.pos().x() >= r[0] && mouse.pos().x() < r[0] + r[2] && mouse.pos().y() >= r[1] && mouse.pos().y() < r[1] + r[3]);
         // A click on another window leaves this one without input; the edit must end all the same.
-        if (f.editing && clickedElsewhere) nk_edit_unfocus(Gui.ctx);
+        if (f.editing && (clickedElsewhere || Gui.escape)) nk_edit_unfocus(Gui.ctx);
         String changed = null;
         try (MemoryStack stack = MemoryStack.stackPush()) {
             byte[] bytes = shown.getBytes(StandardCharsets.UTF_8);

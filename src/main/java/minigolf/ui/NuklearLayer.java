@@ -82,6 +82,7 @@ public final class NuklearLayer implements AutoCloseable {
     private float displayWidth = 1, displayHeight = 1, framebufferWidth = 1, framebufferHeight = 1;
     private double mouseX = -1, mouseY = -1;
     private boolean mouseCaptured; // a button went down over the interface and is still down
+    private boolean escape; // ESC since the last frame
     private final Gui.FrameResult lastFrame = new Gui.FrameResult();
     private boolean inFrame, closed, initialised;
 
@@ -180,6 +181,13 @@ public final class NuklearLayer implements AutoCloseable {
         framebufferHeight = fbHeight;
     }
 
+    /** A framebuffer point (x, y) in the interface's window coordinates (they differ on high-DPI screens); null stays null. */
+    public float[] toInterface(float[] framebufferPoint, int framebufferWidthNow) {
+        if (framebufferPoint == null) return null;
+        float k = displayWidth / Math.max(1, framebufferWidthNow);
+        return new float[]{framebufferPoint[0] * k, framebufferPoint[1] * k};
+    }
+
     public float displayWidth() {
         return displayWidth;
     }
@@ -264,6 +272,7 @@ public final class NuklearLayer implements AutoCloseable {
             default -> NK_KEY_NONE;
         };
         if (nk != NK_KEY_NONE) events.add(new Event(Event.KEY, 0, 0, nk, down));
+        if (glfwKey == GLFW_KEY_ESCAPE && down) escape = true; // ends a text field's edit, as in ImGui
     }
 
     /** Whether the point (window coordinates) is on a window, menu or list the last frame drew. */
@@ -336,7 +345,8 @@ public final class NuklearLayer implements AutoCloseable {
         feedInput();
         nk_input_end(ctx);
         inFrame = true;
-        Gui.beginFrame(this);
+        Gui.beginFrame(this, escape);
+        escape = false;
     }
 
     /** Draws what the frame built over whatever is in the framebuffer, then clears it for the next. */
@@ -442,7 +452,6 @@ public final class NuklearLayer implements AutoCloseable {
             }
         }
         if (shader != null) shader.close();
-        Gui.forget();
         if (vao != 0) glDeleteVertexArrays(vao);
         if (vbo != 0) glDeleteBuffers(vbo);
         if (ebo != 0) glDeleteBuffers(ebo);

@@ -178,6 +178,18 @@ class NuklearLayerTest {
         frame(ui);
         assertFalse(layer.wantsKeyboard());
         assertEquals(1.5, speed.get());
+        // ESC lets go of the field too (and reaches the game from the next event on).
+        layer.mouseMove(field[0] + 10, field[1] + field[3] / 2);
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        frame(ui);
+        frame(ui);
+        assertTrue(layer.wantsKeyboard());
+        layer.key(GLFW_KEY_ESCAPE, true, 0);
+        layer.key(GLFW_KEY_ESCAPE, false, 0);
+        frame(ui);
+        frame(ui);
+        assertFalse(layer.wantsKeyboard(), "ESC ends the edit");
     }
 
     @Test

@@ -508,9 +508,10 @@ public final class EditorApp {
         uiLayer.render();
     }
 
-    /** Screen position of a point on the course, in interface (framebuffer, top-left) pixels; null behind the camera. */
+    /** Screen position of a point on the course, in interface (window, top-left) pixels; null behind the camera. */
     private float[] screen(double x, double y, double z) {
-        return camera.project(new Vector3f((float) x, (float) y, (float) z), window.framebufferWidth(), window.framebufferHeight());
+        float[] p = camera.project(new Vector3f((float) x, (float) y, (float) z), window.framebufferWidth(), window.framebufferHeight());
+        return uiLayer == null ? p : uiLayer.toInterface(p, window.framebufferWidth());
     }
 
     private void drawMarkers(int fw, int fh) {
