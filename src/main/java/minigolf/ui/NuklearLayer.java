@@ -283,6 +283,11 @@ public final class NuklearLayer implements AutoCloseable {
         return false;
     }
 
+    /** The last frame's windows and open pop-ups as {x, y, w, h} (for tests). */
+    java.util.List<float[]> interfaceRects() {
+        return java.util.List.copyOf(lastFrame.rects);
+    }
+
     /** The interface takes the mouse: the pointer is over it, or a drag began on it. */
     public boolean wantsMouse() {
         return mouseCaptured || overInterface(mouseX, mouseY);

@@ -221,4 +221,36 @@ class NuklearLayerTest {
             memFree(pixels);
         }
     }
+
+    @Test
+    void aComboOpensOnAClickAndAClickOnAnItemChoosesIt() {
+        GuiInt kind = new GuiInt(0);
+        boolean[] changed = new boolean[1];
+        float[] box = new float[4];
+        Runnable ui = () -> panel(() -> {
+            if (Gui.combo("Kind", kind, new String[]{"Human", "Bot", "Robot"})) changed[0] = true;
+            System.arraycopy(Gui.lastItemRect(), 0, box, 0, 4);
+        });
+        frame(ui);
+        frame(ui);
+        assertEquals(1, layer.interfaceRects().size(), "the window only");
+        layer.mouseMove(box[0] + box[2] / 2, box[1] + box[3] / 2);
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        frame(ui);
+        frame(ui);
+        assertEquals(2, layer.interfaceRects().size(), "the list is open");
+        float[] list = layer.interfaceRects().get(1);
+        assertTrue(list[1] >= box[1] + box[3] - 1, "below the box: " + java.util.Arrays.toString(list));
+        float pad = layer.context().style().window().combo_padding().y(), gap = layer.context().style().window().spacing().y();
+        float itemY = list[1] + pad + (Gui.frameHeight() + gap) + Gui.frameHeight() / 2; // the second item's middle
+        layer.mouseMove(list[0] + list[2] / 2, itemY);
+        assertTrue(layer.wantsMouse(), "the open list is the interface's, also outside its window");
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        for (int i = 0; i < 3; i++) frame(ui);
+        assertEquals(1, kind.get(), "Bot chosen");
+        assertTrue(changed[0]);
+        assertEquals(1, layer.interfaceRects().size(), "the list closed");
+    }
 }
