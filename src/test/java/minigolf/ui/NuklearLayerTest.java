@@ -253,4 +253,42 @@ class NuklearLayerTest {
         assertTrue(changed[0]);
         assertEquals(1, layer.interfaceRects().size(), "the list closed");
     }
+
+    @Test
+    void aMenuOfTheMainMenuBarOpensAndItsItemIsChosenOnce() {
+        AtomicInteger saves = new AtomicInteger();
+        float[] title = new float[4];
+        Runnable ui = () -> {
+            if (Gui.beginMainMenuBar()) {
+                boolean open = Gui.beginMenu("File");
+                System.arraycopy(Gui.lastItemRect(), 0, title, 0, 4);
+                if (open) {
+                    if (Gui.menuItem("Save", "Ctrl+S")) saves.incrementAndGet();
+                    Gui.menuItem("Undo", "Ctrl+Z", false, false);
+                    Gui.endMenu();
+                }
+                Gui.endMainMenuBar();
+            }
+        };
+        frame(ui);
+        frame(ui);
+        float[] bar = layer.interfaceRects().get(0);
+        assertEquals(0, bar[0]);
+        assertEquals(0, bar[1]);
+        assertEquals(W, bar[2], "across the top");
+        layer.mouseMove(12, bar[3] / 2); // on "File"
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        frame(ui);
+        frame(ui);
+        assertEquals(2, layer.interfaceRects().size(), "the menu is open");
+        float[] menu = layer.interfaceRects().get(1);
+        float pad = layer.context().style().window().menu_padding().y();
+        layer.mouseMove(menu[0] + 20, menu[1] + pad + Gui.frameHeight() / 2); // on "Save"
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        for (int i = 0; i < 3; i++) frame(ui);
+        assertEquals(1, saves.get());
+        assertEquals(1, layer.interfaceRects().size(), "the menu closed");
+    }
 }
