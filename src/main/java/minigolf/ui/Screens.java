@@ -141,9 +141,12 @@ public final class Screens {
         Gui.setNextItemWidth(120);
         Gui.combo("##testbot", testBot, botNames.toArray(new String[0]));
         if (Gui.button("Create course", bw, bh)) actions.createCourse();
-        if (!view.savedGames().isEmpty() && Gui.beginMenu("Load saved game")) {
-            for (Path p : view.savedGames()) if (Gui.menuItem(p.getFileName().toString())) actions.loadGame(p);
-            Gui.endMenu();
+        if (!view.savedGames().isEmpty()) {
+            Gui.setNextItemWidth(bw); // as wide as the buttons
+            if (Gui.beginMenu("Load saved game")) {
+                for (Path p : view.savedGames()) if (Gui.menuItem(p.getFileName().toString())) actions.loadGame(p);
+                Gui.endMenu();
+            }
         }
         if (Gui.button("Settings", bw, bh)) openSettings(view, Screen.MAIN_MENU);
         if (Gui.button("Help (F1)", bw, bh)) openHelp();

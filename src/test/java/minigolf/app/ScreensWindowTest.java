@@ -42,6 +42,15 @@ class ScreensWindowTest {
 
     @Test
     void theMenusOpenAndDraw() throws Exception {
+        // A saved game first, so that the main menu shows "Load saved game".
+        Path projectDir = Path.of(System.getProperty("minigolf.projectDir", "."));
+        GameApp saver = new GameApp(World.load(projectDir.resolve("courses").resolve("lake.json")), new GameApp.Options(null,
+                null, 3, List.of(Player.human("Ann")), List.of(), 1, new SettingsStore(dir.resolve("config")), true, false));
+        saver.onLoopPass((pass, window) -> {
+            if (pass == 1) saver.saveGame();
+        });
+        saver.run();
+        assertEquals(1, saver.savedGames().size(), "a game was saved");
         for (Screen s : new Screen[]{Screen.MAIN_MENU, Screen.COURSES, Screen.NEW_GAME, Screen.SETTINGS, Screen.HELP}) {
             shot(s, null);
         }
