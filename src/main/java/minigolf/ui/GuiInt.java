@@ -1,6 +1,6 @@
 package minigolf.ui;
 
-/** A int that a {@link Gui} widget edits in place (as ImGui's ImInt). */
+/** An int that a {@link Gui} widget edits in place (as ImGui's ImInt). */
 public final class GuiInt {
     private int value;
 
