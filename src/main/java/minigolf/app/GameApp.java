@@ -47,7 +47,7 @@ import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
 import minigolf.ui.CameraDrag;
-import minigolf.ui.ImGuiLayer;
+import minigolf.ui.NuklearLayer;
 import minigolf.ui.PlayerColors;
 import minigolf.ui.Screen;
 import minigolf.ui.Screens;
@@ -63,7 +63,7 @@ import static org.lwjgl.opengl.GL11.*;
 /**
  * The game: one window, one render loop. Each frame polls input, advances the rolling ball at the
  * physics step (fixed, decoupled from the frame rate, drawn interpolated), runs bots on worker
- * threads, draws the course, the minimap and the ImGui screens. Everything GL happens on the
+ * threads, draws the course, the minimap and the interface screens. Everything GL happens on the
  * thread that calls {@link #run()}.
  */
 public final class GameApp implements UiActions, UiView {
@@ -116,7 +116,7 @@ public final class GameApp implements UiActions, UiView {
     private SceneRenderer renderer;
     private RenderQuality quality = RenderQuality.HIGH;
     private OrbitCamera camera;
-    private ImGuiLayer imgui;
+    private NuklearLayer uiLayer;
     private boolean rebuildScene;
     /** Called at the start of every pass of the loop (drawn or not) with the window: tests drive resizes with it. */
     private BiConsumer<Integer, Window> loopHook = (pass, w) -> { };
@@ -180,9 +180,9 @@ public final class GameApp implements UiActions, UiView {
             window.setVsync(settings.vsync() && options.frames() <= 0);
             installInput();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
-            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale); Sounds sound = Sounds.open(audio)) {
+            try (NuklearLayer ui = new NuklearLayer(window.handle(), scale); Sounds sound = Sounds.open(audio)) {
                 sounds = sound;
-                imgui = ui;
+                uiLayer = ui;
                 buildScene();
                 try {
                     if (options.startPlayers() != null) {
@@ -241,7 +241,7 @@ public final class GameApp implements UiActions, UiView {
             boolean finalCard = screens.screen() == Screen.SCORECARD
                     || (screens.screen() == Screen.ROUND_CARD && round != null && round.isOver());
             overFrames = finalCard ? overFrames + 1 : 0;
-            // ImGui sizes a new window in its first frames: stop once the scorecard has been drawn.
+            // A new window takes its content size in its second frame: stop once the scorecard has been drawn.
             boolean over = options.exitWhenOver() && overFrames >= 3;
             if ((options.frames() > 0 && frame >= options.frames()) || over) {
                 if (options.screenshot() != null) Png.saveBackBuffer(options.screenshot(), fw, fh);
@@ -444,10 +444,10 @@ public final class GameApp implements UiActions, UiView {
         renderer.renderMinimap(fw - mini - 12, 12, mini, fw, fh);
         if (screens.screen() == Screen.COURSES) thumbnails.renderNext(courses(), 200, 120);
         glViewport(0, 0, fw, fh);
-        imgui.newFrame();
+        uiLayer.newFrame();
         screens.remember(this);
         screens.draw(this);
-        imgui.render();
+        uiLayer.render();
     }
 
     private List<BallView> ballViews() {
@@ -529,11 +529,11 @@ public final class GameApp implements UiActions, UiView {
 
     // ---- Input --------------------------------------------------------------------------------
 
-    /** Installed before ImGui, whose GLFW backend chains to these callbacks. */
+    /** Installed before the interface layer, whose GLFW callbacks chain to these. */
     private void installInput() {
         long h = window.handle();
         glfwSetKeyCallback(h, (win, key, scancode, action, mods) -> {
-            if (action != GLFW_PRESS || (imgui != null && imgui.wantsKeyboard())) return;
+            if (action != GLFW_PRESS || (uiLayer != null && uiLayer.wantsKeyboard())) return;
             switch (key) {
                 case GLFW_KEY_ESCAPE -> escape();
                 case GLFW_KEY_F1 -> {
@@ -558,7 +558,7 @@ public final class GameApp implements UiActions, UiView {
             boolean down = action == GLFW_PRESS;
             double[] x = new double[1], y = new double[1];
             glfwGetCursorPos(win, x, y);
-            if (down && imgui != null && imgui.wantsMouse()) return;
+            if (down && uiLayer != null && uiLayer.wantsMouse()) return;
             // The camera's scheme is the editor's (CameraDrag); a plain left-drag aims, or turns away from the ball.
             CameraDrag drag = down && !aiming ? CameraDrag.of(button, mods) : CameraDrag.NONE;
             if (drag != CameraDrag.NONE || !down) {
@@ -606,7 +606,7 @@ public final class GameApp implements UiActions, UiView {
             }
         });
         glfwSetScrollCallback(h, (win, xoff, yoff) -> {
-            if (imgui != null && imgui.wantsMouse()) return;
+            if (uiLayer != null && uiLayer.wantsMouse()) return;
             if (aiming) loft = Loft.step(loft, (int) Math.signum(yoff)); // while aiming the wheel lofts the shot
             else camera.zoom((float) yoff);
         });
@@ -934,6 +934,11 @@ public final class GameApp implements UiActions, UiView {
         return screens.screen();
     }
 
+    /** Opens a screen as its button would (for tests and screenshots; call on the render thread, e.g. from a loop hook). */
+    public void showScreen(Screen s) {
+        screens.open(s, this);
+    }
+
     @Override
     public BallReadout readout() {
         if (game == null || game.currentPlayer() < 0) return null;
@@ -954,7 +959,8 @@ public final class GameApp implements UiActions, UiView {
         if (camera == null || world == null) return null;
         // A little above the ground, so the line is not hidden in the grass.
         float z = (float) (world.terrain().height(x, y) + 0.03);
-        return camera.project(new Vector3f((float) x, (float) y, z), window.framebufferWidth(), window.framebufferHeight());
+        float[] p = camera.project(new Vector3f((float) x, (float) y, z), window.framebufferWidth(), window.framebufferHeight());
+        return uiLayer == null ? p : uiLayer.toInterface(p, window.framebufferWidth());
     }
 
     @Override

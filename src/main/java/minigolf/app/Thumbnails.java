@@ -20,7 +20,7 @@ import static org.lwjgl.system.MemoryUtil.memFree;
 
 /**
  * Course previews for the course list, rendered off-screen with the game's own renderer into a
- * framebuffer and copied into textures ImGui can draw. One per frame, so the menu stays responsive.
+ * framebuffer and copied, top row first, into textures the interface draws. One per frame, so the menu stays responsive.
  * A course that fails to load gets no texture (id -1 is remembered so it is not retried).
  */
 final class Thumbnails implements AutoCloseable {
@@ -55,6 +55,7 @@ final class Thumbnails implements AutoCloseable {
             renderer.render(cam, width, height, 0f);
             target.resolve();
             target.readPixels(pixels);
+            flipRows(pixels, width * 4, height); // GL reads bottom-up; Nuklear maps an image's top to v = 0
             int tex = glGenTextures();
             glBindTexture(GL_TEXTURE_2D, tex);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -70,6 +71,16 @@ final class Thumbnails implements AutoCloseable {
         } finally {
             memFree(pixels);
             org.lwjgl.opengl.GL30.glBindFramebuffer(org.lwjgl.opengl.GL30.GL_FRAMEBUFFER, 0);
+        }
+    }
+
+    private static void flipRows(ByteBuffer pixels, int stride, int rows) {
+        byte[] a = new byte[stride], b = new byte[stride];
+        for (int top = 0, bottom = rows - 1; top < bottom; top++, bottom--) {
+            pixels.get(top * stride, a);
+            pixels.get(bottom * stride, b);
+            pixels.put(top * stride, b);
+            pixels.put(bottom * stride, a);
         }
     }
 

@@ -1,6 +1,5 @@
 package minigolf.ui;
 
-import imgui.ImDrawList;
 import java.util.List;
 import java.util.function.Function;
 
@@ -18,9 +17,9 @@ public final class PlanOverlay {
 
     /**
      * @param plan     course points (x, y), ball first
-     * @param toScreen a course point to ImGui pixels, or null when it is behind the camera
+     * @param toScreen a course point to interface pixels, or null when it is behind the camera
      */
-    public static void draw(ImDrawList dl, List<double[]> plan, Function<double[], float[]> toScreen) {
+    public static void draw(GuiDrawList dl, List<double[]> plan, Function<double[], float[]> toScreen) {
         float[] previous = null;
         float[] first = null;
         for (double[] p : plan) {

@@ -52,7 +52,7 @@ public interface UiView {
         return 0;
     }
 
-    /** ImGui texture id of a course's preview, or 0 while it is not rendered yet. */
+    /** GL texture of a course's preview (top row first), or 0 while it is not rendered yet. */
     int thumbnail(CourseEntry course);
 
     record CourseEntry(String name, Path file, boolean own) {

@@ -1,14 +1,12 @@
 package minigolf.ui;
 
-import imgui.ImFont;
-import imgui.ImGui;
 import org.junit.jupiter.api.Test;
 
 import java.io.InputStream;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-/** The bundled font loads from the classpath into ImGui's atlas (CPU only: the atlas is rasterised without GL). */
+/** The bundled font loads from the classpath and bakes into the atlas (CPU only: no GL needed to bake). */
 class UiFontTest {
     @Test
     void theBundledFontAndItsLicenceAreOnTheClasspath() throws Exception {
@@ -23,19 +21,18 @@ class UiFontTest {
     }
 
     @Test
-    void itIsTheAtlasDefaultFontAtTheScaledSize() {
-        ImGui.createContext();
-        try {
-            ImFont font = UiFont.addTo(ImGui.getIO().getFonts(), UiFont.SIZE_PIXELS * 1.5f);
-            assertTrue(ImGui.getIO().getFonts().build(), "the atlas builds");
-            assertTrue(font.isLoaded());
-            assertEquals(24f, font.getFontSize(), "16 px x 1.5");
-            assertNotNull(font.findGlyphNoFallback('g'));
-            assertNotNull(font.findGlyphNoFallback(0xB2), "superscript two (Latin-1)");
-            // A proportional font: 'i' is narrower than 'W' (Dear ImGui's own font is monospaced).
-            assertTrue(font.calcTextSizeAX(24f, Float.MAX_VALUE, 0f, "iiii") < font.calcTextSizeAX(24f, Float.MAX_VALUE, 0f, "WWWW") / 2);
-        } finally {
-            ImGui.destroyContext();
+    void itBakesAtTheScaledSize() {
+        try (FontAtlas font = FontAtlas.bake(UiFont.SIZE_PIXELS * 1.5f)) {
+            assertEquals(24f, font.height(), "16 px x 1.5");
+            assertTrue(font.hasGlyph('g'));
+            assertTrue(font.hasGlyph(0xB2), "superscript two (Latin-1)");
+            assertFalse(font.hasGlyph(0x2713), "outside Latin-1: drawn as '?'");
+            assertEquals(font.advance('?'), font.advance(0x2713));
+            assertTrue(font.coveredPixels() > 5_000, "glyphs were rasterised: " + font.coveredPixels());
+            // A proportional font: 'i' is narrower than 'W'.
+            assertTrue(font.width("iiii") < font.width("WWWW") / 2);
+            assertEquals(font.width("ab") + font.width("cd"), font.width("abcd"), 1e-3);
+            assertTrue(font.width("Play") > 24 && font.width("Play") < 60, "about two ems: " + font.width("Play"));
         }
     }
 }

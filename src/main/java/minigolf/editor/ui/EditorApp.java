@@ -1,12 +1,5 @@
 package minigolf.editor.ui;
 
-import imgui.ImDrawList;
-import imgui.ImGui;
-import imgui.flag.ImGuiCond;
-import imgui.flag.ImGuiWindowFlags;
-import imgui.type.ImDouble;
-import imgui.type.ImInt;
-import imgui.type.ImString;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -46,7 +39,14 @@ import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
-import minigolf.ui.ImGuiLayer;
+import minigolf.ui.Gui;
+import minigolf.ui.GuiCond;
+import minigolf.ui.GuiDouble;
+import minigolf.ui.GuiDrawList;
+import minigolf.ui.GuiInt;
+import minigolf.ui.GuiString;
+import minigolf.ui.GuiWindowFlags;
+import minigolf.ui.NuklearLayer;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.joml.Vector4f;
@@ -55,7 +55,7 @@ import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL11.*;
 
 /**
- * The course editor's window: the game's renderer and orbit camera, ImGui panels, mouse picking
+ * The course editor's window: the game's renderer and orbit camera, Nuklear panels, mouse picking
  * of the terrain and the original keyboard scheme. All editing goes through {@link ToolController}
  * and {@link CourseEditor}; this class only turns input into their calls and draws.
  * Camera (the game's scheme, minigolf.ui.CameraDrag): right drag or Ctrl + left drag turns, Shift + right drag, middle drag
@@ -84,7 +84,7 @@ public final class EditorApp {
     private ToolController tool;
     private Window window;
     private RenderQuality quality = RenderQuality.HIGH;
-    private ImGuiLayer imgui;
+    private NuklearLayer uiLayer;
     private SceneRenderer renderer;
     private OrbitCamera camera;
     private boolean heightMap, rebuildScene = true;
@@ -95,7 +95,7 @@ public final class EditorApp {
     private double lastValidation = -1;
     private Dialog dialog = Dialog.NONE;
     private BotCheck botCheck;
-    private final ImInt botChoice = new ImInt(0);
+    private final GuiInt botChoice = new GuiInt(0);
     private Path playFile;
     // Mouse.
     private boolean rotating, panning, stroking, dragging;
@@ -104,23 +104,23 @@ public final class EditorApp {
     private double lastX, lastY;
     private boolean cursorSeen;
     // Dialog fields.
-    private final ImString newName = new ImString("My course", 128), newExpression = new ImString("", 256);
-    private final ImDouble newWidth = new ImDouble(10), newDepth = new ImDouble(6), newSpacing = new ImDouble(0.05);
-    private final ImString pathField = new ImString("courses/my-course.json", 512);
+    private final GuiString newName = new GuiString("My course", 128), newExpression = new GuiString("", 256);
+    private final GuiDouble newWidth = new GuiDouble(10), newDepth = new GuiDouble(6), newSpacing = new GuiDouble(0.05);
+    private final GuiString pathField = new GuiString("courses/my-course.json", 512);
     // Panel fields.
-    private final ImDouble startX = new ImDouble(), startY = new ImDouble(), holeX = new ImDouble(), holeY = new ImDouble();
-    private final ImDouble holeRadius = new ImDouble(), gravity = new ImDouble(), kinetic = new ImDouble(),
-            statics = new ImDouble(), maxSpeed = new ImDouble();
-    private final ImInt holeRule = new ImInt(), maxObjects = new ImInt();
-    private final ImString courseName = new ImString(128);
+    private final GuiDouble startX = new GuiDouble(), startY = new GuiDouble(), holeX = new GuiDouble(), holeY = new GuiDouble();
+    private final GuiDouble holeRadius = new GuiDouble(), gravity = new GuiDouble(), kinetic = new GuiDouble(),
+            statics = new GuiDouble(), maxSpeed = new GuiDouble();
+    private final GuiInt holeRule = new GuiInt(), maxObjects = new GuiInt();
+    private final GuiString courseName = new GuiString(128);
     private long fieldsVersion = -1;
     private int selected = -1;
     // The selected object's fields (refreshed when the selection or the course changes) and the selected zone.
-    private final ImDouble objA = new ImDouble(), objB = new ImDouble(), objC = new ImDouble(), objRestitution = new ImDouble();
+    private final GuiDouble objA = new GuiDouble(), objB = new GuiDouble(), objC = new GuiDouble(), objRestitution = new GuiDouble();
     private int selectedFieldsFor = -1;
     private long selectedFieldsVersion = -1;
     private int selectedZone = -1;
-    private final ImDouble zoneKinetic = new ImDouble(), zoneStatic = new ImDouble();
+    private final GuiDouble zoneKinetic = new GuiDouble(), zoneStatic = new GuiDouble();
     private float time;
 
     public EditorApp(CourseEditor editor, Options options) {
@@ -144,8 +144,8 @@ public final class EditorApp {
             window.setVsync(options.frames() <= 0);
             installInput();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
-            try (ImGuiLayer ui = new ImGuiLayer(window.handle(), scale, minigolf.ui.UiFont.EDITOR_SIZE_PIXELS)) {
-                imgui = ui;
+            try (NuklearLayer ui = new NuklearLayer(window.handle(), scale, minigolf.ui.UiFont.EDITOR_SIZE_PIXELS)) {
+                uiLayer = ui;
                 if (recovery.start()) {
                     if (options.frames() <= 0) {
                         dialog = Dialog.RECOVERY;
@@ -276,7 +276,7 @@ public final class EditorApp {
     private void installInput() {
         long h = window.handle();
         glfwSetKeyCallback(h, (win, key, scancode, action, mods) -> {
-            if (action == GLFW_RELEASE || (imgui != null && imgui.wantsKeyboard())) return;
+            if (action == GLFW_RELEASE || (uiLayer != null && uiLayer.wantsKeyboard())) return;
             boolean repeatable = key == GLFW_KEY_W || key == GLFW_KEY_A || key == GLFW_KEY_S || key == GLFW_KEY_D;
             if (action == GLFW_REPEAT && !repeatable) return;
             onKey(key, mods);
@@ -293,7 +293,7 @@ public final class EditorApp {
             glfwGetCursorPos(win, x, y);
             lastX = x[0];
             lastY = y[0];
-            if (down && imgui != null && imgui.wantsMouse()) return;
+            if (down && uiLayer != null && uiLayer.wantsMouse()) return;
             // The game's camera scheme (CameraDrag): right-drag or Ctrl + left-drag turns, Shift + right,
             // middle or Ctrl + Shift + left moves; a plain left press is the tool.
             minigolf.ui.CameraDrag drag = down ? minigolf.ui.CameraDrag.of(button, mods) : minigolf.ui.CameraDrag.NONE;
@@ -332,12 +332,12 @@ public final class EditorApp {
                 int[] ww = new int[1], wh = new int[1];
                 glfwGetWindowSize(win, ww, wh);
                 camera.pan(dx, dy, Math.max(1, wh[0]));
-            } else if (imgui == null || !imgui.wantsMouse()) {
+            } else if (uiLayer == null || !uiLayer.wantsMouse()) {
                 toolMove(x, y);
             }
         });
         glfwSetScrollCallback(h, (win, xoff, yoff) -> {
-            if (imgui == null || !imgui.wantsMouse()) camera.zoom((float) yoff);
+            if (uiLayer == null || !uiLayer.wantsMouse()) camera.zoom((float) yoff);
         });
     }
 
@@ -537,23 +537,24 @@ public final class EditorApp {
         int mini = Math.min(fw, fh) / 5;
         renderer.renderMinimap(fw - mini - 12, 40, mini, fw, fh);
         glViewport(0, 0, fw, fh);
-        imgui.newFrame();
+        uiLayer.newFrame();
         drawMarkers(fw, fh);
         menuBar();
         toolsPanel(fh);
         coursePanel(fw, fh);
         statusLine(fw, fh);
         dialogs(fw, fh);
-        imgui.render();
+        uiLayer.render();
     }
 
-    /** Screen position of a point on the course, in ImGui (framebuffer, top-left) pixels; null behind the camera. */
+    /** Screen position of a point on the course, in interface (window, top-left) pixels; null behind the camera. */
     private float[] screen(double x, double y, double z) {
-        return camera.project(new Vector3f((float) x, (float) y, (float) z), window.framebufferWidth(), window.framebufferHeight());
+        float[] p = camera.project(new Vector3f((float) x, (float) y, (float) z), window.framebufferWidth(), window.framebufferHeight());
+        return uiLayer == null ? p : uiLayer.toInterface(p, window.framebufferWidth());
     }
 
     private void drawMarkers(int fw, int fh) {
-        ImDrawList dl = ImGui.getBackgroundDrawList();
+        GuiDrawList dl = Gui.getBackgroundDrawList();
         World w = editor.world();
         if (botCheck != null && !botCheck.isDone()) {
             PlanOverlay.draw(dl, botCheck.plan(), p -> screen(p[0], p[1], w.terrain().height(p[0], p[1]) + 0.03));
@@ -598,96 +599,99 @@ public final class EditorApp {
     }
 
     private void menuBar() {
-        if (!ImGui.beginMainMenuBar()) return;
-        if (ImGui.beginMenu("File")) {
-            if (ImGui.menuItem("New...", "")) dialog = Dialog.NEW;
-            if (ImGui.menuItem("Open...", "")) dialog = Dialog.OPEN;
-            if (ImGui.menuItem("Save", "Ctrl+S")) save();
-            if (ImGui.menuItem("Save as...", "")) openSaveAs();
-            if (ImGui.menuItem("Quit", "")) {
+        if (!Gui.beginMainMenuBar()) return;
+        if (Gui.beginMenu("File")) {
+            if (Gui.menuItem("New...", "")) dialog = Dialog.NEW;
+            if (Gui.menuItem("Open...", "")) dialog = Dialog.OPEN;
+            if (Gui.menuItem("Save", "Ctrl+S")) save();
+            if (Gui.menuItem("Save as...", "")) openSaveAs();
+            if (Gui.menuItem("Quit", "")) {
                 if (editor.isDirty()) dialog = Dialog.CONFIRM_CLOSE;
                 else glfwSetWindowShouldClose(window.handle(), true);
             }
-            ImGui.endMenu();
+            Gui.endMenu();
         }
-        if (ImGui.beginMenu("Edit")) {
+        if (Gui.beginMenu("Edit")) {
             String u = editor.undoLabel(), r = editor.redoLabel();
-            if (ImGui.menuItem("Undo " + (u == null ? "" : u), "Ctrl+Z", false, u != null)) say(tool.press(EditorKey.UNDO));
-            if (ImGui.menuItem("Redo " + (r == null ? "" : r), "Ctrl+Y", false, r != null)) say(tool.press(EditorKey.REDO));
-            ImGui.endMenu();
+            if (Gui.menuItem("Undo " + (u == null ? "" : u), "Ctrl+Z", false, u != null)) say(tool.press(EditorKey.UNDO));
+            if (Gui.menuItem("Redo " + (r == null ? "" : r), "Ctrl+Y", false, r != null)) say(tool.press(EditorKey.REDO));
+            Gui.endMenu();
         }
-        if (ImGui.beginMenu("View")) {
-            if (ImGui.menuItem("Height map", "H", heightMap, true)) toggleHeightMap();
-            if (ImGui.menuItem("Reset camera", "R")) camera.reset();
-            ImGui.endMenu();
+        if (Gui.beginMenu("View")) {
+            if (Gui.menuItem("Height map", "H", heightMap, true)) toggleHeightMap();
+            if (Gui.menuItem("Reset camera", "R")) camera.reset();
+            Gui.endMenu();
         }
-        if (ImGui.beginMenu("Test")) {
-            if (ImGui.menuItem("Play it", "")) playIt();
-            if (ImGui.menuItem("Ask a bot", "")) askBot();
-            ImGui.endMenu();
+        if (Gui.beginMenu("Test")) {
+            if (Gui.menuItem("Play it", "")) playIt();
+            if (Gui.menuItem("Ask a bot", "")) askBot();
+            Gui.endMenu();
         }
-        ImGui.endMainMenuBar();
+        Gui.endMainMenuBar();
     }
 
     private void toolsPanel(int fh) {
-        ImGui.setNextWindowPos(8, 32, ImGuiCond.Always);
-        ImGui.setNextWindowSize(300, 0, ImGuiCond.Always);
-        ImGui.begin("Tools", ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoResize | ImGuiWindowFlags.NoCollapse);
-        if (ImGui.radioButton("Terrain tool", tool.mode() == ToolController.Mode.TERRAIN)) tool.setMode(ToolController.Mode.TERRAIN);
-        ImGui.sameLine();
-        if (ImGui.radioButton("Object tool", tool.mode() == ToolController.Mode.OBJECT)) tool.setMode(ToolController.Mode.OBJECT);
-        ImGui.textDisabled("SHIFT switches, WASD moves, ENTER applies");
-        ImGui.separator();
+        Gui.setNextWindowPos(8, 32, GuiCond.Always);
+        Gui.setNextWindowSize(300, 0, GuiCond.Always);
+        Gui.setNextWindowSizeConstraints(300, 0, 300, fh - 32 - 3 * Gui.frameHeight()); // above the status line
+        Gui.begin("Tools", GuiWindowFlags.NoMove | GuiWindowFlags.NoResize | GuiWindowFlags.NoCollapse);
+        if (Gui.radioButton("Terrain tool", tool.mode() == ToolController.Mode.TERRAIN)) tool.setMode(ToolController.Mode.TERRAIN);
+        Gui.sameLine();
+        if (Gui.radioButton("Object tool", tool.mode() == ToolController.Mode.OBJECT)) tool.setMode(ToolController.Mode.OBJECT);
+        Gui.textDisabled("SHIFT switches, WASD moves,");
+        Gui.textDisabled("ENTER applies");
+        Gui.separator();
         if (tool.mode() == ToolController.Mode.TERRAIN) {
             ToolController.TerrainAction[] all = ToolController.TerrainAction.values();
             for (int i = 0; i < all.length; i++) {
-                if (ImGui.radioButton(ACTIONS[i], tool.action() == all[i])) tool.setAction(all[i]);
-                if (i % 2 == 0) ImGui.sameLine(150);
+                if (Gui.radioButton(ACTIONS[i], tool.action() == all[i])) tool.setAction(all[i]);
+                if (i % 2 == 0) Gui.sameLine(150);
             }
-            ImGui.separator();
+            Gui.separator();
             float[] rad = {(float) tool.radius}, str = {(float) tool.strength};
-            if (ImGui.sliderFloat("Radius m", rad, 0.05f, 3f, "%.2f")) tool.radius = rad[0];
-            if (ImGui.sliderFloat("Strength", str, 0.005f, 1f, "%.3f")) tool.strength = str[0];
-            ImDouble hh = new ImDouble(tool.typedHeight), k = new ImDouble(tool.typedKinetic), s = new ImDouble(tool.typedStatic);
-            if (ImGui.inputDouble("Height m", hh)) tool.typedHeight = hh.get();
-            if (ImGui.inputDouble("Typed mu_k", k)) tool.typedKinetic = k.get();
-            if (ImGui.inputDouble("Typed mu_s", s)) tool.typedStatic = s.get();
+            if (Gui.sliderFloat("Radius m", rad, 0.05f, 3f, "%.2f")) tool.radius = rad[0];
+            if (Gui.sliderFloat("Strength", str, 0.005f, 1f, "%.3f")) tool.strength = str[0];
+            GuiDouble hh = new GuiDouble(tool.typedHeight), k = new GuiDouble(tool.typedKinetic), s = new GuiDouble(tool.typedStatic);
+            if (Gui.inputDouble("Height m", hh)) tool.typedHeight = hh.get();
+            if (Gui.inputDouble("Typed mu_k", k)) tool.typedKinetic = k.get();
+            if (Gui.inputDouble("Typed mu_s", s)) tool.typedStatic = s.get();
             EditableCourse c = editor.course();
             int ni = c.nearestColumn(tool.x()), nj = c.nearestRow(tool.y());
-            ImGui.text(String.format(Locale.ROOT, "Node (%d, %d): h = %.3f m", ni, nj, c.height(ni, nj)));
-            ImGui.text(String.format(Locale.ROOT, "mu_k %.3f  mu_s %.3f", c.kineticFriction(ni, nj), c.staticFriction(ni, nj)));
+            Gui.text(String.format(Locale.ROOT, "Node (%d, %d): h = %.3f m", ni, nj, c.height(ni, nj)));
+            Gui.text(String.format(Locale.ROOT, "mu_k %.3f  mu_s %.3f", c.kineticFriction(ni, nj), c.staticFriction(ni, nj)));
         } else {
             for (int i = 0; i < KINDS.length; i++) {
-                if (ImGui.radioButton(KINDS[i], tool.kind() == ToolController.ObjectKind.values()[i])) {
+                if (Gui.radioButton(KINDS[i], tool.kind() == ToolController.ObjectKind.values()[i])) {
                     tool.setKind(ToolController.ObjectKind.values()[i]);
                 }
-                ImGui.sameLine();
+                Gui.sameLine();
             }
-            ImGui.newLine();
-            ImGui.textDisabled("M wall, B tree, ENTER places, P deletes, Q/E turn");
+            Gui.newLine();
+            Gui.textDisabled("M wall, B tree, ENTER places,");
+            Gui.textDisabled("P deletes, Q/E turn");
             newObjectSettings();
         }
-        ImGui.separator();
+        Gui.separator();
         List<Obstacle> list = editor.course().obstacles();
-        ImGui.text("Objects: " + list.size() + " of at most " + editor.maxObstacles());
+        Gui.text("Objects: " + list.size() + " of at most " + editor.maxObstacles());
         for (int i = 0; i < list.size() && i < 200; i++) {
             Vec2 oc = ObstacleTools.center(list.get(i));
             String label = String.format(Locale.ROOT, "%d %s (%.2f, %.2f)##o%d", i, ObstacleTools.describe(list.get(i)), oc.x(), oc.y(), i);
-            if (ImGui.selectable(label, i == selected)) selected = i;
+            if (Gui.selectable(label, i == selected)) selected = i;
         }
         if (selected >= 0 && selected < list.size()) {
-            if (ImGui.button("Turn left")) editor.rotateObstacle(selected, ToolController.ROTATE_STEP_DEG);
-            ImGui.sameLine();
-            if (ImGui.button("Turn right")) editor.rotateObstacle(selected, -ToolController.ROTATE_STEP_DEG);
-            ImGui.sameLine();
-            if (ImGui.button("Delete")) {
+            if (Gui.button("Turn left")) editor.rotateObstacle(selected, ToolController.ROTATE_STEP_DEG);
+            Gui.sameLine();
+            if (Gui.button("Turn right")) editor.rotateObstacle(selected, -ToolController.ROTATE_STEP_DEG);
+            Gui.sameLine();
+            if (Gui.button("Delete")) {
                 editor.removeObstacle(selected);
                 selected = -1;
             }
             if (selected >= 0) selectedObjectFields(list.get(selected));
         }
         zoneList();
-        ImGui.end();
+        Gui.end();
     }
 
     /** Sizes of the objects the tool will place. */
@@ -695,30 +699,30 @@ public final class EditorApp {
         switch (tool.kind()) {
             case WALL -> {
                 float[] len = {(float) tool.wallLength}, th = {(float) tool.wallThickness}, ht = {(float) tool.wallHeight};
-                if (ImGui.sliderFloat("Wall length", len, 0.2f, 5f, "%.2f")) tool.wallLength = len[0];
-                if (ImGui.sliderFloat("Thickness", th, 0f, 0.5f, "%.3f")) tool.wallThickness = th[0];
-                if (ImGui.sliderFloat("Height", ht, 0.02f, 1f, "%.2f")) tool.wallHeight = Math.max(0.01, ht[0]);
+                if (Gui.sliderFloat("Wall length", len, 0.2f, 5f, "%.2f")) tool.wallLength = len[0];
+                if (Gui.sliderFloat("Thickness", th, 0f, 0.5f, "%.3f")) tool.wallThickness = th[0];
+                if (Gui.sliderFloat("Height", ht, 0.02f, 1f, "%.2f")) tool.wallHeight = Math.max(0.01, ht[0]);
             }
             case TREE -> {
                 float[] tr = {(float) tool.treeRadius}, ht = {(float) tool.treeHeight};
-                if (ImGui.sliderFloat("Tree radius", tr, 0.05f, 0.5f, "%.2f")) tool.treeRadius = tr[0];
-                if (ImGui.sliderFloat("Tree height", ht, 0.2f, 3f, "%.2f")) tool.treeHeight = ht[0];
+                if (Gui.sliderFloat("Tree radius", tr, 0.05f, 0.5f, "%.2f")) tool.treeRadius = tr[0];
+                if (Gui.sliderFloat("Tree height", ht, 0.2f, 3f, "%.2f")) tool.treeHeight = ht[0];
             }
             case BOX -> {
                 float[] bs = {(float) tool.boxSize}, ht = {(float) tool.boxHeight};
-                if (ImGui.sliderFloat("Box size", bs, 0.1f, 2f, "%.2f")) tool.boxSize = bs[0];
-                if (ImGui.sliderFloat("Box height", ht, 0.05f, 2f, "%.2f")) tool.boxHeight = ht[0];
+                if (Gui.sliderFloat("Box size", bs, 0.1f, 2f, "%.2f")) tool.boxSize = bs[0];
+                if (Gui.sliderFloat("Box height", ht, 0.05f, 2f, "%.2f")) tool.boxHeight = ht[0];
             }
             case MODEL -> {
                 List<String> models = ModelCatalog.BUNDLED;
-                ImInt choice = new ImInt(Math.max(0, models.indexOf(tool.modelFile)));
-                if (ImGui.combo("Model", choice, models.toArray(new String[0]))) tool.modelFile = models.get(choice.get());
+                GuiInt choice = new GuiInt(Math.max(0, models.indexOf(tool.modelFile)));
+                if (Gui.combo("Model", choice, models.toArray(new String[0]))) tool.modelFile = models.get(choice.get());
                 float[] sc = {(float) tool.modelScale};
-                if (ImGui.sliderFloat("Scale", sc, 0.1f, 3f, "%.2f")) tool.modelScale = Math.max(0.01, sc[0]);
+                if (Gui.sliderFloat("Scale", sc, 0.1f, 3f, "%.2f")) tool.modelScale = Math.max(0.01, sc[0]);
             }
         }
         float[] re = {(float) tool.restitution};
-        if (ImGui.sliderFloat("Restitution", re, 0f, 1f, "%.2f")) tool.restitution = re[0];
+        if (Gui.sliderFloat("Restitution", re, 0f, 1f, "%.2f")) tool.restitution = re[0];
     }
 
     /** The selected object's sizes and restitution; a typed value is one undoable edit when the field is left. */
@@ -734,28 +738,28 @@ public final class EditorApp {
         }
         try {
             if (o instanceof Obstacle.Wall) {
-                ImGui.inputDouble("Thickness m", objA);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
-                ImGui.inputDouble("Height m", objB);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
+                Gui.inputDouble("Thickness m", objA);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
+                Gui.inputDouble("Height m", objB);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
             } else if (o instanceof Obstacle.Tree) {
-                ImGui.inputDouble("Radius m", objA);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
-                ImGui.inputDouble("Height m", objB);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
+                Gui.inputDouble("Radius m", objA);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
+                Gui.inputDouble("Height m", objB);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
             } else if (o instanceof Obstacle.Box) {
-                ImGui.inputDouble("Width m", objA);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
-                ImGui.inputDouble("Depth m", objB);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
-                ImGui.inputDouble("Height m", objC);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
+                Gui.inputDouble("Width m", objA);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
+                Gui.inputDouble("Depth m", objB);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
+                Gui.inputDouble("Height m", objC);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
             } else {
-                ImGui.inputDouble("Scale", objA);
-                if (ImGui.isItemDeactivatedAfterEdit()) editor.setModelScale(selected, objA.get());
+                Gui.inputDouble("Scale", objA);
+                if (Gui.isItemDeactivatedAfterEdit()) editor.setModelScale(selected, objA.get());
             }
-            ImGui.inputDouble("Restitution", objRestitution);
-            if (ImGui.isItemDeactivatedAfterEdit()) editor.setRestitution(selected, objRestitution.get());
+            Gui.inputDouble("Restitution", objRestitution);
+            if (Gui.isItemDeactivatedAfterEdit()) editor.setRestitution(selected, objRestitution.get());
         } catch (IllegalArgumentException e) {
             say(e.getMessage());
             selectedFieldsFor = -1; // show the object's values again
@@ -776,23 +780,23 @@ public final class EditorApp {
     private void zoneList() {
         List<Zone> zones = editor.zones();
         if (zones.isEmpty()) return;
-        ImGui.separator();
-        ImGui.text("Friction zones: " + zones.size() + " (later ones win)");
+        Gui.separator();
+        Gui.text("Friction zones: " + zones.size() + " (later ones win)");
         for (int i = 0; i < zones.size(); i++) {
-            if (ImGui.selectable(i + " " + ZoneTools.describe(zones.get(i)) + "##z" + i, i == selectedZone)) {
+            if (Gui.selectable(i + " " + ZoneTools.describe(zones.get(i)) + "##z" + i, i == selectedZone)) {
                 selectedZone = i;
                 zoneKinetic.set(zones.get(i).kineticFriction());
                 zoneStatic.set(zones.get(i).staticFriction());
             }
         }
         if (selectedZone < 0 || selectedZone >= zones.size()) return;
-        ImGui.textWrapped(ZoneTools.describe(zones.get(selectedZone))); // the list cuts long lines
+        Gui.textWrapped(ZoneTools.describe(zones.get(selectedZone))); // the list cuts long lines
         try {
-            ImGui.inputDouble("Zone mu_k", zoneKinetic);
-            if (ImGui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
-            ImGui.inputDouble("Zone mu_s", zoneStatic);
-            if (ImGui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
-            if (ImGui.button("Delete zone")) {
+            Gui.inputDouble("Zone mu_k", zoneKinetic);
+            if (Gui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
+            Gui.inputDouble("Zone mu_s", zoneStatic);
+            if (Gui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
+            if (Gui.button("Delete zone")) {
                 editor.removeZone(selectedZone);
                 selectedZone = -1;
             }
@@ -823,90 +827,90 @@ public final class EditorApp {
 
     private void coursePanel(int fw, int fh) {
         syncFields();
-        ImGui.setNextWindowPos(fw - 8, fh - 48, ImGuiCond.Always, 1f, 1f);
-        ImGui.setNextWindowSize(330, 0, ImGuiCond.Always);
-        ImGui.begin("Course", ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
+        Gui.setNextWindowPos(fw - 8, fh - 48, GuiCond.Always, 1f, 1f);
+        Gui.setNextWindowSize(330, 0, GuiCond.Always);
+        Gui.begin("Course", GuiWindowFlags.NoMove | GuiWindowFlags.NoCollapse);
         try {
-            ImGui.inputText("Name", courseName);
-            if (ImGui.isItemDeactivatedAfterEdit()) editor.setName(courseName.get());
-            ImGui.inputDouble("Start x", startX);
-            ImGui.inputDouble("Start y", startY);
-            if (ImGui.button("Set start")) editor.setStart(startX.get(), startY.get());
-            ImGui.inputDouble("Hole x", holeX);
-            ImGui.inputDouble("Hole y", holeY);
-            if (ImGui.button("Set hole")) editor.setHole(holeX.get(), holeY.get());
-            ImGui.inputDouble("Hole radius", holeRadius);
-            if (ImGui.isItemDeactivatedAfterEdit()) editor.setHoleRadius(holeRadius.get());
-            if (ImGui.combo("Hole rule", holeRule, new String[]{"rest", "capture"})) {
+            Gui.inputText("Name", courseName);
+            if (Gui.isItemDeactivatedAfterEdit()) editor.setName(courseName.get());
+            Gui.inputDouble("Start x", startX);
+            Gui.inputDouble("Start y", startY);
+            if (Gui.button("Set start")) editor.setStart(startX.get(), startY.get());
+            Gui.inputDouble("Hole x", holeX);
+            Gui.inputDouble("Hole y", holeY);
+            if (Gui.button("Set hole")) editor.setHole(holeX.get(), holeY.get());
+            Gui.inputDouble("Hole radius", holeRadius);
+            if (Gui.isItemDeactivatedAfterEdit()) editor.setHoleRadius(holeRadius.get());
+            if (Gui.combo("Hole rule", holeRule, new String[]{"rest", "capture"})) {
                 editor.setHoleRule(HoleRule.values()[holeRule.get()]);
             }
-            ImGui.separator();
-            ImGui.inputDouble("Gravity", gravity);
-            ImGui.inputDouble("mu_k", kinetic);
-            ImGui.inputDouble("mu_s", statics);
-            ImGui.inputDouble("Max speed", maxSpeed);
-            if (ImGui.button("Apply physics")) {
+            Gui.separator();
+            Gui.inputDouble("Gravity", gravity);
+            Gui.inputDouble("mu_k", kinetic);
+            Gui.inputDouble("mu_s", statics);
+            Gui.inputDouble("Max speed", maxSpeed);
+            if (Gui.button("Apply physics")) {
                 PhysicsSettings p = editor.toCourse().physics();
                 editor.setPhysics(new PhysicsSettings(gravity.get(), kinetic.get(), statics.get(), maxSpeed.get(), p.model(),
                         p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution()));
             }
-            if (ImGui.inputInt("Max objects", maxObjects)) editor.setMaxObstacles(Math.max(0, maxObjects.get()));
+            if (Gui.inputInt("Max objects", maxObjects)) editor.setMaxObstacles(Math.max(0, maxObjects.get()));
         } catch (IllegalArgumentException e) {
             say(e.getMessage());
             fieldsVersion = -1;
         }
-        ImGui.separator();
+        Gui.separator();
         if (problems.isEmpty()) {
-            ImGui.textColored(0.5f, 1f, 0.5f, 1f, "No problems: ready to save");
+            Gui.textColored(0.5f, 1f, 0.5f, 1f, "No problems: ready to save");
         } else {
-            for (Problem p : problems) ImGui.textColored(1f, 0.4f, 0.4f, 1f, p.message());
+            for (Problem p : problems) Gui.textColored(1f, 0.4f, 0.4f, 1f, p.message());
         }
-        ImGui.separator();
+        Gui.separator();
         List<String> names = BotCatalog.names();
-        ImGui.setNextItemWidth(120);
-        ImGui.combo("##bot", botChoice, names.toArray(new String[0]));
-        ImGui.sameLine();
-        if (ImGui.button("Ask a bot")) askBot();
-        ImGui.sameLine();
-        if (ImGui.button("Play it")) playIt();
+        Gui.setNextItemWidth(120);
+        Gui.combo("##bot", botChoice, names.toArray(new String[0]));
+        Gui.sameLine();
+        if (Gui.button("Ask a bot")) askBot();
+        Gui.sameLine();
+        if (Gui.button("Play it")) playIt();
         if (botCheck != null) {
             if (!botCheck.isDone()) {
-                ImGui.text(botCheck.message());
-                ImGui.progressBar((float) botCheck.progress(), 200, 0);
-                ImGui.sameLine();
-                if (ImGui.button("Cancel##bot")) botCheck.cancel();
-            } else if (botCheck.result() != null) ImGui.text(botCheck.result().describe());
-            else ImGui.text(botCheck.failure());
+                Gui.text(botCheck.message());
+                Gui.progressBar((float) botCheck.progress(), 200, 0);
+                Gui.sameLine();
+                if (Gui.button("Cancel##bot")) botCheck.cancel();
+            } else if (botCheck.result() != null) Gui.text(botCheck.result().describe());
+            else Gui.text(botCheck.failure());
         }
-        ImGui.end();
+        Gui.end();
     }
 
     private void statusLine(int fw, int fh) {
-        ImGui.setNextWindowPos(8, fh - 8, ImGuiCond.Always, 0f, 1f);
-        ImGui.begin("##status", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+        Gui.setNextWindowPos(8, fh - 8, GuiCond.Always, 0f, 1f);
+        Gui.begin("##status", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
         String state = editor.isDirty() ? "unsaved changes" : "saved";
         String tip = String.format(Locale.ROOT, "%s | tool (%.2f, %.2f) | %s%s", state, tool.x(), tool.y(),
                 tool.mode() == ToolController.Mode.TERRAIN ? "terrain: " + tool.action().label()
                         : "object: " + tool.kind().name().toLowerCase(Locale.ROOT),
                 message != null ? " | " + message : "");
-        ImGui.text(tip);
-        ImGui.end();
+        Gui.text(tip);
+        Gui.end();
     }
 
     private void dialogs(int fw, int fh) {
         if (dialog == Dialog.NONE) return;
-        ImGui.setNextWindowPos(fw * 0.5f, fh * 0.5f, ImGuiCond.Always, 0.5f, 0.5f);
-        ImGui.begin("##dialog", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize);
+        Gui.setNextWindowPos(fw * 0.5f, fh * 0.5f, GuiCond.Always, 0.5f, 0.5f);
+        Gui.begin("##dialog", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
         switch (dialog) {
             case NEW -> {
-                ImGui.text("New course");
-                ImGui.inputText("Name", newName);
-                ImGui.inputDouble("Width m", newWidth);
-                ImGui.inputDouble("Depth m", newDepth);
-                ImGui.inputDouble("Grid spacing m", newSpacing);
-                ImGui.inputText("Height h(x, y)", newExpression);
-                ImGui.textDisabled("empty: flat; e.g. 0.2 + 0.1*sin(x)*cos(y)");
-                if (ImGui.button("Create")) {
+                Gui.text("New course");
+                Gui.inputText("Name", newName);
+                Gui.inputDouble("Width m", newWidth);
+                Gui.inputDouble("Depth m", newDepth);
+                Gui.inputDouble("Grid spacing m", newSpacing);
+                Gui.inputText("Height h(x, y)", newExpression);
+                Gui.textDisabled("empty: flat; e.g. 0.2 + 0.1*sin(x)*cos(y)");
+                if (Gui.button("Create")) {
                     try {
                         replaceEditor(CourseEditor.create(newName.get(), newWidth.get(), newDepth.get(), newSpacing.get(),
                                 newExpression.get()));
@@ -915,14 +919,14 @@ public final class EditorApp {
                         say(e.getMessage());
                     }
                 }
-                ImGui.sameLine();
-                if (ImGui.button("Cancel")) dialog = Dialog.NONE;
+                Gui.sameLine();
+                if (Gui.button("Cancel")) dialog = Dialog.NONE;
             }
             case OPEN, SAVE_AS -> {
-                ImGui.text(dialog == Dialog.OPEN ? "Open course file" : "Save course as");
-                ImGui.setNextItemWidth(420);
-                ImGui.inputText("##path", pathField);
-                if (ImGui.button(dialog == Dialog.OPEN ? "Open" : "Save")) {
+                Gui.text(dialog == Dialog.OPEN ? "Open course file" : "Save course as");
+                Gui.setNextItemWidth(420);
+                Gui.inputText("##path", pathField);
+                if (Gui.button(dialog == Dialog.OPEN ? "Open" : "Save")) {
                     Path p = Path.of(pathField.get().trim());
                     if (dialog == Dialog.OPEN) {
                         try {
@@ -935,13 +939,13 @@ public final class EditorApp {
                         dialog = Dialog.NONE;
                     }
                 }
-                ImGui.sameLine();
-                if (ImGui.button("Cancel")) dialog = Dialog.NONE;
+                Gui.sameLine();
+                if (Gui.button("Cancel")) dialog = Dialog.NONE;
             }
             case RECOVERY -> {
-                ImGui.text("The editor did not close cleanly last time.");
-                ImGui.text("Recover the unsaved course from " + recovery.file() + "?");
-                if (ImGui.button("Recover")) {
+                Gui.text("The editor did not close cleanly last time.");
+                Gui.text("Recover the unsaved course from " + recovery.file() + "?");
+                if (Gui.button("Recover")) {
                     try {
                         replaceEditor(CourseEditor.recovered(recovery.load()));
                         recovery.release();
@@ -951,31 +955,31 @@ public final class EditorApp {
                     }
                     dialog = Dialog.NONE;
                 }
-                ImGui.sameLine();
-                if (ImGui.button("Discard")) {
+                Gui.sameLine();
+                if (Gui.button("Discard")) {
                     recovery.clear();
                     dialog = Dialog.NONE;
                 }
             }
             case CONFIRM_CLOSE -> {
-                ImGui.text("The course has unsaved changes.");
-                if (ImGui.button("Save and close")) {
+                Gui.text("The course has unsaved changes.");
+                if (Gui.button("Save and close")) {
                     if (editor.file() == null) openSaveAs();
                     else if (saveTo(editor.file())) glfwSetWindowShouldClose(window.handle(), true);
                 }
-                ImGui.sameLine();
-                if (ImGui.button("Close without saving")) {
+                Gui.sameLine();
+                if (Gui.button("Close without saving")) {
                     dialog = Dialog.NONE;
                     editor.endStroke();
                     glfwSetWindowShouldClose(window.handle(), true);
                 }
-                ImGui.sameLine();
-                if (ImGui.button("Cancel")) dialog = Dialog.NONE;
+                Gui.sameLine();
+                if (Gui.button("Cancel")) dialog = Dialog.NONE;
             }
             default -> {
             }
         }
-        ImGui.end();
+        Gui.end();
     }
 
     /**

@@ -7,7 +7,7 @@ import java.util.List;
 
 /**
  * Starts another window of this program ({@code minigolf play FILE}, {@code minigolf edit}) as a
- * separate process with the same Java and class path: each window keeps its own GL and ImGui
+ * separate process with the same Java and class path: each window keeps its own GL and interface
  * context, and neither blocks the other.
  */
 public final class ProcessLauncher {

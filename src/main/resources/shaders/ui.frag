@@ -1,0 +1,9 @@
+// Shapes sample a white texel, text the font atlas (white with coverage as alpha), images their texture.
+in vec2 vUv;
+in vec4 vColor;
+uniform sampler2D uTexture;
+out vec4 fragColor;
+
+void main() {
+    fragColor = vColor * texture(uTexture, vUv);
+}
