@@ -46,7 +46,6 @@ import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
-import minigolf.ui.CameraDrag;
 import minigolf.ui.NuklearLayer;
 import minigolf.ui.PlayerColors;
 import minigolf.ui.Screen;
@@ -76,18 +75,17 @@ public final class GameApp implements UiActions, UiView {
         }
     }
 
-    private static final double AIM_PICK_PIXELS = 48;
     /** Frames a headless run (--frames) shows the card between holes before it plays the next. */
     static final int ROUND_CARD_FRAMES = 30;
 
     private final Options options;
     private final SettingsStore store;
-    private UserSettings settings;
-    private World world;
+    UserSettings settings;
+    World world;
     private Path coursePath;
-    private Game game;
+    Game game;
     /** The round being played (null for a single course); {@link #game} is its current hole's game. */
-    private RoundGame round;
+    RoundGame round;
     /** Scores kept between games (null when the file is broken: it is then left alone). */
     private HighScores highScores;
     private AudioSettings audio;
@@ -99,7 +97,7 @@ public final class GameApp implements UiActions, UiView {
     private Round roundToPlay;
     /** Frames the between-holes card has been shown (the headless run moves on by itself). */
     private int cardFrames;
-    private StrokeAnimator animator;
+    StrokeAnimator animator;
     private BotTurn botTurn;
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
     private final BotSeats botSeats = new BotSeats();
@@ -107,26 +105,22 @@ public final class GameApp implements UiActions, UiView {
     private double messageUntil;
     private String notice;
     private final Deque<double[]> script;
-    private final Screens screens = new Screens(this);
+    final Screens screens = new Screens(this);
     private final Thumbnails thumbnails = new Thumbnails();
     private List<CourseEntry> courses;
     private List<RoundEntry> rounds;
 
-    private Window window;
-    private SceneRenderer renderer;
+    Window window;
+    SceneRenderer renderer;
     private RenderQuality quality = RenderQuality.HIGH;
-    private OrbitCamera camera;
-    private NuklearLayer uiLayer;
+    OrbitCamera camera;
+    NuklearLayer uiLayer;
     private boolean rebuildScene;
     /** Called at the start of every pass of the loop (drawn or not) with the window: tests drive resizes with it. */
     private BiConsumer<Integer, Window> loopHook = (pass, w) -> { };
 
-    // Mouse.
-    private boolean rotating, panning, aiming;
-    private double lastX, lastY;
-    private double[] aimVelocity;
-    /** The loft for the next stroke (Loft: 0 = putt, up to 60 degrees), set with the wheel while aiming or Up/Down. */
-    private int loft;
+    /** Keys and mouse: aiming, the loft, turning and moving the camera. */
+    private final GameInput input = new GameInput(this);
     /** The aim guide's path for {@link #guideKey} (x, y, vx, vy), reused while the aim holds (AimView compares it by identity). */
     private float[] guidePath;
     /** An aim to show as soon as a human player can aim (play --aim, for screenshots), or null. */
@@ -134,7 +128,7 @@ public final class GameApp implements UiActions, UiView {
     private double[] guideKey;
     private final Vector3f followTarget = new Vector3f();
     /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
-    private boolean turnToHole;
+    boolean turnToHole;
     // Watching the hole again ("Watch again"): the replay, its rolling stroke and where to go back to.
     private HoleReplay replay;
     private StrokeAnimator replayAnimator;
@@ -178,7 +172,7 @@ public final class GameApp implements UiActions, UiView {
         try (Window w = new Window("Minigolf", 1280, 720, wo)) {
             window = w;
             window.setVsync(settings.vsync() && options.frames() <= 0);
-            installInput();
+            input.install();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
             try (NuklearLayer ui = new NuklearLayer(window.handle(), scale); Sounds sound = Sounds.open(audio)) {
                 sounds = sound;
@@ -425,13 +419,13 @@ public final class GameApp implements UiActions, UiView {
      */
     public void showAim(double vx, double vy, int loftDegrees) {
         pendingAim = new double[]{vx, vy};
-        loft = Loft.clamp(loftDegrees);
+        input.loft = Loft.clamp(loftDegrees);
     }
 
     private void drawFrame(int fw, int fh, float time) {
         if (pendingAim != null && canAim()) {
-            aiming = true;
-            aimVelocity = pendingAim;
+            input.aiming = true;
+            input.aimVelocity = pendingAim;
             pendingAim = null;
         }
         renderer.setBalls(ballViews());
@@ -477,11 +471,12 @@ public final class GameApp implements UiActions, UiView {
     }
 
     private AimView aimView() {
-        if (!aiming || aimVelocity == null || game == null || game.currentPlayer() < 0) return null;
+        double[] aimVelocity = input.aimVelocity;
+        if (!input.aiming || aimVelocity == null || game == null || game.currentPlayer() < 0) return null;
         double speed = Math.hypot(aimVelocity[0], aimVelocity[1]);
         if (speed < 1e-6) return null;
         PlayerState s = game.player(game.currentPlayer());
-        double[] v = Loft.velocity(aimVelocity[0], aimVelocity[1], loft, world.physics().maxSpeed());
+        double[] v = Loft.velocity(aimVelocity[0], aimVelocity[1], input.loft, world.physics().maxSpeed());
         return new AimView((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y()),
                 (float) aimVelocity[0], (float) aimVelocity[1], (float) (speed / world.physics().maxSpeed()),
                 settings.aimGuide() ? guidePath(s.x(), s.y(), v) : null);
@@ -499,7 +494,7 @@ public final class GameApp implements UiActions, UiView {
 
     /** The camera glides after the ball in play: the rolling one, else the next player's. */
     private void followBall() {
-        if (game == null || rotating || panning) return;
+        if (game == null || input.rotating || input.panning) return;
         if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
             followTarget.set((float) replayAnimator.x(), (float) replayAnimator.y(),
                     (float) world.terrain().height(replayAnimator.x(), replayAnimator.y()));
@@ -527,137 +522,9 @@ public final class GameApp implements UiActions, UiView {
         }
     }
 
-    // ---- Input --------------------------------------------------------------------------------
-
-    /** Installed before the interface layer, whose GLFW callbacks chain to these. */
-    private void installInput() {
-        long h = window.handle();
-        glfwSetKeyCallback(h, (win, key, scancode, action, mods) -> {
-            if (action != GLFW_PRESS || (uiLayer != null && uiLayer.wantsKeyboard())) return;
-            switch (key) {
-                case GLFW_KEY_ESCAPE -> escape();
-                case GLFW_KEY_F1 -> {
-                    if (screens.screen() == Screen.HELP) screens.closeHelp();
-                    else screens.openHelp();
-                }
-                case GLFW_KEY_F11 -> window.toggleFullscreen();
-                case GLFW_KEY_R -> camera.reset();
-                case GLFW_KEY_UP, GLFW_KEY_DOWN -> loft = Loft.step(loft, key == GLFW_KEY_UP ? 1 : -1);
-                case GLFW_KEY_H -> renderer.terrainPass().setColorMode(renderer.terrainPass().colorMode().next());
-                case GLFW_KEY_SPACE -> {
-                    if (animator != null) { // skip the animation: the same stroke, run to its end
-                        animator.advance(1e9, 1);
-                        while (!animator.isFinished()) animator.advance(1e9, 1);
-                    }
-                }
-                default -> {
-                }
-            }
-        });
-        glfwSetMouseButtonCallback(h, (win, button, action, mods) -> {
-            boolean down = action == GLFW_PRESS;
-            double[] x = new double[1], y = new double[1];
-            glfwGetCursorPos(win, x, y);
-            if (down && uiLayer != null && uiLayer.wantsMouse()) return;
-            // The camera's scheme is the editor's (CameraDrag); a plain left-drag aims, or turns away from the ball.
-            CameraDrag drag = down && !aiming ? CameraDrag.of(button, mods) : CameraDrag.NONE;
-            if (drag != CameraDrag.NONE || !down) {
-                rotating = drag == CameraDrag.ROTATE;
-                panning = drag == CameraDrag.PAN;
-                if (down) turnToHole = false; // the player's own view wins
-            }
-            if (button == GLFW_MOUSE_BUTTON_LEFT && drag == CameraDrag.NONE) {
-                if (down && canAim() && nearBall(x[0], y[0])) {
-                    aiming = true;
-                    aimVelocity = null;
-                } else if (!down && aiming) {
-                    aiming = false;
-                    double[] v = aimVelocity;
-                    aimVelocity = null;
-                    if (v != null && Math.hypot(v[0], v[1]) > 0.02) {
-                        double[] shot = Loft.velocity(v[0], v[1], loft, world.physics().maxSpeed());
-                        hit(shot[0], shot[1], shot[2]);
-                    }
-                } else if (down) {
-                    rotating = true;
-                    turnToHole = false;
-                }
-            }
-            if (button == GLFW_MOUSE_BUTTON_RIGHT && down && aiming) {
-                aiming = false; // right click cancels the aim
-                aimVelocity = null;
-            }
-            lastX = x[0];
-            lastY = y[0];
-        });
-        glfwSetCursorPosCallback(h, (win, x, y) -> {
-            float dx = (float) (x - lastX), dy = (float) (y - lastY);
-            lastX = x;
-            lastY = y;
-            if (aiming) {
-                aimVelocity = aimFromCursor(x, y);
-            } else if (rotating) {
-                float k = (float) (0.006 * settings.mouseSpeed());
-                camera.rotate(-dx * k, dy * k);
-            } else if (panning) {
-                int[] ww = new int[1], wh = new int[1];
-                glfwGetWindowSize(win, ww, wh);
-                camera.pan(dx, dy, Math.max(1, wh[0]));
-            }
-        });
-        glfwSetScrollCallback(h, (win, xoff, yoff) -> {
-            if (uiLayer != null && uiLayer.wantsMouse()) return;
-            if (aiming) loft = Loft.step(loft, (int) Math.signum(yoff)); // while aiming the wheel lofts the shot
-            else camera.zoom((float) yoff);
-        });
-    }
-
-    private void escape() {
-        switch (screens.screen()) {
-            case PLAYING -> screens.show(Screen.PAUSED);
-            case PAUSED -> screens.show(Screen.PLAYING);
-            case TEST_BOT -> toMainMenu();
-            case COURSES, NEW_GAME, SETTINGS, SCORECARD -> screens.show(game != null && !game.isOver()
-                    && screens.screen() == Screen.SETTINGS ? Screen.PAUSED : Screen.MAIN_MENU);
-            case HELP -> screens.closeHelp();
-            case REPLAY -> stopReplay();
-            case ROUND_CARD -> {
-                if (round != null && round.isOver()) toMainMenu();
-            }
-            case MAIN_MENU -> {
-            }
-        }
-    }
-
-    private boolean canAim() {
+    boolean canAim() {
         return screens.screen() == Screen.PLAYING && game != null && !game.isShotInFlight() && !game.isOver()
                 && !game.players().get(game.currentPlayer()).isBot();
-    }
-
-    /** Cursor (window coordinates) to framebuffer pixels. */
-    private double[] toFramebuffer(double x, double y) {
-        int[] ww = new int[1], wh = new int[1];
-        glfwGetWindowSize(window.handle(), ww, wh);
-        double sx = (double) window.framebufferWidth() / Math.max(1, ww[0]);
-        double sy = (double) window.framebufferHeight() / Math.max(1, wh[0]);
-        return new double[]{x * sx, y * sy};
-    }
-
-    private boolean nearBall(double x, double y) {
-        PlayerState s = game.player(game.currentPlayer());
-        int fw = window.framebufferWidth(), fh = window.framebufferHeight();
-        float[] p = camera.project(new Vector3f((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y())), fw, fh);
-        double[] c = toFramebuffer(x, y);
-        return p != null && Math.hypot(p[0] - c[0], p[1] - c[1]) <= AIM_PICK_PIXELS * Math.max(1, fh / 900.0);
-    }
-
-    /** Where the cursor ray meets the horizontal plane through the ball, turned into a shot. */
-    private double[] aimFromCursor(double x, double y) {
-        PlayerState s = game.player(game.currentPlayer());
-        double[] c = toFramebuffer(x, y), p = minigolf.render.CursorRay.onPlane(camera, window.framebufferWidth(),
-                window.framebufferHeight(), c[0], c[1], world.terrain().height(s.x(), s.y()));
-        if (p == null) return aimVelocity;
-        return AimModel.velocityForPull(s.x(), s.y(), p[0], p[1], world.physics().maxSpeed(), AimModel.DEFAULT_FULL_PULL);
     }
 
     // ---- UiActions ----------------------------------------------------------------------------
@@ -773,7 +640,7 @@ public final class GameApp implements UiActions, UiView {
         boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
         animator = new StrokeAnimator(game.startShot(vx, vy, vz, strokeSounds(firstStroke)), game.settings().dt());
         StrokeFeedback.hit(sounds, Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
-        loft = 0; // the next stroke starts as a putt again
+        input.loft = 0; // the next stroke starts as a putt again
     }
 
     @Override
@@ -1008,12 +875,12 @@ public final class GameApp implements UiActions, UiView {
 
     @Override
     public double aimSpeed() {
-        return aiming && aimVelocity != null ? Math.hypot(aimVelocity[0], aimVelocity[1]) : -1;
+        return input.aiming && input.aimVelocity != null ? Math.hypot(input.aimVelocity[0], input.aimVelocity[1]) : -1;
     }
 
     @Override
     public int loftDegrees() {
-        return loft;
+        return input.loft;
     }
 
     @Override
