@@ -60,7 +60,7 @@ final class GameInput {
             double[] x = new double[1], y = new double[1];
             glfwGetCursorPos(win, x, y);
             if (down && app.uiLayer != null && app.uiLayer.wantsMouse()) return;
-            // The app.camera's scheme is the editor's (CameraDrag); a plain left-drag aims, or turns away from the ball.
+            // The camera's scheme is the editor's (CameraDrag); a plain left-drag aims, or turns away from the ball.
             CameraDrag drag = down && !aiming ? CameraDrag.of(button, mods) : CameraDrag.NONE;
             if (drag != CameraDrag.NONE || !down) {
                 rotating = drag == CameraDrag.ROTATE;
@@ -130,7 +130,7 @@ final class GameInput {
         }
     }
 
-    /** Cursor (app.window coordinates) to framebuffer pixels. */
+    /** Cursor (window coordinates) to framebuffer pixels. */
     private double[] toFramebuffer(double x, double y) {
         int[] ww = new int[1], wh = new int[1];
         glfwGetWindowSize(app.window.handle(), ww, wh);

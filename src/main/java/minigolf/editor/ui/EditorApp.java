@@ -8,24 +8,17 @@ import java.util.Locale;
 import minigolf.course.Course;
 import minigolf.course.CourseException;
 import minigolf.course.CourseWriter;
-import minigolf.course.HoleRule;
-import minigolf.course.Obstacle;
-import minigolf.course.PhysicsModel;
-import minigolf.course.PhysicsSettings;
 import minigolf.course.Vec2;
-import minigolf.course.Zone;
 import minigolf.editor.BotCheck;
 import minigolf.editor.ChangeSet;
 import minigolf.editor.CourseEditor;
 import minigolf.editor.EditableCourse;
 import minigolf.editor.EditorKey;
-import minigolf.editor.ModelCatalog;
 import minigolf.editor.ObstacleTools;
 import minigolf.editor.Problem;
 import minigolf.editor.Recovery;
 import minigolf.editor.TerrainPicker;
 import minigolf.editor.ToolController;
-import minigolf.editor.ZoneTools;
 import minigolf.game.BotCatalog;
 import minigolf.ui.PlanOverlay;
 import minigolf.game.SettingsStore;
@@ -40,12 +33,9 @@ import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
 import minigolf.ui.Gui;
-import minigolf.ui.GuiCond;
-import minigolf.ui.GuiDouble;
 import minigolf.ui.GuiDrawList;
 import minigolf.ui.GuiInt;
 import minigolf.ui.GuiString;
-import minigolf.ui.GuiWindowFlags;
 import minigolf.ui.NuklearLayer;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -72,30 +62,29 @@ public final class EditorApp {
     public record Options(Path screenshot, int frames, List<int[]> scriptedKeys, Path recoveryDir, boolean visible) {
     }
 
-    private enum Dialog { NONE, NEW, OPEN, SAVE_AS, RECOVERY, CONFIRM_CLOSE }
+    enum Dialog { NONE, NEW, OPEN, SAVE_AS, RECOVERY, CONFIRM_CLOSE }
 
-    private static final String[] ACTIONS = {"Raise", "Lower", "Smooth", "Flatten", "Paint grass", "Paint sand",
-            "Paint friction", "Set height", "Delete cells", "Restore cells", "Place start", "Place hole"};
-    private static final String[] KINDS = {"Wall", "Tree", "Box", "Model"};
 
     private final Options options;
-    private final Recovery recovery;
-    private CourseEditor editor;
-    private ToolController tool;
-    private Window window;
+    /** The menu bar, the Tools and Course panels, the status line and the dialogs. */
+    private final EditorPanels panels = new EditorPanels(this);
+    final Recovery recovery;
+    CourseEditor editor;
+    ToolController tool;
+    Window window;
     private RenderQuality quality = RenderQuality.HIGH;
     private NuklearLayer uiLayer;
     private SceneRenderer renderer;
-    private OrbitCamera camera;
-    private boolean heightMap, rebuildScene = true;
-    private String message;
+    OrbitCamera camera;
+    boolean heightMap, rebuildScene = true;
+    String message;
     private double messageUntil;
-    private List<Problem> problems = List.of();
+    List<Problem> problems = List.of();
     private boolean problemsStale = true;
     private double lastValidation = -1;
-    private Dialog dialog = Dialog.NONE;
-    private BotCheck botCheck;
-    private final GuiInt botChoice = new GuiInt(0);
+    Dialog dialog = Dialog.NONE;
+    BotCheck botCheck;
+    final GuiInt botChoice = new GuiInt(0);
     private Path playFile;
     // Mouse.
     private boolean rotating, panning, stroking, dragging;
@@ -103,25 +92,11 @@ public final class EditorApp {
     private double dragStartX, dragStartY, lastDabX, lastDabY;
     private double lastX, lastY;
     private boolean cursorSeen;
-    // Dialog fields.
-    private final GuiString newName = new GuiString("My course", 128), newExpression = new GuiString("", 256);
-    private final GuiDouble newWidth = new GuiDouble(10), newDepth = new GuiDouble(6), newSpacing = new GuiDouble(0.05);
-    private final GuiString pathField = new GuiString("courses/my-course.json", 512);
-    // Panel fields.
-    private final GuiDouble startX = new GuiDouble(), startY = new GuiDouble(), holeX = new GuiDouble(), holeY = new GuiDouble();
-    private final GuiDouble holeRadius = new GuiDouble(), gravity = new GuiDouble(), kinetic = new GuiDouble(),
-            statics = new GuiDouble(), maxSpeed = new GuiDouble();
-    private final GuiInt holeRule = new GuiInt(), maxObjects = new GuiInt();
-    private final GuiString courseName = new GuiString(128);
-    private long fieldsVersion = -1;
-    private int selected = -1;
-    // The selected object's fields (refreshed when the selection or the course changes) and the selected zone.
-    private final GuiDouble objA = new GuiDouble(), objB = new GuiDouble(), objC = new GuiDouble(), objRestitution = new GuiDouble();
-    private int selectedFieldsFor = -1;
-    private long selectedFieldsVersion = -1;
-    private int selectedZone = -1;
-    private final GuiDouble zoneKinetic = new GuiDouble(), zoneStatic = new GuiDouble();
-    private float time;
+    final GuiString pathField = new GuiString("courses/my-course.json", 512);
+    long fieldsVersion = -1;
+    int selected = -1;
+    int selectedZone = -1;
+    float time;
 
     public EditorApp(CourseEditor editor, Options options) {
         this.editor = editor;
@@ -208,7 +183,7 @@ public final class EditorApp {
         }
     }
 
-    private void say(String text) {
+    void say(String text) {
         if (text == null) return;
         message = text;
         messageUntil = glfwGetTime() + 5;
@@ -381,7 +356,7 @@ public final class EditorApp {
         }
     }
 
-    private void toggleHeightMap() {
+    void toggleHeightMap() {
         heightMap = !heightMap;
         renderer.terrainPass().setColorMode(heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN);
     }
@@ -456,7 +431,7 @@ public final class EditorApp {
 
     // ---- Actions --------------------------------------------------------------------------------
 
-    private void save() {
+    void save() {
         if (editor.file() == null) {
             openSaveAs();
             return;
@@ -465,12 +440,12 @@ public final class EditorApp {
     }
 
     /** "Save as", suggesting the course's file or a new one in the player's courses folder (the game lists it). */
-    private void openSaveAs() {
+    void openSaveAs() {
         pathField.set(minigolf.editor.SaveLocation.suggest(options.recoveryDir(), editor.file(), editor.world().course().name()).toString());
         dialog = Dialog.SAVE_AS;
     }
 
-    private boolean saveTo(Path file) {
+    boolean saveTo(Path file) {
         try {
             if (file.toAbsolutePath().getParent() != null) java.nio.file.Files.createDirectories(file.toAbsolutePath().getParent());
             editor.saveAs(file);
@@ -487,7 +462,7 @@ public final class EditorApp {
         }
     }
 
-    private void playIt() {
+    void playIt() {
         try {
             Course c = editor.toCourse();
             Path folder = editor.file() != null ? editor.file().toAbsolutePath().getParent() : options.recoveryDir();
@@ -506,7 +481,7 @@ public final class EditorApp {
         return List.of("play", course.toString(), "--players", "Player");
     }
 
-    private void askBot() {
+    void askBot() {
         List<String> names = BotCatalog.names();
         if (names.isEmpty()) return;
         ShotPlanner planner = BotCatalog.planner(names.get(Math.min(botChoice.get(), names.size() - 1)));
@@ -517,7 +492,7 @@ public final class EditorApp {
                 new BotCheck.Conditions(user.noise(), user.hideFrictionFromBots()));
     }
 
-    private void replaceEditor(CourseEditor next) {
+    void replaceEditor(CourseEditor next) {
         editor.endStroke();
         editor = next;
         tool = new ToolController(next);
@@ -539,11 +514,11 @@ public final class EditorApp {
         glViewport(0, 0, fw, fh);
         uiLayer.newFrame();
         drawMarkers(fw, fh);
-        menuBar();
-        toolsPanel(fh);
-        coursePanel(fw, fh);
-        statusLine(fw, fh);
-        dialogs(fw, fh);
+        panels.menuBar();
+        panels.toolsPanel(fh);
+        panels.coursePanel(fw, fh);
+        panels.statusLine(fw, fh);
+        panels.dialogs(fw, fh);
         uiLayer.render();
     }
 
@@ -596,390 +571,6 @@ public final class EditorApp {
             dl.addLine(q[0] - 12, q[1] + 12, q[0] + 12, q[1] - 12, 0xFF2020FF, 4f);
             dl.addText(q[0] + 20, q[1] + 14, 0xFF4040FF, p.message());
         }
-    }
-
-    private void menuBar() {
-        if (!Gui.beginMainMenuBar()) return;
-        if (Gui.beginMenu("File")) {
-            if (Gui.menuItem("New...", "")) dialog = Dialog.NEW;
-            if (Gui.menuItem("Open...", "")) dialog = Dialog.OPEN;
-            if (Gui.menuItem("Save", "Ctrl+S")) save();
-            if (Gui.menuItem("Save as...", "")) openSaveAs();
-            if (Gui.menuItem("Quit", "")) {
-                if (editor.isDirty()) dialog = Dialog.CONFIRM_CLOSE;
-                else glfwSetWindowShouldClose(window.handle(), true);
-            }
-            Gui.endMenu();
-        }
-        if (Gui.beginMenu("Edit")) {
-            String u = editor.undoLabel(), r = editor.redoLabel();
-            if (Gui.menuItem("Undo " + (u == null ? "" : u), "Ctrl+Z", false, u != null)) say(tool.press(EditorKey.UNDO));
-            if (Gui.menuItem("Redo " + (r == null ? "" : r), "Ctrl+Y", false, r != null)) say(tool.press(EditorKey.REDO));
-            Gui.endMenu();
-        }
-        if (Gui.beginMenu("View")) {
-            if (Gui.menuItem("Height map", "H", heightMap, true)) toggleHeightMap();
-            if (Gui.menuItem("Reset camera", "R")) camera.reset();
-            Gui.endMenu();
-        }
-        if (Gui.beginMenu("Test")) {
-            if (Gui.menuItem("Play it", "")) playIt();
-            if (Gui.menuItem("Ask a bot", "")) askBot();
-            Gui.endMenu();
-        }
-        Gui.endMainMenuBar();
-    }
-
-    private void toolsPanel(int fh) {
-        Gui.setNextWindowPos(8, 32, GuiCond.Always);
-        Gui.setNextWindowSize(300, 0, GuiCond.Always);
-        Gui.setNextWindowSizeConstraints(300, 0, 300, fh - 32 - 3 * Gui.frameHeight()); // above the status line
-        Gui.begin("Tools", GuiWindowFlags.NoMove | GuiWindowFlags.NoResize | GuiWindowFlags.NoCollapse);
-        if (Gui.radioButton("Terrain tool", tool.mode() == ToolController.Mode.TERRAIN)) tool.setMode(ToolController.Mode.TERRAIN);
-        Gui.sameLine();
-        if (Gui.radioButton("Object tool", tool.mode() == ToolController.Mode.OBJECT)) tool.setMode(ToolController.Mode.OBJECT);
-        Gui.textDisabled("SHIFT switches, WASD moves,");
-        Gui.textDisabled("ENTER applies");
-        Gui.separator();
-        if (tool.mode() == ToolController.Mode.TERRAIN) {
-            ToolController.TerrainAction[] all = ToolController.TerrainAction.values();
-            for (int i = 0; i < all.length; i++) {
-                if (Gui.radioButton(ACTIONS[i], tool.action() == all[i])) tool.setAction(all[i]);
-                if (i % 2 == 0) Gui.sameLine(150);
-            }
-            Gui.separator();
-            float[] rad = {(float) tool.radius}, str = {(float) tool.strength};
-            if (Gui.sliderFloat("Radius m", rad, 0.05f, 3f, "%.2f")) tool.radius = rad[0];
-            if (Gui.sliderFloat("Strength", str, 0.005f, 1f, "%.3f")) tool.strength = str[0];
-            GuiDouble hh = new GuiDouble(tool.typedHeight), k = new GuiDouble(tool.typedKinetic), s = new GuiDouble(tool.typedStatic);
-            if (Gui.inputDouble("Height m", hh)) tool.typedHeight = hh.get();
-            if (Gui.inputDouble("Typed mu_k", k)) tool.typedKinetic = k.get();
-            if (Gui.inputDouble("Typed mu_s", s)) tool.typedStatic = s.get();
-            EditableCourse c = editor.course();
-            int ni = c.nearestColumn(tool.x()), nj = c.nearestRow(tool.y());
-            Gui.text(String.format(Locale.ROOT, "Node (%d, %d): h = %.3f m", ni, nj, c.height(ni, nj)));
-            Gui.text(String.format(Locale.ROOT, "mu_k %.3f  mu_s %.3f", c.kineticFriction(ni, nj), c.staticFriction(ni, nj)));
-        } else {
-            for (int i = 0; i < KINDS.length; i++) {
-                if (Gui.radioButton(KINDS[i], tool.kind() == ToolController.ObjectKind.values()[i])) {
-                    tool.setKind(ToolController.ObjectKind.values()[i]);
-                }
-                Gui.sameLine();
-            }
-            Gui.newLine();
-            Gui.textDisabled("M wall, B tree, ENTER places,");
-            Gui.textDisabled("P deletes, Q/E turn");
-            newObjectSettings();
-        }
-        Gui.separator();
-        List<Obstacle> list = editor.course().obstacles();
-        Gui.text("Objects: " + list.size() + " of at most " + editor.maxObstacles());
-        for (int i = 0; i < list.size() && i < 200; i++) {
-            Vec2 oc = ObstacleTools.center(list.get(i));
-            String label = String.format(Locale.ROOT, "%d %s (%.2f, %.2f)##o%d", i, ObstacleTools.describe(list.get(i)), oc.x(), oc.y(), i);
-            if (Gui.selectable(label, i == selected)) selected = i;
-        }
-        if (selected >= 0 && selected < list.size()) {
-            if (Gui.button("Turn left")) editor.rotateObstacle(selected, ToolController.ROTATE_STEP_DEG);
-            Gui.sameLine();
-            if (Gui.button("Turn right")) editor.rotateObstacle(selected, -ToolController.ROTATE_STEP_DEG);
-            Gui.sameLine();
-            if (Gui.button("Delete")) {
-                editor.removeObstacle(selected);
-                selected = -1;
-            }
-            if (selected >= 0) selectedObjectFields(list.get(selected));
-        }
-        zoneList();
-        Gui.end();
-    }
-
-    /** Sizes of the objects the tool will place. */
-    private void newObjectSettings() {
-        switch (tool.kind()) {
-            case WALL -> {
-                float[] len = {(float) tool.wallLength}, th = {(float) tool.wallThickness}, ht = {(float) tool.wallHeight};
-                if (Gui.sliderFloat("Wall length", len, 0.2f, 5f, "%.2f")) tool.wallLength = len[0];
-                if (Gui.sliderFloat("Thickness", th, 0f, 0.5f, "%.3f")) tool.wallThickness = th[0];
-                if (Gui.sliderFloat("Height", ht, 0.02f, 1f, "%.2f")) tool.wallHeight = Math.max(0.01, ht[0]);
-            }
-            case TREE -> {
-                float[] tr = {(float) tool.treeRadius}, ht = {(float) tool.treeHeight};
-                if (Gui.sliderFloat("Tree radius", tr, 0.05f, 0.5f, "%.2f")) tool.treeRadius = tr[0];
-                if (Gui.sliderFloat("Tree height", ht, 0.2f, 3f, "%.2f")) tool.treeHeight = ht[0];
-            }
-            case BOX -> {
-                float[] bs = {(float) tool.boxSize}, ht = {(float) tool.boxHeight};
-                if (Gui.sliderFloat("Box size", bs, 0.1f, 2f, "%.2f")) tool.boxSize = bs[0];
-                if (Gui.sliderFloat("Box height", ht, 0.05f, 2f, "%.2f")) tool.boxHeight = ht[0];
-            }
-            case MODEL -> {
-                List<String> models = ModelCatalog.BUNDLED;
-                GuiInt choice = new GuiInt(Math.max(0, models.indexOf(tool.modelFile)));
-                if (Gui.combo("Model", choice, models.toArray(new String[0]))) tool.modelFile = models.get(choice.get());
-                float[] sc = {(float) tool.modelScale};
-                if (Gui.sliderFloat("Scale", sc, 0.1f, 3f, "%.2f")) tool.modelScale = Math.max(0.01, sc[0]);
-            }
-        }
-        float[] re = {(float) tool.restitution};
-        if (Gui.sliderFloat("Restitution", re, 0f, 1f, "%.2f")) tool.restitution = re[0];
-    }
-
-    /** The selected object's sizes and restitution; a typed value is one undoable edit when the field is left. */
-    private void selectedObjectFields(Obstacle o) {
-        if (selected != selectedFieldsFor || editor.version() != selectedFieldsVersion) {
-            selectedFieldsFor = selected;
-            selectedFieldsVersion = editor.version();
-            double[] v = sizes(o);
-            objA.set(v[0]);
-            objB.set(v[1]);
-            objC.set(v[2]);
-            objRestitution.set(o.restitution());
-        }
-        try {
-            if (o instanceof Obstacle.Wall) {
-                Gui.inputDouble("Thickness m", objA);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
-                Gui.inputDouble("Height m", objB);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setWallSize(selected, objA.get(), objB.get());
-            } else if (o instanceof Obstacle.Tree) {
-                Gui.inputDouble("Radius m", objA);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
-                Gui.inputDouble("Height m", objB);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setTreeSize(selected, objA.get(), objB.get());
-            } else if (o instanceof Obstacle.Box) {
-                Gui.inputDouble("Width m", objA);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
-                Gui.inputDouble("Depth m", objB);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
-                Gui.inputDouble("Height m", objC);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setBoxSize(selected, objA.get(), objB.get(), objC.get());
-            } else {
-                Gui.inputDouble("Scale", objA);
-                if (Gui.isItemDeactivatedAfterEdit()) editor.setModelScale(selected, objA.get());
-            }
-            Gui.inputDouble("Restitution", objRestitution);
-            if (Gui.isItemDeactivatedAfterEdit()) editor.setRestitution(selected, objRestitution.get());
-        } catch (IllegalArgumentException e) {
-            say(e.getMessage());
-            selectedFieldsFor = -1; // show the object's values again
-        }
-    }
-
-    /** The editable sizes of an object, in the order of its fields. */
-    private static double[] sizes(Obstacle o) {
-        if (o instanceof Obstacle.Wall w) return new double[]{w.thickness(), w.height(), 0};
-        if (o instanceof Obstacle.Tree t) return new double[]{t.radius(), t.height(), 0};
-        if (o instanceof Obstacle.Box b) {
-            return new double[]{b.max().x() - b.min().x(), b.max().y() - b.min().y(), b.max().z() - b.min().z()};
-        }
-        return new double[]{((Obstacle.Model) o).scale(), 0, 0};
-    }
-
-    /** The course's friction zones: listed, deletable, friction editable. */
-    private void zoneList() {
-        List<Zone> zones = editor.zones();
-        if (zones.isEmpty()) return;
-        Gui.separator();
-        Gui.text("Friction zones: " + zones.size() + " (later ones win)");
-        for (int i = 0; i < zones.size(); i++) {
-            if (Gui.selectable(i + " " + ZoneTools.describe(zones.get(i)) + "##z" + i, i == selectedZone)) {
-                selectedZone = i;
-                zoneKinetic.set(zones.get(i).kineticFriction());
-                zoneStatic.set(zones.get(i).staticFriction());
-            }
-        }
-        if (selectedZone < 0 || selectedZone >= zones.size()) return;
-        Gui.textWrapped(ZoneTools.describe(zones.get(selectedZone))); // the list cuts long lines
-        try {
-            Gui.inputDouble("Zone mu_k", zoneKinetic);
-            if (Gui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
-            Gui.inputDouble("Zone mu_s", zoneStatic);
-            if (Gui.isItemDeactivatedAfterEdit()) editor.setZoneFriction(selectedZone, zoneKinetic.get(), zoneStatic.get());
-            if (Gui.button("Delete zone")) {
-                editor.removeZone(selectedZone);
-                selectedZone = -1;
-            }
-        } catch (IllegalArgumentException e) {
-            say(e.getMessage());
-            zoneKinetic.set(zones.get(selectedZone).kineticFriction());
-            zoneStatic.set(zones.get(selectedZone).staticFriction());
-        }
-    }
-
-    private void syncFields() {
-        if (fieldsVersion == editor.version()) return;
-        fieldsVersion = editor.version();
-        Course c = editor.toCourse();
-        startX.set(c.start().x());
-        startY.set(c.start().y());
-        holeX.set(c.hole().position().x());
-        holeY.set(c.hole().position().y());
-        holeRadius.set(c.hole().radius());
-        holeRule.set(c.hole().rule().ordinal());
-        gravity.set(c.physics().gravity());
-        kinetic.set(c.physics().kineticFriction());
-        statics.set(c.physics().staticFriction());
-        maxSpeed.set(c.physics().maxSpeed());
-        maxObjects.set(editor.maxObstacles());
-        courseName.set(c.name());
-    }
-
-    private void coursePanel(int fw, int fh) {
-        syncFields();
-        Gui.setNextWindowPos(fw - 8, fh - 48, GuiCond.Always, 1f, 1f);
-        Gui.setNextWindowSize(330, 0, GuiCond.Always);
-        Gui.begin("Course", GuiWindowFlags.NoMove | GuiWindowFlags.NoCollapse);
-        try {
-            Gui.inputText("Name", courseName);
-            if (Gui.isItemDeactivatedAfterEdit()) editor.setName(courseName.get());
-            Gui.inputDouble("Start x", startX);
-            Gui.inputDouble("Start y", startY);
-            if (Gui.button("Set start")) editor.setStart(startX.get(), startY.get());
-            Gui.inputDouble("Hole x", holeX);
-            Gui.inputDouble("Hole y", holeY);
-            if (Gui.button("Set hole")) editor.setHole(holeX.get(), holeY.get());
-            Gui.inputDouble("Hole radius", holeRadius);
-            if (Gui.isItemDeactivatedAfterEdit()) editor.setHoleRadius(holeRadius.get());
-            if (Gui.combo("Hole rule", holeRule, new String[]{"rest", "capture"})) {
-                editor.setHoleRule(HoleRule.values()[holeRule.get()]);
-            }
-            Gui.separator();
-            Gui.inputDouble("Gravity", gravity);
-            Gui.inputDouble("mu_k", kinetic);
-            Gui.inputDouble("mu_s", statics);
-            Gui.inputDouble("Max speed", maxSpeed);
-            if (Gui.button("Apply physics")) {
-                PhysicsSettings p = editor.toCourse().physics();
-                editor.setPhysics(new PhysicsSettings(gravity.get(), kinetic.get(), statics.get(), maxSpeed.get(), p.model(),
-                        p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution()));
-            }
-            if (Gui.inputInt("Max objects", maxObjects)) editor.setMaxObstacles(Math.max(0, maxObjects.get()));
-        } catch (IllegalArgumentException e) {
-            say(e.getMessage());
-            fieldsVersion = -1;
-        }
-        Gui.separator();
-        if (problems.isEmpty()) {
-            Gui.textColored(0.5f, 1f, 0.5f, 1f, "No problems: ready to save");
-        } else {
-            for (Problem p : problems) Gui.textColored(1f, 0.4f, 0.4f, 1f, p.message());
-        }
-        Gui.separator();
-        List<String> names = BotCatalog.names();
-        Gui.setNextItemWidth(120);
-        Gui.combo("##bot", botChoice, names.toArray(new String[0]));
-        Gui.sameLine();
-        if (Gui.button("Ask a bot")) askBot();
-        Gui.sameLine();
-        if (Gui.button("Play it")) playIt();
-        if (botCheck != null) {
-            if (!botCheck.isDone()) {
-                Gui.text(botCheck.message());
-                Gui.progressBar((float) botCheck.progress(), 200, 0);
-                Gui.sameLine();
-                if (Gui.button("Cancel##bot")) botCheck.cancel();
-            } else if (botCheck.result() != null) Gui.text(botCheck.result().describe());
-            else Gui.text(botCheck.failure());
-        }
-        Gui.end();
-    }
-
-    private void statusLine(int fw, int fh) {
-        Gui.setNextWindowPos(8, fh - 8, GuiCond.Always, 0f, 1f);
-        Gui.begin("##status", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
-        String state = editor.isDirty() ? "unsaved changes" : "saved";
-        String tip = String.format(Locale.ROOT, "%s | tool (%.2f, %.2f) | %s%s", state, tool.x(), tool.y(),
-                tool.mode() == ToolController.Mode.TERRAIN ? "terrain: " + tool.action().label()
-                        : "object: " + tool.kind().name().toLowerCase(Locale.ROOT),
-                message != null ? " | " + message : "");
-        Gui.text(tip);
-        Gui.end();
-    }
-
-    private void dialogs(int fw, int fh) {
-        if (dialog == Dialog.NONE) return;
-        Gui.setNextWindowPos(fw * 0.5f, fh * 0.5f, GuiCond.Always, 0.5f, 0.5f);
-        Gui.begin("##dialog", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
-        switch (dialog) {
-            case NEW -> {
-                Gui.text("New course");
-                Gui.inputText("Name", newName);
-                Gui.inputDouble("Width m", newWidth);
-                Gui.inputDouble("Depth m", newDepth);
-                Gui.inputDouble("Grid spacing m", newSpacing);
-                Gui.inputText("Height h(x, y)", newExpression);
-                Gui.textDisabled("empty: flat; e.g. 0.2 + 0.1*sin(x)*cos(y)");
-                if (Gui.button("Create")) {
-                    try {
-                        replaceEditor(CourseEditor.create(newName.get(), newWidth.get(), newDepth.get(), newSpacing.get(),
-                                newExpression.get()));
-                        dialog = Dialog.NONE;
-                    } catch (IllegalArgumentException e) {
-                        say(e.getMessage());
-                    }
-                }
-                Gui.sameLine();
-                if (Gui.button("Cancel")) dialog = Dialog.NONE;
-            }
-            case OPEN, SAVE_AS -> {
-                Gui.text(dialog == Dialog.OPEN ? "Open course file" : "Save course as");
-                Gui.setNextItemWidth(420);
-                Gui.inputText("##path", pathField);
-                if (Gui.button(dialog == Dialog.OPEN ? "Open" : "Save")) {
-                    Path p = Path.of(pathField.get().trim());
-                    if (dialog == Dialog.OPEN) {
-                        try {
-                            replaceEditor(CourseEditor.open(p));
-                            dialog = Dialog.NONE;
-                        } catch (CourseException e) {
-                            say(e.getMessage());
-                        }
-                    } else if (saveTo(p)) {
-                        dialog = Dialog.NONE;
-                    }
-                }
-                Gui.sameLine();
-                if (Gui.button("Cancel")) dialog = Dialog.NONE;
-            }
-            case RECOVERY -> {
-                Gui.text("The editor did not close cleanly last time.");
-                Gui.text("Recover the unsaved course from " + recovery.file() + "?");
-                if (Gui.button("Recover")) {
-                    try {
-                        replaceEditor(CourseEditor.recovered(recovery.load()));
-                        recovery.release();
-                        say("recovered: save it to keep it");
-                    } catch (CourseException e) {
-                        say(e.getMessage());
-                    }
-                    dialog = Dialog.NONE;
-                }
-                Gui.sameLine();
-                if (Gui.button("Discard")) {
-                    recovery.clear();
-                    dialog = Dialog.NONE;
-                }
-            }
-            case CONFIRM_CLOSE -> {
-                Gui.text("The course has unsaved changes.");
-                if (Gui.button("Save and close")) {
-                    if (editor.file() == null) openSaveAs();
-                    else if (saveTo(editor.file())) glfwSetWindowShouldClose(window.handle(), true);
-                }
-                Gui.sameLine();
-                if (Gui.button("Close without saving")) {
-                    dialog = Dialog.NONE;
-                    editor.endStroke();
-                    glfwSetWindowShouldClose(window.handle(), true);
-                }
-                Gui.sameLine();
-                if (Gui.button("Cancel")) dialog = Dialog.NONE;
-            }
-            default -> {
-            }
-        }
-        Gui.end();
     }
 
     /**
