@@ -52,6 +52,8 @@ public final class PlannerBot extends SearchBot {
     private final List<Solved> solved = new ArrayList<>();
     private World planWorld;
     private StrokePlan plan;
+    private World mapWorld;
+    private OnePuttMap onePutt;
     private World probeSource;
     private World probeWorld;
 
@@ -131,18 +133,29 @@ public final class PlannerBot extends SearchBot {
             sim.phase("direct");
             Shot shot = new HoleInOne(stroke).holeInOne();
             if (shot != null) return shot;
+            MapTwoStrokes mapLayups = denseSweep ? new MapTwoStrokes(stroke, onePuttMap(stroke)) : null;
             if (denseSweep && request.strokesTaken() == 0) {
-                // The first stroke: search all round, densely, before settling for two.
-                shot = new DenseSweep(stroke).holeInOne();
+                // The first stroke: search all round, densely, before settling for two (its
+                // paths also give the one-putt map's lay-ups their targets).
+                shot = new DenseSweep(stroke, mapLayups).holeInOne();
                 if (shot != null) return shot;
             }
             sim.phase("two strokes");
             TwoStrokes twoStrokes = new TwoStrokes(stroke);
             shot = twoStrokes.twoStrokes();
             if (shot != null) return shot;
+            if (mapLayups != null && mapLayups.hasTargets()) {
+                // The dense sweep's paths gave the targets: the look-ahead from them costs little.
+                shot = mapLayups.search();
+                if (shot != null) return shot;
+            }
             // The plan's one-putt lay-up, when the look-ahead confirms it, before the costlier sweep.
             planned = new Layup(stroke).plannedLayup();
             if (planned != null && planned.verified()) return planned.shot();
+            if (mapLayups != null && !mapLayups.hasTargets()) {
+                shot = mapLayups.search();
+                if (shot != null) return shot;
+            }
             // The sweep looks for two strokes: worth it when the plan sees no lay-up or a one-putt one.
             if (planned == null || planned.strokesLeft() <= 1) {
                 shot = twoStrokes.layupSweep();
@@ -158,6 +171,17 @@ public final class PlannerBot extends SearchBot {
         if (layup != null) return layup;
         Shot best = sim.bestShot();
         return best != null ? best : directGuess(world, request.ballX(), request.ballY());
+    }
+
+    /** The one-putt map of this world, traced on first use. */
+    private OnePuttMap onePuttMap(Stroke stroke) {
+        CountingSimulator sim = stroke.sim;
+        if (mapWorld != sim.world()) {
+            sim.phase("one-putt map");
+            onePutt = OnePuttMap.build(stroke.probe);
+            mapWorld = sim.world();
+        }
+        return onePutt;
     }
 
     private StrokePlan planFor(World world, BotRequest request) {
