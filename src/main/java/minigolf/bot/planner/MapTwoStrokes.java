@@ -120,9 +120,17 @@ final class MapTwoStrokes {
     final class Runs implements TrajectoryListener {
         private final Shot shot;
         private final double v0;
-        private double lastX, lastY, length;
+        private double lastX, lastY, length, lastV2;
+        /**
+         * The speed² a shot in this direction needs to stop here, worked out forwards from what
+         * this shot lost on the way (friction, slopes: the same on flat ground for any speed), each
+         * cushion dividing what comes after it by the share of the speed² it keeps ({@code kept}).
+         */
+        private double need, kept = 1;
+        /** A cushion since the last step: the speed² just before and just after it. */
+        private double before2 = Double.NaN, after2;
         private int hits;
-        /** The current run: where it started (path length), and its points' path lengths, positions and speeds. */
+        /** The current run: its points' path lengths, positions, speeds² needed, cushions. */
         private final List<double[]> run = new ArrayList<>();
 
         Runs(Shot shot) {
@@ -130,6 +138,7 @@ final class MapTwoStrokes {
             this.v0 = shot.speed();
             lastX = s.px;
             lastY = s.py;
+            lastV2 = v0 * v0;
         }
 
         @Override
@@ -137,10 +146,20 @@ final class MapTwoStrokes {
             length += Math.hypot(x - lastX, y - lastY);
             lastX = x;
             lastY = y;
+            double v2 = vx * vx + vy * vy;
+            if (Double.isNaN(before2)) {
+                need += (lastV2 - v2) / kept;
+            } else {
+                need += (lastV2 - before2) / kept;
+                kept *= Math.max(after2 / Math.max(before2, 1e-12), 1e-3);
+                need += (after2 - v2) / kept;
+                before2 = Double.NaN;
+            }
+            lastV2 = v2;
             boolean in = map.marked(x, y) && s.grid.hazardClearance(x, y) >= StrokePlan.REST_CLEARANCE
                     && s.grid.clearance(x, y) >= StrokePlan.REST_OBSTACLE_CLEARANCE;
             if (in) {
-                run.add(new double[] {length, x, y, Math.hypot(vx, vy), hits});
+                run.add(new double[] {length, x, y, need, hits});
             } else {
                 close();
             }
@@ -150,11 +169,17 @@ final class MapTwoStrokes {
         public void onEvent(StrokeEvent event) {
             if (event.type() == StrokeEvent.Type.COLLISION) {
                 hits++;
+                if (Double.isNaN(before2)) before2 = event.speedBefore() * event.speedBefore();
+                after2 = event.speedAfter() * event.speedAfter();
                 close();
             }
         }
 
-        /** Ends the current run: its middle is a target, scored by the run's length and the putt there. */
+        /**
+         * Ends the current run: its middle is a target, scored by the run's length and the putt
+         * there; the shot that stops there has the speed² worked out forwards along the path (exact
+         * on flat ground, cushions included: each keeps a share of the speed² that does not depend on it).
+         */
         void close() {
             if (run.isEmpty()) return;
             double start = run.get(0)[0], end = run.get(run.size() - 1)[0];
@@ -162,9 +187,8 @@ final class MapTwoStrokes {
             double[] m = run.get(0);
             for (double[] p : run) if (Math.abs(p[0] - mid) < Math.abs(m[0] - mid)) m = p;
             run.clear();
-            double v = Math.min(m[3], 0.999 * v0);
-            double speed = Math.sqrt(v0 * v0 - v * v);
-            if (speed < 0.05) return;
+            double speed = Math.sqrt(Math.max(m[3], 0));
+            if (speed < 0.05 || speed > v0) return;
             double forgiving = Math.min(end - start, LONG_RUN) + 0.05 * map.markedAround(m[1], m[2]);
             double score = map.cost(m[1], m[2]) - 4 * forgiving + 0.5 * m[4];
             double angle = Math.atan2(shot.vy(), shot.vx());
