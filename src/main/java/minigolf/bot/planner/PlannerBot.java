@@ -45,7 +45,7 @@ import minigolf.physics.World;
  */
 public final class PlannerBot extends SearchBot {
 
-    private final CourseMaps maps = new CourseMaps();
+    private final CourseMaps maps;
     /** The positions played from this game: no stroke may lead back to one. */
     private final CycleGuard cycles = new CycleGuard();
     /** Shots the look-ahead found holing from a lay-up's rest point: reused when the ball is there. */
@@ -66,8 +66,16 @@ public final class PlannerBot extends SearchBot {
     }
 
     public PlannerBot(boolean denseSweep) {
-        this.denseSweep = denseSweep;
+        this(denseSweep, FRICTION_AWARE);
     }
+
+    /** With {@code frictionAware} the distance field weighs each metre by the ground's friction ({@link CourseMaps}). */
+    public PlannerBot(boolean denseSweep, boolean frictionAware) {
+        this.denseSweep = denseSweep;
+        this.maps = new CourseMaps(frictionAware);
+    }
+
+    static final boolean FRICTION_AWARE = !Boolean.getBoolean("minigolf.plainField");
 
     @Override
     public String name() {

@@ -4,8 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import minigolf.bot.BotProgress;
 import minigolf.bot.CancellationToken;
+import minigolf.bot.Playthrough;
+import minigolf.bot.planner.PlannerBot;
 import minigolf.course.CourseException;
+import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 
@@ -53,6 +57,23 @@ class FrictionAwareFieldTest {
         // than the 8 m of dirt straight across (64).
         double d = aware.at(1, 1);
         assertTrue(d > 13 && d < 17, "grass route " + d);
+    }
+
+    private static int strokes(boolean aces, boolean frictionAware) {
+        Playthrough.Result r = Playthrough.play(new PlannerBot(aces, frictionAware), dirtWithGrassPath(),
+                SimulationSettings.DEFAULT, 20, 20_000, 1, CancellationToken.withTimeLimit(60), BotProgress.NONE);
+        assertTrue(r.holed());
+        return r.strokes();
+    }
+
+    @Test
+    void thePlannerPlaysAlongTheGrassInsteadOfOntoTheDirtAndBack() {
+        // The failure: the plain field sends the ball straight at the hole onto the dirt, where it
+        // stops after a metre or two, and back (13 strokes). Along the grass: 4; planner-aces 3 (9 plain).
+        assertEquals(13, strokes(false, false));
+        assertEquals(4, strokes(false, true));
+        assertEquals(9, strokes(true, false));
+        assertEquals(3, strokes(true, true));
     }
 
     @Test
