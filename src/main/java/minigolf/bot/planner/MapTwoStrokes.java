@@ -7,14 +7,17 @@ import minigolf.physics.StrokeEvent;
 import minigolf.physics.TrajectoryListener;
 
 /**
- * Two strokes chosen by where one putt holes from ({@link OnePuttMap}), not by the path distance:
- * shots all round {@link #STEP} apart at the maximum speed (on hills also at {@link #HILL_SPEEDS}),
- * each traced through the map; where its path crosses marked cells (a run of them), the shot
- * slowed to stop in the middle of the run (v² = v0² - v² there: exact on flat ground before a
- * cushion) is a lay-up. Lay-ups are ranked by how much error their landing forgives (the run's
- * length, the marked cells round it) and how easy the putt is; the best {@link #TRIES} (at least
- * {@link #SPACING} apart) are played, and from each rest point the map's putt starts Broyden
- * (the look-ahead); the first lay-up from which it holes is the shot, its putt kept for the next
+ * Two strokes chosen by where one putt holes from ({@link OnePuttMap}), not by the path distance
+ * ({@code planner-aces}). Shots all round: on the first stroke those of {@link DenseSweep} (which
+ * passes its paths here through {@link #tracer}), later its own sweep, {@link #STEP} apart at the
+ * maximum speed (on hills also at the other {@link #HILL_SPEEDS}). Each path is traced through the
+ * map; where it crosses marked cells well clear of water and obstacles (a run of them), the shot
+ * slowed to stop in the middle of the run is a lay-up (its speed² worked out forwards from what
+ * the sweep shot lost on the way, each cushion's share kept: exact on flat ground). Lay-ups are
+ * ranked by how much error their landing forgives (the run's length, the marked cells round it)
+ * and how easy the putt is; the best {@link #TRIES} (at least {@link #SPACING} apart) are played,
+ * and from each rest point the map's putt starts Broyden (the look-ahead: off cushions from the
+ * measured Jacobian); the first lay-up from which it holes is the shot, its putt kept for the next
  * stroke. A holed sweep shot is a hole-in-one.
  */
 final class MapTwoStrokes {
@@ -38,11 +41,6 @@ final class MapTwoStrokes {
     MapTwoStrokes(Stroke s, OnePuttMap map) {
         this.s = s;
         this.map = map;
-    }
-
-    /** Shots this stage may use at most, about (the look-aheads' Broyden included). */
-    long cost() {
-        return Math.round(2 * Math.PI / STEP) * (long) HILL_SPEEDS.length + TRIES * 30L;
     }
 
     /** A listener collecting the lay-up targets along {@code shot}'s path (another stage's sweep). */
