@@ -17,7 +17,8 @@ import minigolf.physics.World;
 
 /**
  * Our bot, the game's default (docs/bots.md); {@code planner-aces} adds {@link DenseSweep} on the
- * first stroke. Per stroke:
+ * first stroke, two strokes chosen on the {@link OnePuttMap} ({@link MapTwoStrokes}), the wide
+ * lay-up sweep and the friction-aware distance field. Per stroke:
  * <ol>
  * <li>If the hole is within about a maximum-speed roll (along the water-avoiding distance):
  *     Broyden's quasi-Newton method from the physics guess straight at the hole, aimed at the middle
