@@ -136,7 +136,7 @@ final class DenseSweep {
     private Pass pass(Shot shot, MapTwoStrokes.Runs runs) {
         Approach approach = new Approach(s.holeX, s.holeY, s.px, s.py, shot);
         ShotResult r = s.sim.simulate(s.px, s.py, shot, runs == null ? approach : Stroke.both(approach, runs));
-        if (runs != null) runs.close();
+        if (runs != null) runs.end(r);
         if (CountingSimulator.holed(r)) return null;
         return new Pass(shot, Math.sqrt(approach.best), Math.hypot(approach.cvx, approach.cvy));
     }

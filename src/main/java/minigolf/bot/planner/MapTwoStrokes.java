@@ -25,6 +25,7 @@ final class MapTwoStrokes {
     /** Its own sweep's speeds on hills, fractions of the maximum (on flat ground the maximum only). */
     static final double[] HILL_SPEEDS = {1, 0.6};
     static final int TRIES = 14;
+    static final int EXACT_TRIES = 6;
     static final double SPACING = 0.3;
     /** A run of marked cells longer than this forgives as much as any. */
     static final double LONG_RUN = 1.0;
@@ -36,6 +37,8 @@ final class MapTwoStrokes {
     private final Stroke s;
     private final OnePuttMap map;
     private final List<Target> targets = new ArrayList<>();
+    /** Sweep shots resting in marked cells: tried after the lay-ups, at most {@link #EXACT_TRIES}. */
+    private final List<Target> exact = new ArrayList<>();
     private boolean swept;
 
     MapTwoStrokes(Stroke s, OnePuttMap map) {
@@ -73,19 +76,26 @@ final class MapTwoStrokes {
                     Runs runs = new Runs(shot);
                     Eval e = s.evaluateWith(shot, runs);
                     if (e.holed()) return shot;
-                    runs.close();
+                    runs.end(e.result());
                 }
             }
         }
         targets.sort((a, b) -> Double.compare(a.score(), b.score()));
+        exact.sort((a, b) -> Double.compare(a.score(), b.score()));
         s.sim.phase("one-putt look-ahead");
         List<double[]> tried = new ArrayList<>();
-        for (Target t : targets) {
-            if (tried.size() >= TRIES) break;
+        List<Target> order = new ArrayList<>(targets);
+        order.addAll(exact);
+        int exactTried = 0;
+        for (Target t : order) {
+            boolean isExact = exact.contains(t);
+            if (!isExact && tried.size() >= TRIES) continue;
+            if (isExact && exactTried >= EXACT_TRIES) break;
             boolean near = false;
             for (double[] p : tried) near |= Math.hypot(p[0] - t.x(), p[1] - t.y()) < SPACING;
             if (near) continue;
             tried.add(new double[] {t.x(), t.y()});
+            if (isExact) exactTried++;
             Eval e = s.evaluate(t.shot(), s.holeX, s.holeY);
             if (e.holed()) return t.shot();
             if (e.penalty()) continue;
@@ -171,6 +181,20 @@ final class MapTwoStrokes {
                 after2 = event.speedAfter() * event.speedAfter();
                 close();
             }
+        }
+
+        /**
+         * The shot is over: the current run ends, and where the shot itself came to rest is a
+         * target too when the map marks it (clear of water and obstacles): a landing known exactly,
+         * as forgiving as any.
+         */
+        void end(minigolf.physics.ShotResult r) {
+            close();
+            if (r.outcome() != minigolf.physics.Outcome.STOPPED) return;
+            double x = r.endX(), y = r.endY();
+            if (!map.marked(x, y) || s.grid.hazardClearance(x, y) < StrokePlan.REST_CLEARANCE
+                    || s.grid.clearance(x, y) < StrokePlan.REST_OBSTACLE_CLEARANCE) return;
+            exact.add(new Target(shot, x, y, map.cost(x, y) + 0.5 * hits));
         }
 
         /**
