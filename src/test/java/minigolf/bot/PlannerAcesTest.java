@@ -23,7 +23,8 @@ class PlannerAcesTest {
         Playthrough.Result planner = play("planner", mazeD), aces = play("planner-aces", mazeD);
         assertEquals(4, planner.strokes());
         assertEquals(3, aces.strokes(), "the fewest the exhaustive search finds");
-        assertTrue(aces.simulations() <= 3_000, aces.simulations() + " simulations");
+        // Measured 3,913: the one-putt map (720 rays) and its lay-up look-aheads cost about 1,100 more than before it.
+        assertTrue(aces.simulations() <= 4_000, aces.simulations() + " simulations");
     }
 
     @Test

@@ -11,7 +11,8 @@ import minigolf.physics.World;
  * search looks for a game at least one stroke shorter (so its cost stays bounded): the baseline
  * is what it finds, else the planner's own count (the search found nothing shorter, within
  * {@link #MAX_LEVELS} strokes).
- * Arguments: SEED COUNT [FIRST] [--no-search] (the planner only) [--bot=NAME] (another bot, e.g. planner-aces).
+ * Arguments: SEED COUNT [FIRST] [--no-search] (the planner only) [--bot=NAME] (another bot, e.g. planner-aces)
+ * [--max-levels=N] (search at most N strokes deep, default {@link #MAX_LEVELS}).
  */
 final class TileCourseReport {
     /** The search goes at most this many strokes deep (each level costs about a million simulations). */
@@ -24,6 +25,8 @@ final class TileCourseReport {
         boolean search = !List.of(args).contains("--no-search");
         String bot = List.of(args).stream().filter(a -> a.startsWith("--bot=")).map(a -> a.substring(6)).findFirst()
                 .orElse("planner");
+        int levels = List.of(args).stream().filter(a -> a.startsWith("--max-levels=")).map(a -> Integer.parseInt(a.substring(13)))
+                .findFirst().orElse(MAX_LEVELS);
         List<World> worlds = TileCourses.generate(seed, first + count);
         System.out.println("| course | planner holed | planner strokes | simulations | ms | fewer found by the search | search simulations | search s |");
         System.out.println("|---|---|---:|---:|---:|---|---:|---:|");
@@ -31,7 +34,7 @@ final class TileCourseReport {
             World w = worlds.get(i);
             Playthrough.Result p = Playthrough.play(Bots.create(bot), w, SimulationSettings.DEFAULT, 10, 20_000, 1,
                     CancellationToken.withTimeLimit(60), BotProgress.NONE);
-            int cap = search ? Math.min(p.holed() ? p.strokes() - 1 : 4, MAX_LEVELS) : 0;
+            int cap = search ? Math.min(p.holed() ? p.strokes() - 1 : 4, levels) : 0;
             ExhaustiveStrokeSearch.Result s = cap < 1 ? null : ExhaustiveStrokeSearch.search(w,
                     new ExhaustiveStrokeSearch.Grid(0.3, 180, 24, cap, 0.6, 5));
             String fewer = !search ? "not searched" : s == null ? "– (hole-in-one)"

@@ -15,7 +15,7 @@ import minigolf.physics.World;
  * corners, ponds in some dead ends, sand patches, gentle hills and a rim of walls round the course.
  * The start is in the first column, the hole in the last. Each course goes through the loader.
  */
-final class TileCourses {
+public final class TileCourses {
     static final double TILE = 1.6;
     static final int COLS = 6, ROWS = 4;
     private static final double SPACING = 0.2;
@@ -24,7 +24,7 @@ final class TileCourses {
     }
 
     /** {@code count} courses from {@code seed} (course i depends on the seed and i only). */
-    static List<World> generate(long seed, int count) {
+    public static List<World> generate(long seed, int count) {
         List<World> worlds = new ArrayList<>();
         SplittableRandom seeds = new SplittableRandom(seed);
         for (int i = 0; i < count; i++) {

@@ -41,11 +41,19 @@ final class DenseSweep {
     }
 
     private final Stroke s;
+    /** Lay-up targets collected from the coarse sweep's paths (null: none). */
+    private final MapTwoStrokes layups;
     private final double[] speeds;
     private final double[] fineSpeeds;
 
     DenseSweep(Stroke s) {
+        this(s, null);
+    }
+
+    /** With {@code layups}, the coarse sweep's paths also give {@link MapTwoStrokes} its lay-up targets. */
+    DenseSweep(Stroke s, MapTwoStrokes layups) {
         this.s = s;
+        this.layups = layups;
         boolean flat = Flatness.isFlat(s.world);
         this.speeds = flat ? new double[] {1} : HILL_SPEEDS;
         this.fineSpeeds = flat ? new double[] {1} : HILL_FINE_SPEEDS;
@@ -75,11 +83,12 @@ final class DenseSweep {
             for (double fraction : speeds) {
                 double speed = vMax * fraction;
                 Shot shot = s.sim.limit(Shot.polar(angle, speed));
-                Pass p = pass(shot);
+                Pass p = pass(shot, layups == null ? null : layups.tracer(shot));
                 if (p == null) return shot;
                 if (p.distance() < NEAR) near.add(p);
             }
         }
+        if (layups != null) layups.swept();
         near.sort((a, b) -> Double.compare(a.distance(), b.distance()));
         s.sim.phase("dense fine");
         List<Pass> fine = new ArrayList<>();
@@ -121,8 +130,13 @@ final class DenseSweep {
 
     /** Simulates a shot; null when it holes out. */
     private Pass pass(Shot shot) {
+        return pass(shot, null);
+    }
+
+    private Pass pass(Shot shot, MapTwoStrokes.Runs runs) {
         Approach approach = new Approach(s.holeX, s.holeY, s.px, s.py, shot);
-        ShotResult r = s.sim.simulate(s.px, s.py, shot, approach);
+        ShotResult r = s.sim.simulate(s.px, s.py, shot, runs == null ? approach : Stroke.both(approach, runs));
+        if (runs != null) runs.end(r);
         if (CountingSimulator.holed(r)) return null;
         return new Pass(shot, Math.sqrt(approach.best), Math.hypot(approach.cvx, approach.cvy));
     }

@@ -17,7 +17,8 @@ import minigolf.physics.World;
 
 /**
  * Our bot, the game's default (docs/bots.md); {@code planner-aces} adds {@link DenseSweep} on the
- * first stroke. Per stroke:
+ * first stroke, two strokes chosen on the {@link OnePuttMap} ({@link MapTwoStrokes}), the wide
+ * lay-up sweep and the friction-aware distance field. Per stroke:
  * <ol>
  * <li>If the hole is within about a maximum-speed roll (along the water-avoiding distance):
  *     Broyden's quasi-Newton method from the physics guess straight at the hole, aimed at the middle
@@ -45,13 +46,15 @@ import minigolf.physics.World;
  */
 public final class PlannerBot extends SearchBot {
 
-    private final CourseMaps maps = new CourseMaps();
+    private final CourseMaps maps;
     /** The positions played from this game: no stroke may lead back to one. */
     private final CycleGuard cycles = new CycleGuard();
     /** Shots the look-ahead found holing from a lay-up's rest point: reused when the ball is there. */
     private final List<Solved> solved = new ArrayList<>();
     private World planWorld;
     private StrokePlan plan;
+    private World mapWorld;
+    private OnePuttMap onePutt;
     private World probeSource;
     private World probeWorld;
 
@@ -63,9 +66,23 @@ public final class PlannerBot extends SearchBot {
         this(false);
     }
 
+    /**
+     * {@code planner-aces} routes on the friction-aware field; the default planner on the plain one
+     * (on the tuning tile courses, sand patches, the aware field cost it a stroke on one course of 24
+     * and gained none; planner-aces' strokes were the same with either).
+     */
     public PlannerBot(boolean denseSweep) {
-        this.denseSweep = denseSweep;
+        this(denseSweep, denseSweep && FRICTION_AWARE);
     }
+
+    /** With {@code frictionAware} the distance field weighs each metre by the ground's friction ({@link CourseMaps}). */
+    public PlannerBot(boolean denseSweep, boolean frictionAware) {
+        this.denseSweep = denseSweep;
+        this.maps = new CourseMaps(frictionAware);
+    }
+
+    /** -Dminigolf.plainField=true: planner-aces on the plain field too, for comparison. */
+    static final boolean FRICTION_AWARE = !Boolean.getBoolean("minigolf.plainField");
 
     @Override
     public String name() {
@@ -137,18 +154,29 @@ public final class PlannerBot extends SearchBot {
             sim.phase("direct");
             Shot shot = new HoleInOne(stroke).holeInOne();
             if (shot != null) return shot;
+            MapTwoStrokes mapLayups = denseSweep ? new MapTwoStrokes(stroke, onePuttMap(stroke)) : null;
             if (denseSweep && request.strokesTaken() == 0) {
-                // The first stroke: search all round, densely, before settling for two.
-                shot = new DenseSweep(stroke).holeInOne();
+                // The first stroke: search all round, densely, before settling for two (its
+                // paths also give the one-putt map's lay-ups their targets).
+                shot = new DenseSweep(stroke, mapLayups).holeInOne();
                 if (shot != null) return shot;
             }
             sim.phase("two strokes");
             TwoStrokes twoStrokes = new TwoStrokes(stroke);
             shot = twoStrokes.twoStrokes();
             if (shot != null) return shot;
+            if (mapLayups != null && mapLayups.hasTargets()) {
+                // The dense sweep's paths gave the targets: the look-ahead from them costs little.
+                shot = mapLayups.search();
+                if (shot != null) return shot;
+            }
             // The plan's one-putt lay-up, when the look-ahead confirms it, before the costlier sweep.
             planned = new Layup(stroke).plannedLayup();
             if (planned != null && planned.verified()) return planned.shot();
+            if (mapLayups != null && !mapLayups.hasTargets()) {
+                shot = mapLayups.search();
+                if (shot != null) return shot;
+            }
             // The sweep looks for two strokes: worth it when the plan sees no lay-up or a one-putt one.
             if (planned == null || planned.strokesLeft() <= 1) {
                 shot = twoStrokes.layupSweep();
@@ -164,6 +192,17 @@ public final class PlannerBot extends SearchBot {
         if (layup != null) return layup;
         Shot best = sim.bestShot();
         return best != null ? best : directGuess(world, request.ballX(), request.ballY());
+    }
+
+    /** The one-putt map of this world, traced on first use. */
+    private OnePuttMap onePuttMap(Stroke stroke) {
+        CountingSimulator sim = stroke.sim;
+        if (mapWorld != sim.world()) {
+            sim.phase("one-putt map");
+            onePutt = OnePuttMap.build(stroke.probe);
+            mapWorld = sim.world();
+        }
+        return onePutt;
     }
 
     private StrokePlan planFor(World world, BotRequest request) {

@@ -11,6 +11,7 @@ import minigolf.bot.map.DistanceField;
 import minigolf.course.HoleRule;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
+import minigolf.physics.TrajectoryListener;
 import minigolf.physics.World;
 
 /**
@@ -250,6 +251,24 @@ final class Stroke {
         if (e.penalty()) return Attempt.failed(e.shot());
         double[] j = flatJacobian(e);
         if (mirror != null) j = Jacobians.reflected(j, mirror[0], mirror[1]);
+        return broydenFrom(e, j, tx, ty, maxIterations, tol, holeMode);
+    }
+
+    /**
+     * A putt off cushions the map ({@link OnePuttMap}) suggests: each cushion mirrors the flat
+     * Jacobian in a face the solver does not know, so it starts from the Jacobian measured by
+     * forward differences (two shots) instead.
+     */
+    Attempt solveBanked(Shot start) {
+        Eval e = evaluate(sim.limit(start), holeX, holeY);
+        if (e.holed()) return new Attempt(e.shot(), true, true, 0, e);
+        if (e.penalty()) return Attempt.failed(e.shot());
+        double[] j = measuredJacobian(e, holeX, holeY);
+        if (j == null) return Attempt.failed(e.shot());
+        return broydenFrom(e, j, holeX, holeY, 12, tolerance, true);
+    }
+
+    private Attempt broydenFrom(Eval e, double[] j, double tx, double ty, int maxIterations, double tol, boolean holeMode) {
         Attempt bestHoled = null;
         boolean refreshed = false;
         // The point aimed at: the hole's centre, until a step towards it is lost in water
@@ -344,10 +363,37 @@ final class Stroke {
         return new double[] {(e.restX() - ex.restX()) / hx, (e.restX() - ey.restX()) / hy, (e.restY() - ex.restY()) / hx, (e.restY() - ey.restY()) / hy};
     }
 
+    /** One listener passing every step and event on to two. */
+    static TrajectoryListener both(TrajectoryListener a, TrajectoryListener b) {
+        return new TrajectoryListener() {
+            @Override
+            public void onStep(double t, double x, double y, double vx, double vy) {
+                a.onStep(t, x, y, vx, vy);
+                b.onStep(t, x, y, vx, vy);
+            }
+
+            @Override
+            public void onEvent(minigolf.physics.StrokeEvent event) {
+                a.onEvent(event);
+                b.onEvent(event);
+            }
+        };
+    }
+
     /** Simulates in the probe world; F = rest point - target. */
     Eval evaluate(Shot shot, double tx, double ty) {
+        return evaluate(shot, tx, ty, null);
+    }
+
+    /** {@link #evaluate} aimed at the hole, the path also passed to {@code extra}. */
+    Eval evaluateWith(Shot shot, TrajectoryListener extra) {
+        return evaluate(shot, holeX, holeY, extra);
+    }
+
+    private Eval evaluate(Shot shot, double tx, double ty, TrajectoryListener extra) {
         Approach approach = new Approach(holeX, holeY, px, py, shot);
-        ShotResult r = probe.simulate(px, py, shot, approach);
+        TrajectoryListener listener = extra == null ? approach : both(approach, extra);
+        ShotResult r = probe.simulate(px, py, shot, listener);
         boolean holed = !capture && r.outcome() == Outcome.HOLED;
         boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
         double dirX = capture ? approach.dirX : 0, dirY = capture ? approach.dirY : 0;

@@ -1,0 +1,220 @@
+package minigolf.bot.planner;
+
+import java.util.ArrayList;
+import java.util.List;
+import minigolf.bot.Shot;
+import minigolf.physics.StrokeEvent;
+import minigolf.physics.TrajectoryListener;
+
+/**
+ * Two strokes chosen by where one putt holes from ({@link OnePuttMap}), not by the path distance
+ * ({@code planner-aces}). Shots all round: on the first stroke those of {@link DenseSweep} (which
+ * passes its paths here through {@link #tracer}), later its own sweep, {@link #STEP} apart at the
+ * maximum speed (on hills also at the other {@link #HILL_SPEEDS}). Each path is traced through the
+ * map; where it crosses marked cells well clear of water and obstacles (a run of them), the shot
+ * slowed to stop in the middle of the run is a lay-up (its speed² worked out forwards from what
+ * the sweep shot lost on the way, each cushion's share kept: exact on flat ground). Lay-ups are
+ * ranked by how much error their landing forgives (the run's length, the marked cells round it)
+ * and how easy the putt is; the best {@link #TRIES} (at least {@link #SPACING} apart) are played,
+ * and from each rest point the map's putt starts Broyden (the look-ahead: off cushions from the
+ * measured Jacobian); the first lay-up from which it holes is the shot, its putt kept for the next
+ * stroke. A holed sweep shot is a hole-in-one.
+ */
+final class MapTwoStrokes {
+    static final double STEP = Math.toRadians(1);
+    /** Its own sweep's speeds on hills, fractions of the maximum (on flat ground the maximum only). */
+    static final double[] HILL_SPEEDS = {1, 0.6};
+    static final int TRIES = 14;
+    static final int EXACT_TRIES = 6;
+    static final double SPACING = 0.3;
+    /** A run of marked cells longer than this forgives as much as any. */
+    static final double LONG_RUN = 1.0;
+
+    /** A lay-up: the shot that stops there, the point, how forgiving and how easy. */
+    record Target(Shot shot, double x, double y, double score) {
+    }
+
+    private final Stroke s;
+    private final OnePuttMap map;
+    private final List<Target> targets = new ArrayList<>();
+    /** Sweep shots resting in marked cells: tried after the lay-ups, at most {@link #EXACT_TRIES}. */
+    private final List<Target> exact = new ArrayList<>();
+    private boolean swept;
+
+    MapTwoStrokes(Stroke s, OnePuttMap map) {
+        this.s = s;
+        this.map = map;
+    }
+
+    /** A listener collecting the lay-up targets along {@code shot}'s path (another stage's sweep). */
+    Runs tracer(Shot shot) {
+        return new Runs(shot);
+    }
+
+    /** Whether another stage's sweep collected the lay-up targets ({@link #search} sweeps no more). */
+    boolean hasTargets() {
+        return swept;
+    }
+
+    /** The lay-up targets are collected: {@link #search} sweeps no more. */
+    void swept() {
+        swept = true;
+    }
+
+    Shot search() {
+        s.sim.phase("one-putt map lay-ups");
+        if (!swept) {
+            boolean flat = Flatness.isFlat(s.world);
+            double[] speeds = flat ? new double[] {1} : HILL_SPEEDS;
+            double vMax = s.sim.maxSpeed() * (1 - 1e-9);
+            int directions = (int) Math.round(2 * Math.PI / STEP);
+            double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
+            for (int i = 0; i < directions; i++) {
+                double angle = holeAngle + (i % 2 == 0 ? 1 : -1) * ((i + 1) / 2) * STEP;
+                for (double f : speeds) {
+                    Shot shot = s.sim.limit(Shot.polar(angle, f * vMax));
+                    Runs runs = new Runs(shot);
+                    Eval e = s.evaluateWith(shot, runs);
+                    if (e.holed()) return shot;
+                    runs.end(e.result());
+                }
+            }
+        }
+        targets.sort((a, b) -> Double.compare(a.score(), b.score()));
+        exact.sort((a, b) -> Double.compare(a.score(), b.score()));
+        s.sim.phase("one-putt look-ahead");
+        List<double[]> tried = new ArrayList<>();
+        List<Target> order = new ArrayList<>(targets);
+        order.addAll(exact);
+        int exactTried = 0;
+        for (Target t : order) {
+            boolean isExact = exact.contains(t);
+            if (!isExact && tried.size() >= TRIES) continue;
+            if (isExact && exactTried >= EXACT_TRIES) break;
+            boolean near = false;
+            for (double[] p : tried) near |= Math.hypot(p[0] - t.x(), p[1] - t.y()) < SPACING;
+            if (near) continue;
+            tried.add(new double[] {t.x(), t.y()});
+            if (isExact) exactTried++;
+            Eval e = s.evaluate(t.shot(), s.holeX, s.holeY);
+            if (e.holed()) return t.shot();
+            if (e.penalty()) continue;
+            if (lookAhead(e.restX(), e.restY())) return t.shot();
+        }
+        return null;
+    }
+
+    /**
+     * Whether one putt holes from (x, y): Broyden from the map's putt there (off cushions from
+     * the measured Jacobian), else from the straight one; the holing putt is kept for the next stroke.
+     */
+    boolean lookAhead(double x, double y) {
+        Shot guess = map.putt(x, y);
+        Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, x, y, s.plan);
+        if (guess != null) {
+            int cushions = map.cushions(x, y);
+            Attempt a = cushions == 0 || next.capture ? next.solveHole(s.sim.limit(guess), null)
+                    : next.solveBanked(guess);
+            if (a.holed()) {
+                s.solved.add(new Solved(s.world, x, y, a.shot()));
+                return true;
+            }
+            if (cushions == 0) return false;
+        }
+        return next.solvedHole();
+    }
+
+    /** The runs of marked cells along one shot's path, each a lay-up target. */
+    final class Runs implements TrajectoryListener {
+        private final Shot shot;
+        private final double v0;
+        private double lastX, lastY, length, lastV2;
+        /**
+         * The speed² a shot in this direction needs to stop here, worked out forwards from what
+         * this shot lost on the way (friction, slopes: the same on flat ground for any speed), each
+         * cushion dividing what comes after it by the share of the speed² it keeps ({@code kept}).
+         */
+        private double need, kept = 1;
+        /** A cushion since the last step: the speed² just before and just after it. */
+        private double before2 = Double.NaN, after2;
+        private int hits;
+        /** The current run: its points' path lengths, positions, speeds² needed, cushions. */
+        private final List<double[]> run = new ArrayList<>();
+
+        Runs(Shot shot) {
+            this.shot = shot;
+            this.v0 = shot.speed();
+            lastX = s.px;
+            lastY = s.py;
+            lastV2 = v0 * v0;
+        }
+
+        @Override
+        public void onStep(double t, double x, double y, double vx, double vy) {
+            length += Math.hypot(x - lastX, y - lastY);
+            lastX = x;
+            lastY = y;
+            double v2 = vx * vx + vy * vy;
+            if (Double.isNaN(before2)) {
+                need += (lastV2 - v2) / kept;
+            } else {
+                need += (lastV2 - before2) / kept;
+                kept *= Math.max(after2 / Math.max(before2, 1e-12), 1e-3);
+                need += (after2 - v2) / kept;
+                before2 = Double.NaN;
+            }
+            lastV2 = v2;
+            boolean in = map.marked(x, y) && s.grid.hazardClearance(x, y) >= StrokePlan.REST_CLEARANCE
+                    && s.grid.clearance(x, y) >= StrokePlan.REST_OBSTACLE_CLEARANCE;
+            if (in) {
+                run.add(new double[] {length, x, y, need, hits});
+            } else {
+                close();
+            }
+        }
+
+        @Override
+        public void onEvent(StrokeEvent event) {
+            if (event.type() == StrokeEvent.Type.COLLISION) {
+                hits++;
+                if (Double.isNaN(before2)) before2 = event.speedBefore() * event.speedBefore();
+                after2 = event.speedAfter() * event.speedAfter();
+                close();
+            }
+        }
+
+        /**
+         * The shot is over: the current run ends, and where the shot itself came to rest is a
+         * target too when the map marks it (clear of water and obstacles): a landing known exactly,
+         * as forgiving as any.
+         */
+        void end(minigolf.physics.ShotResult r) {
+            close();
+            if (r.outcome() != minigolf.physics.Outcome.STOPPED) return;
+            double x = r.endX(), y = r.endY();
+            if (!map.marked(x, y) || s.grid.hazardClearance(x, y) < StrokePlan.REST_CLEARANCE
+                    || s.grid.clearance(x, y) < StrokePlan.REST_OBSTACLE_CLEARANCE) return;
+            exact.add(new Target(shot, x, y, map.cost(x, y) + 0.5 * hits));
+        }
+
+        /**
+         * Ends the current run: its middle is a target, scored by the run's length and the putt
+         * there; the shot that stops there has the speed² worked out forwards along the path (exact
+         * on flat ground, cushions included: each keeps a share of the speed² that does not depend on it).
+         */
+        void close() {
+            if (run.isEmpty()) return;
+            double start = run.get(0)[0], end = run.get(run.size() - 1)[0];
+            double mid = 0.5 * (start + end);
+            double[] m = run.get(0);
+            for (double[] p : run) if (Math.abs(p[0] - mid) < Math.abs(m[0] - mid)) m = p;
+            run.clear();
+            double speed = Math.sqrt(Math.max(m[3], 0));
+            if (speed < 0.05 || speed > v0) return;
+            double forgiving = Math.min(end - start, LONG_RUN) + 0.05 * map.markedAround(m[1], m[2]);
+            double score = map.cost(m[1], m[2]) - 4 * forgiving + 0.5 * m[4];
+            double angle = Math.atan2(shot.vy(), shot.vx());
+            targets.add(new Target(s.sim.limit(Shot.polar(angle, speed)), m[1], m[2], score));
+        }
+    }
+}
