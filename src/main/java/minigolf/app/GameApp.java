@@ -93,6 +93,8 @@ public final class GameApp implements UiActions, UiView {
     private Sounds sounds;
     /** Confetti and splashes (the renderer draws them; they end by themselves). */
     private final minigolf.render.Particles effects = new minigolf.render.Particles();
+    /** The holed ball sinking into the cup (drawn until it is out of sight). */
+    private final minigolf.render.CupDrop cupDrop = new minigolf.render.CupDrop();
     /** The round the next game plays (set by {@link #playRound} or the menu). */
     private Round roundToPlay;
     /** Frames the between-holes card has been shown (the headless run moves on by itself). */
@@ -400,6 +402,7 @@ public final class GameApp implements UiActions, UiView {
     private void buildScene() {
         rebuildScene = false;
         effects.clear(); // a new hole: the last one's confetti stays behind
+        cupDrop.clear();
         if (renderer != null) renderer.close();
         renderer = null;
         renderer = new SceneRenderer(world.course(), world.terrain(),
@@ -428,6 +431,7 @@ public final class GameApp implements UiActions, UiView {
             input.aimVelocity = pendingAim;
             pendingAim = null;
         }
+        cupDrop.advanceTo(time);
         renderer.setBalls(ballViews());
         renderer.setAim(aimView());
         effects.advanceTo(time);
@@ -452,6 +456,7 @@ public final class GameApp implements UiActions, UiView {
             views.add(new BallView((float) x, (float) y, (float) Math.max(0, replayAnimator.z()), c[0], c[1], c[2]));
             return views;
         }
+        if (cupDrop.view() != null) views.add(cupDrop.view());
         if (game == null) {
             double x = world.course().start().x(), y = world.course().start().y();
             views.add(BallView.white(x, y, world.terrain().height(x, y)));
@@ -531,6 +536,11 @@ public final class GameApp implements UiActions, UiView {
 
     private minigolf.physics.TrajectoryListener strokeSounds(boolean firstStroke) {
         return StrokeFeedback.listener(sounds, firstStroke, effects, world);
+    }
+
+    /** A played stroke's sounds and effects, and the ball in the player's colour dropping into the cup. */
+    private minigolf.physics.TrajectoryListener strokeFeedback(boolean firstStroke, int seat) {
+        return StrokeFeedback.listener(sounds, firstStroke, effects, world, cupDrop, PlayerColors.of(seat));
     }
 
     @Override
@@ -638,7 +648,8 @@ public final class GameApp implements UiActions, UiView {
             return;
         }
         boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
-        animator = new StrokeAnimator(game.startShot(vx, vy, vz, strokeSounds(firstStroke)), game.settings().dt());
+        animator = new StrokeAnimator(game.startShot(vx, vy, vz, strokeFeedback(firstStroke, game.currentPlayer())),
+                game.settings().dt());
         StrokeFeedback.hit(sounds, Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
         input.loft = 0; // the next stroke starts as a putt again
     }

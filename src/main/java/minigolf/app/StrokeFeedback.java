@@ -5,8 +5,8 @@ import minigolf.physics.TrajectoryListener;
 
 /**
  * What a stroke sounds and looks like: the hit itself, then its events (hits, landings, water, the
- * cup, applause for a hole in one) as sounds, and as effects a splash where the ball meets the water
- * and confetti from the cup when it drops (more for a hole in one).
+ * cup, applause for a hole in one) as sounds, and as effects a splash where the ball meets the water,
+ * the ball dropping into the cup and confetti from the cup when it drops (more for a hole in one).
  */
 final class StrokeFeedback {
     private StrokeFeedback() {
@@ -15,7 +15,18 @@ final class StrokeFeedback {
     /** The sounds (none where {@code sounds} is null) and the effects' bursts into {@code effects} (none where null). */
     static TrajectoryListener listener(Sounds sounds, boolean firstStroke, minigolf.render.Particles effects,
                                        minigolf.physics.World world) {
+        return listener(sounds, firstStroke, effects, world, null, null);
+    }
+
+    /** As above, and the ball's drop into the cup ({@code cupDrop}, in the player's colour) when it is holed. */
+    static TrajectoryListener listener(Sounds sounds, boolean firstStroke, minigolf.render.Particles effects,
+                                       minigolf.physics.World world, minigolf.render.CupDrop cupDrop, float[] ballColour) {
         return listener(sounds, firstStroke, e -> {
+            if (cupDrop != null && e.type() == StrokeEvent.Type.HOLED) {
+                double hx = world.hole().position().x(), hy = world.hole().position().y();
+                cupDrop.start(e.x(), e.y(), hx, hy, world.terrain().height(hx, hy),
+                        minigolf.render.ObjectsPass.visualBallRadius(), ballColour);
+            }
             if (effects == null) return;
             long seed = Double.doubleToLongBits(e.x()) * 31 + Double.doubleToLongBits(e.y());
             if (e.type() == StrokeEvent.Type.WATER) {
