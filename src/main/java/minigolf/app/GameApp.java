@@ -363,10 +363,33 @@ public final class GameApp implements UiActions, UiView {
     }
 
     @Override
+    public void watchHole(int hole) {
+        if (round == null || hole < 0 || hole >= round.holesFinished() || round.holeStrokes(hole).isEmpty()
+                || game.isShotInFlight() || screens.screen() == Screen.REPLAY) return;
+        cancelBot();
+        botTurn = null;
+        World holeWorld = round.round().hole(hole).world();
+        replay = new HoleReplay(holeWorld, game.settings(), round.holeStrokes(hole));
+        if (holeWorld != world) { // another hole's course on screen while it is watched
+            world = holeWorld;
+            rebuildScene = true;
+        }
+        replayAnimator = null;
+        replayedStrokes = 0;
+        replayMismatches = 0;
+        replayReturn = screens.screen();
+        screens.show(Screen.REPLAY);
+    }
+
+    @Override
     public void stopReplay() {
         if (screens.screen() != Screen.REPLAY) return;
         replay = null;
         replayAnimator = null;
+        if (game != null && world != game.world()) { // back to the hole being played
+            world = game.world();
+            rebuildScene = true;
+        }
         screens.show(replayReturn);
     }
 

@@ -23,6 +23,8 @@ public final class RoundGame {
     private final int strokeLimit;
     private final NoiseModel noise;
     private final long noiseSeed;
+    /** The strokes of each finished hole, as played (empty for holes of a save from before they were kept). */
+    private final List<List<ShotRecord>> finishedStrokes = new ArrayList<>();
     /** scores[hole][seat]; only the first {@link #finished} rows are filled. */
     private final int[][] scores;
     private int finished;
@@ -77,13 +79,26 @@ public final class RoundGame {
      * the current hole (which must be the round's next hole, with the same players).
      */
     public static RoundGame restore(Round round, int[][] finishedScores, Game current) {
+        return restore(round, finishedScores, List.of(), current);
+    }
+
+    /**
+     * As {@link #restore(Round, int[][], Game)}, with the strokes of the finished holes (for "watch
+     * hole N again"); holes beyond {@code strokes}' size have none.
+     */
+    public static RoundGame restore(Round round, int[][] finishedScores, List<List<ShotRecord>> strokes, Game current) {
+        if (strokes.size() > finishedScores.length) {
+            throw new IllegalArgumentException("strokes for " + strokes.size() + " holes, but " + finishedScores.length + " are finished");
+        }
         if (finishedScores.length < round.size() && !current.world().course().equals(round.hole(finishedScores.length).world().course())) {
             throw new IllegalArgumentException("the saved hole is not hole " + (finishedScores.length + 1) + " of the round");
         }
         int hole = Math.min(finishedScores.length, round.size() - 1);
         long roundSeed = current.noiseSeed() - HOLE_SEED_STEP * hole;
-        return new RoundGame(round, current.settings(), current.players(), current.strokeLimit(), current.noise(),
+        RoundGame rg = new RoundGame(round, current.settings(), current.players(), current.strokeLimit(), current.noise(),
                 roundSeed, finishedScores.length, finishedScores, current);
+        for (int h = 0; h < finishedScores.length; h++) rg.finishedStrokes.add(h < strokes.size() ? List.copyOf(strokes.get(h)) : List.of());
+        return rg;
     }
 
     /** The game on hole h, with the round's noise and that hole's stream. */
@@ -143,6 +158,7 @@ public final class RoundGame {
         if (finished > holeIndex) throw new IllegalStateException("hole " + (holeIndex + 1) + " is already on the card");
         int[] s = game.scorecard().lines().stream().mapToInt(ScoreLine::score).toArray();
         scores[holeIndex] = s;
+        finishedStrokes.add(List.copyOf(game.history()));
         finished++;
         return s.clone();
     }
@@ -154,6 +170,12 @@ public final class RoundGame {
         holeIndex++;
         game = holeGame(holeIndex);
         return true;
+    }
+
+    /** The strokes of finished hole h as played (empty where a save from before did not keep them). */
+    public List<ShotRecord> holeStrokes(int h) {
+        if (h < 0 || h >= finished) throw new IllegalArgumentException("hole " + (h + 1) + " is not finished");
+        return finishedStrokes.get(h);
     }
 
     /** The scores of the finished holes, [hole][seat]. */

@@ -87,15 +87,7 @@ public final class SavedGames {
             o.put("penalties", st.penalties());
             o.put("status", st.status().jsonName());
         }
-        ArrayNode history = root.putArray("history");
-        for (ShotRecord r : s.history()) {
-            ObjectNode o = history.addObject();
-            o.put("player", r.player());
-            o.putArray("start").add(r.startX()).add(r.startY());
-            velocity(o, r.vx(), r.vy(), r.vz());
-            o.put("outcome", r.outcome().jsonName());
-            o.putArray("end").add(r.endX()).add(r.endY());
-        }
+        writeHistory(root.putArray("history"), s.history());
         if (s.pendingShot() != null) {
             PendingShot p = s.pendingShot();
             velocity(root.putObject("pendingShot"), p.vx(), p.vy(), p.vz());
@@ -198,18 +190,7 @@ public final class SavedGames {
             states.add(new PlayerState(ball[0], ball[1], strokes, penalties, status));
         }
 
-        JsonNode historyNode = f.array(root, null, "history");
-        List<ShotRecord> history = new ArrayList<>();
-        for (int i = 0; i < historyNode.size(); i++) {
-            String p = "history[" + i + "]";
-            JsonNode o = f.object(historyNode.get(i), p);
-            f.onlyFields(o, p, SHOT);
-            int who = f.integer(o, p, "player", 0, players.size() - 1);
-            double[] start = f.vec(o, p, "start"), v = f.velocity(o, p, "velocity"), end = f.vec(o, p, "end");
-            Outcome outcome = outcomeNamed(f.text(o, p, "outcome"));
-            if (outcome == null) throw f.error(p + ".outcome", "must be holed, stopped, water, out or timeout");
-            history.add(new ShotRecord(who, start[0], start[1], v[0], v[1], v[2], outcome, end[0], end[1]));
-        }
+        List<ShotRecord> history = readHistory(f, f.array(root, null, "history"), "history", players.size());
 
         PendingShot pending = null;
         JsonNode pendingNode = root.get("pendingShot");
@@ -248,5 +229,33 @@ public final class SavedGames {
     private static Outcome outcomeNamed(String name) {
         for (Outcome o : Outcome.values()) if (o.jsonName().equals(name)) return o;
         return null;
+    }
+
+    /** Writes strokes as a saved game's {@code history} holds them (a putt's velocity as [vx, vy]). */
+    static void writeHistory(ArrayNode out, List<ShotRecord> strokes) {
+        for (ShotRecord r : strokes) {
+            ObjectNode o = out.addObject();
+            o.put("player", r.player());
+            o.putArray("start").add(r.startX()).add(r.startY());
+            velocity(o, r.vx(), r.vy(), r.vz());
+            o.put("outcome", r.outcome().jsonName());
+            o.putArray("end").add(r.endX()).add(r.endY());
+        }
+    }
+
+    /** Reads strokes written by {@link #writeHistory}; {@code path} names the array in messages. */
+    static List<ShotRecord> readHistory(JsonFields f, JsonNode historyNode, String path, int players) throws SaveGameException {
+        List<ShotRecord> history = new ArrayList<>();
+        for (int i = 0; i < historyNode.size(); i++) {
+            String p = path + "[" + i + "]";
+            JsonNode o = f.object(historyNode.get(i), p);
+            f.onlyFields(o, p, SHOT);
+            int who = f.integer(o, p, "player", 0, players - 1);
+            double[] start = f.vec(o, p, "start"), v = f.velocity(o, p, "velocity"), end = f.vec(o, p, "end");
+            Outcome outcome = outcomeNamed(f.text(o, p, "outcome"));
+            if (outcome == null) throw f.error(p + ".outcome", "must be holed, stopped, water, out or timeout");
+            history.add(new ShotRecord(who, start[0], start[1], v[0], v[1], v[2], outcome, end[0], end[1]));
+        }
+        return history;
     }
 }

@@ -22,7 +22,7 @@ import minigolf.physics.World;
 public final class SavedRounds {
     public static final int FORMAT = 1;
     static final String KIND = "minigolf-saved-round";
-    private static final List<String> TOP = List.of("format", "kind", "round", "scores", "hole");
+    private static final List<String> TOP = List.of("format", "kind", "round", "scores", "strokes", "hole");
     private static final List<String> ROUND = List.of("name", "source", "holes");
     private static final List<String> HOLE = List.of("course", "par", "definition");
 
@@ -71,6 +71,9 @@ public final class SavedRounds {
                 ArrayNode r = scores.addArray();
                 for (int s : row) r.add(s);
             }
+            // Every finished hole's strokes, so that any hole of a saved round can be watched again.
+            ArrayNode strokes = root.putArray("strokes");
+            for (int h = 0; h < rg.holesFinished(); h++) SavedGames.writeHistory(strokes.addArray(), rg.holeStrokes(h));
             root.set("hole", JsonFields.MAPPER.readTree(SavedGames.toJson(rg.game())));
             return JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";
         } catch (IOException e) {
@@ -140,8 +143,19 @@ public final class SavedRounds {
                 scores[i][s] = row.get(s).intValue();
             }
         }
+        List<List<ShotRecord>> strokes = new ArrayList<>();
+        JsonNode strokesNode = root.get("strokes"); // absent in saves from before it was kept
+        if (strokesNode != null) {
+            JsonNode arr = f.array(root, null, "strokes");
+            if (arr.size() != scores.length) throw f.error("strokes", "has " + arr.size() + " holes, the scores " + scores.length);
+            for (int i = 0; i < arr.size(); i++) {
+                String p = "strokes[" + i + "]";
+                if (!arr.get(i).isArray()) throw f.error(p, "must be an array of strokes");
+                strokes.add(SavedGames.readHistory(f, arr.get(i), p, players));
+            }
+        }
         try {
-            return RoundGame.restore(round, scores, hole.resume());
+            return RoundGame.restore(round, scores, strokes, hole.resume());
         } catch (IllegalArgumentException e) {
             throw f.error(null, e.getMessage());
         }

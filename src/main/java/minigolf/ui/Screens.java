@@ -436,6 +436,7 @@ public final class Screens {
         Gui.begin("Paused", PANEL);
         float bw = 240;
         if (Gui.button("Resume", bw, 0)) show(Screen.PLAYING);
+        if (lastView != null) watchHoles(lastView.round());
         if (Gui.button("Save game", bw, 0)) actions.saveGame();
         if (Gui.button("Settings", bw, 0)) settingsFromPause();
         if (Gui.button("Main menu", bw, 0)) actions.toMainMenu();
@@ -444,6 +445,17 @@ public final class Screens {
     }
 
     private UiView lastView;
+
+    /** "Watch hole: 1 2 3 ...": any finished hole of the round again, as played (nothing for a single course). */
+    private void watchHoles(minigolf.game.RoundGame round) {
+        if (round == null || round.holesFinished() == 0) return;
+        Gui.text("Watch hole:");
+        for (int hole = 0; hole < round.holesFinished(); hole++) {
+            if (round.holeStrokes(hole).isEmpty()) continue;
+            if (hole % 9 != 0) Gui.sameLine();
+            if (Gui.button((hole + 1) + "##watch", 24, 0)) actions.watchHole(hole);
+        }
+    }
 
     private void settingsFromPause() {
         if (lastView != null) openSettings(lastView, Screen.PAUSED);
@@ -566,6 +578,7 @@ public final class Screens {
             }
         }
         if (Gui.button("Watch hole " + (card.holesPlayed()) + " again", 220, 0)) actions.watchReplay();
+        if (card.holesPlayed() > 1) watchHoles(view.round());
         if (!card.over()) {
             if (Gui.button("Next hole", 160, 0)) actions.nextHole();
             Gui.sameLine();

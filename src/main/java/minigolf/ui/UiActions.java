@@ -54,6 +54,10 @@ public interface UiActions {
     /** Plays the current hole's strokes again, exactly as played. */
     void watchReplay();
 
+    /** Plays finished hole {@code hole} (0-based) of the round again, exactly as played (also after a load). */
+    default void watchHole(int hole) {
+    }
+
     void stopReplay();
 
     /** Sets and keeps the volumes. */

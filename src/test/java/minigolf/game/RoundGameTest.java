@@ -181,4 +181,34 @@ class RoundGameTest {
         assertEquals(a.endY(), b.endY(), 0.0);
         assertArrayEquals(rg.finishedScores()[1], back.finishedScores()[1]);
     }
+
+    /** A saved round keeps every finished hole's strokes: any hole can be watched again after a load. */
+    @Test
+    void aSavedRoundKeepsEveryFinishedHolesStrokes() throws Exception {
+        RoundGame rg = new RoundGame(threeHoles(), SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 10);
+        assertEquals(Outcome.STOPPED, rg.game().play(speedFor(2.5), 0.02).outcome());
+        rg.game().play(speedFor(Math.hypot(1 - rg.game().player(0).x(), rg.game().player(0).y())), 0);
+        while (!rg.game().isOver()) rg.game().play(speedFor(0.3), 0);
+        rg.finishHole();
+        List<ShotRecord> played = rg.holeStrokes(0);
+        assertTrue(rg.nextHole());
+        Path file = dir.resolve("strokes.json");
+        SavedRounds.save(rg, file);
+        RoundGame back = SavedRounds.load(file);
+        assertEquals(played, back.holeStrokes(0));
+        // The replay of the loaded hole ends where play did, to the bit.
+        HoleReplay replay = new HoleReplay(back.round().hole(0).world(), SimulationSettings.DEFAULT, back.holeStrokes(0));
+        for (ShotRecord r : played) {
+            var result = replay.nextStroke(null).run();
+            assertEquals(r.endX(), result.endX(), 0.0);
+            assertEquals(r.endY(), result.endY(), 0.0);
+        }
+        // A save from before strokes were kept still loads; its holes just have none to watch.
+        var tree = (com.fasterxml.jackson.databind.node.ObjectNode) new com.fasterxml.jackson.databind.ObjectMapper()
+                .readTree(SavedRounds.toJson(rg));
+        tree.remove("strokes");
+        String old = tree.toString();
+        RoundGame fromOld = SavedRounds.parse(old, "old.json");
+        assertTrue(fromOld.holeStrokes(0).isEmpty());
+    }
 }
