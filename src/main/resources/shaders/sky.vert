@@ -5,6 +5,8 @@
 // far distance, darker than the sky, so the course reads as floating above a valley. All of that
 // varies slowly over the screen, so it is computed per grid corner and interpolated: a software
 // rasteriser then pays little per pixel (sky.frag keeps the clouds' edges and the sun's disc sharp).
+#include "sky-colour.glsl"
+
 layout(location = 0) in vec2 aNdc;
 
 uniform mat4 uInverseViewProjection;
@@ -42,10 +44,7 @@ void main() {
     float up = dir.z;
     float s = max(dot(dir, sun), 0.0);
 
-    vec3 horizon = vec3(0.80, 0.88, 0.96);
-    vec3 zenith = vec3(0.22, 0.45, 0.82);
-    vec3 below = vec3(0.55, 0.70, 0.88);
-    vSky = up >= 0.0 ? mix(horizon, zenith, pow(max(up, 0.0), 0.55)) : mix(horizon, below, clamp(-up * 1.6, 0.0, 1.0));
+    vSky = skyGradient(dir);
 
     // The noise is read at a mip level as coarse as the grid: finer detail could not be interpolated anyway.
     vec2 uv = cloudUv(dir);
@@ -55,7 +54,7 @@ void main() {
     vCloudUv = uv;
     vCloudColor = vec3(1.0, 0.9, 0.7) * pow(s, 8.0) * 0.25;
     vCloudAlpha = up >= 0.0 ? smoothstep(0.02, 0.25, up) * 0.9 : 0.0;
-    vGlow = vec3(1.0, 0.95, 0.80) * (pow(s, 300.0) * 0.6 + pow(s, 12.0) * 0.15);
+    vGlow = sunGlow(s);
     vDir = dir;
     gl_Position = vec4(aNdc, 1.0, 1.0);
 }
