@@ -17,7 +17,9 @@ import java.util.List;
 public final class SurroundingsPass implements RenderPass {
     /** The meadow's radius round the course's centre (metres); it is wholly faded well before its edge. */
     static final double MEADOW_RADIUS = 200;
-    static final int MEADOW_SEGMENTS = 48;
+    /** The meadow's rings (metres from the centre), the last at its edge, and the segments round each. */
+    static final double[] MEADOW_RINGS = {6, 10, 15, 21, 28, 36, 45, 55, 67, 81, 97, 115, 140, 170, MEADOW_RADIUS};
+    static final int MEADOW_SEGMENTS = 64;
     /** Duller and darker than the course's grass, and without its mowing stripes. */
     static final float[] MEADOW_COLOR = {0.29f, 0.45f, 0.18f};
     /** Horizontal distances from the eye over which the meadow and the trees fade into the sky's haze. */
@@ -71,18 +73,39 @@ public final class SurroundingsPass implements RenderPass {
         return new Layout(MeshData.concat(wood, meadow), built.solidPieces(), List.copyOf(crowns), wood.indices().length);
     }
 
-    /** A flat disc facing up: a fan round the centre. */
+    /**
+     * A flat disc facing up: a fan round the centre, then rings further apart outwards (the fade is
+     * computed per vertex, so it needs vertices where it changes).
+     */
     static MeshData meadow(double cx, double cy, double z) {
-        float[] v = new float[(MEADOW_SEGMENTS + 1) * 9];
-        int[] idx = new int[MEADOW_SEGMENTS * 3];
+        int rings = MEADOW_RINGS.length, n = MEADOW_SEGMENTS;
+        float[] v = new float[(1 + rings * n) * 9];
+        int[] idx = new int[3 * n + 6 * n * (rings - 1)];
         float[] c = MEADOW_COLOR;
         int p = Shapes.putPnc(v, 0, cx, cy, z, 0, 0, 1, c[0], c[1], c[2]);
-        for (int k = 0; k < MEADOW_SEGMENTS; k++) {
-            double a = 2 * Math.PI * k / MEADOW_SEGMENTS;
-            p = Shapes.putPnc(v, p, cx + MEADOW_RADIUS * Math.cos(a), cy + MEADOW_RADIUS * Math.sin(a), z, 0, 0, 1, c[0], c[1], c[2]);
-            idx[3 * k] = 0;
-            idx[3 * k + 1] = 1 + k;
-            idx[3 * k + 2] = 1 + (k + 1) % MEADOW_SEGMENTS;
+        for (double r : MEADOW_RINGS) {
+            for (int k = 0; k < n; k++) {
+                double a = 2 * Math.PI * k / n;
+                p = Shapes.putPnc(v, p, cx + r * Math.cos(a), cy + r * Math.sin(a), z, 0, 0, 1, c[0], c[1], c[2]);
+            }
+        }
+        int q = 0;
+        for (int k = 0; k < n; k++) {
+            idx[q++] = 0;
+            idx[q++] = 1 + k;
+            idx[q++] = 1 + (k + 1) % n;
+        }
+        for (int ring = 0; ring + 1 < rings; ring++) {
+            int inner = 1 + ring * n, outer = inner + n;
+            for (int k = 0; k < n; k++) {
+                int k1 = (k + 1) % n;
+                idx[q++] = inner + k;
+                idx[q++] = outer + k;
+                idx[q++] = outer + k1;
+                idx[q++] = inner + k;
+                idx[q++] = outer + k1;
+                idx[q++] = inner + k1;
+            }
         }
         return new MeshData(MeshData.PNC, v, idx);
     }

@@ -23,7 +23,7 @@ public final class TreePlacement {
     public static final double MAX_DISTANCE = 60.0;
     /** Trunks keep at least this far apart, so crowns do not merge into one blob. */
     static final double SPACING = 2.5;
-    static final double MIN_HEIGHT = 2.5, MAX_HEIGHT = 5.0;
+    static final double MIN_HEIGHT = 2.2, MAX_HEIGHT = 4.4;
 
     private TreePlacement() {
     }
