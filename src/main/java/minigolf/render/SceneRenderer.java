@@ -105,6 +105,7 @@ public final class SceneRenderer implements AutoCloseable {
         obstacles = ob;
         objects = o;
         surroundings = u;
+        sky.setGround(u.level(), SurroundingsPass.MEADOW_COLOR, SurroundingsPass.FADE_START, SurroundingsPass.FADE_END);
         passes = List.of(terrain, obstacles, objects, surroundings, sky, water);
         ShaderProgram depth = null;
         try {

@@ -7,23 +7,19 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * What stands round the course, so it does not float in an empty sky: a meadow disc at the foot of
- * the slab's side walls and decorative trees (the obstacles' trunk and crown meshes) beyond the
- * bounds, fading with distance into the sky's haze below the horizon (surroundings.frag matches
- * sky.vert's colours, so the disc's edge never shows). One static mesh, one draw call; drawn after
- * the course's opaque passes (early depth test skips what the course covers) and before the sky.
- * Decoration only: physics, the camera's clearance, the shadow map and the minimap never see it.
+ * What stands round the course, so it does not float in an empty sky: a meadow at the foot of the
+ * slab's side walls, and decorative trees (the obstacles' trunk and crown meshes) beyond the bounds
+ * ({@link TreePlacement}). The meadow is a plane that the sky pass shades below the horizon
+ * ({@link SkyPass#setGround}, per grid corner: a depth-tested disc cost llvmpipe 2 ms a frame for
+ * its half of the screen); this pass draws the trees, lit and faded into the sky's colours per
+ * vertex (surroundings.vert), after the course's opaque passes and before the sky. Decoration only:
+ * physics, the camera's clearance, the shadow map and the minimap never see any of it.
  */
 public final class SurroundingsPass implements RenderPass {
-    /** The meadow's radius round the course's centre (metres); it is wholly faded well before its edge. */
-    static final double MEADOW_RADIUS = 200;
-    /** The meadow's rings (metres from the centre), the last at its edge, and the segments round each. */
-    static final double[] MEADOW_RINGS = {6, 10, 15, 21, 28, 36, 45, 55, 67, 81, 97, 115, 140, 170, MEADOW_RADIUS};
-    static final int MEADOW_SEGMENTS = 64;
     /** Duller and darker than the course's grass, and without its mowing stripes. */
-    static final float[] MEADOW_COLOR = {0.29f, 0.45f, 0.18f};
+    public static final float[] MEADOW_COLOR = {0.29f, 0.45f, 0.18f};
     /** Horizontal distances from the eye over which the meadow and the trees fade into the sky's haze. */
-    static final float FADE_START = 25f, FADE_END = 125f;
+    public static final float FADE_START = 25f, FADE_END = 125f;
     /** Trees per quality: llvmpipe pays per triangle (a tree is about 300). */
     static final int TREES_HIGH = 48, TREES_SOFTWARE = 24;
 
@@ -39,10 +35,10 @@ public final class SurroundingsPass implements RenderPass {
         this.level = level;
         this.bounds = bounds;
         this.trees = TreePlacement.around(bounds, treeCount);
-        layout = build(bounds, level, trees);
+        layout = build(level, trees);
         ShaderProgram s = ShaderProgram.load("surroundings");
         try {
-            mesh = new Mesh(layout.data());
+            mesh = layout == null ? null : new Mesh(layout.data());
         } catch (RuntimeException e) {
             s.close();
             throw e;
@@ -55,72 +51,37 @@ public final class SurroundingsPass implements RenderPass {
         return quality.vertexLit() ? TREES_SOFTWARE : TREES_HIGH;
     }
 
-    /**
-     * The mesh: trunks, crowns, then the meadow (the meadow behind the trees then fails the depth
-     * test); per tree its trunk's and its crown's index runs and its box, so a frame can skip trees.
-     */
-    record Layout(MeshData data, List<ObstacleMeshes.Piece> trunks, List<ObstacleMeshes.Piece> crowns, int meadowFirst) {
+    /** The mesh, trunks then crowns; per tree its trunk's and its crown's index runs (with boxes), so a frame can skip trees. */
+    record Layout(MeshData data, List<ObstacleMeshes.Piece> trunks, List<ObstacleMeshes.Piece> crowns) {
     }
 
-    static Layout build(Bounds b, double level, List<Obstacle.Tree> trees) {
-        MeshData meadow = meadow((b.minX() + b.maxX()) / 2, (b.minY() + b.maxY()) / 2, level);
-        if (trees.isEmpty()) return new Layout(meadow, List.of(), List.of(), 0);
+    static Layout build(double level, List<Obstacle.Tree> trees) {
+        if (trees.isEmpty()) return null;
         ObstacleMeshes.Built built = ObstacleMeshes.build(List.copyOf(trees), (x, y) -> level, m -> null);
-        int shift = built.solid().indices().length;
+        // The trunks reach 1 m into the ground, as the physics' cylinders do; the meadow is drawn by the
+        // sky, behind everything, so they must stop at its level.
+        float[] v = built.solid().vertices().clone();
+        int stride = built.solid().stride();
+        for (int i = 2; i < v.length; i += stride) v[i] = Math.max(v[i], (float) level);
+        MeshData trunks = new MeshData(built.solid().layout(), v, built.solid().indices());
+        int shift = trunks.indices().length;
         List<ObstacleMeshes.Piece> crowns = new ArrayList<>();
         for (ObstacleMeshes.Piece c : built.decorationPieces()) crowns.add(new ObstacleMeshes.Piece(shift + c.first(), c.count(), c.box()));
-        MeshData wood = MeshData.concat(built.solid(), built.decoration());
-        return new Layout(MeshData.concat(wood, meadow), built.solidPieces(), List.copyOf(crowns), wood.indices().length);
-    }
-
-    /**
-     * A flat disc facing up: a fan round the centre, then rings further apart outwards (the fade is
-     * computed per vertex, so it needs vertices where it changes).
-     */
-    static MeshData meadow(double cx, double cy, double z) {
-        int rings = MEADOW_RINGS.length, n = MEADOW_SEGMENTS;
-        float[] v = new float[(1 + rings * n) * 9];
-        int[] idx = new int[3 * n + 6 * n * (rings - 1)];
-        float[] c = MEADOW_COLOR;
-        int p = Shapes.putPnc(v, 0, cx, cy, z, 0, 0, 1, c[0], c[1], c[2]);
-        for (double r : MEADOW_RINGS) {
-            for (int k = 0; k < n; k++) {
-                double a = 2 * Math.PI * k / n;
-                p = Shapes.putPnc(v, p, cx + r * Math.cos(a), cy + r * Math.sin(a), z, 0, 0, 1, c[0], c[1], c[2]);
-            }
-        }
-        int q = 0;
-        for (int k = 0; k < n; k++) {
-            idx[q++] = 0;
-            idx[q++] = 1 + k;
-            idx[q++] = 1 + (k + 1) % n;
-        }
-        for (int ring = 0; ring + 1 < rings; ring++) {
-            int inner = 1 + ring * n, outer = inner + n;
-            for (int k = 0; k < n; k++) {
-                int k1 = (k + 1) % n;
-                idx[q++] = inner + k;
-                idx[q++] = outer + k;
-                idx[q++] = outer + k1;
-                idx[q++] = inner + k;
-                idx[q++] = outer + k1;
-                idx[q++] = inner + k1;
-            }
-        }
-        return new MeshData(MeshData.PNC, v, idx);
+        return new Layout(MeshData.concat(trunks, built.decoration()), built.solidPieces(), List.copyOf(crowns));
     }
 
     public List<Obstacle.Tree> trees() {
         return trees;
     }
 
-    /** The meadow's height. */
+    /** The meadow's height, where the trees stand. */
     public double level() {
         return level;
     }
 
     @Override
     public void render(FrameContext frame) {
+        if (mesh == null) return;
         shader.use();
         Lighting.apply(shader, frame);
         shader.set("uViewProjection", frame.viewProjection);
@@ -129,7 +90,6 @@ public final class SurroundingsPass implements RenderPass {
         boolean[] drawn = drawnTrees(frame);
         drawRuns(layout.trunks(), drawn);
         drawRuns(layout.crowns(), drawn);
-        mesh.drawRange(layout.meadowFirst(), layout.data().indices().length - layout.meadowFirst());
     }
 
     /**
@@ -182,7 +142,7 @@ public final class SurroundingsPass implements RenderPass {
 
     @Override
     public void close() {
-        mesh.close();
+        if (mesh != null) mesh.close();
         shader.close();
     }
 }
