@@ -1,8 +1,6 @@
-// The meadow and the trees round the course (SurroundingsPass), all per vertex: llvmpipe paid about
-// 6 ms a frame for the same per pixel over the meadow's half of the screen. Lit (the meadow is flat,
-// the trees small), never shadowed, then the course's haze and, with the horizontal distance from
-// the eye, the sky's own colour in this direction (sky-colour.glsl), so the meadow melts into the
-// sky below the horizon. The meadow's rings are dense enough for the fade to interpolate smoothly.
+// The decorative trees round the course (SurroundingsPass), all per vertex (they are small on screen):
+// lit, never shadowed, then the course's haze and, with the horizontal distance from the eye, the
+// sky's own colour in this direction (sky-colour.glsl), as sky.vert fades the meadow they stand on.
 #include "lighting.glsl"
 #include "sky-colour.glsl"
 
