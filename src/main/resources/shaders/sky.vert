@@ -5,16 +5,24 @@
 // far distance, darker than the sky, so the course reads as floating above a valley. All of that
 // varies slowly over the screen, so it is computed per grid corner and interpolated: a software
 // rasteriser then pays little per pixel (sky.frag keeps the clouds' edges and the sun's disc sharp).
+#include "lighting.glsl"
+#include "sky-colour.glsl"
+
 layout(location = 0) in vec2 aNdc;
 
 uniform mat4 uInverseViewProjection;
-uniform vec3 uSunDirection;
 uniform float uTime;
 uniform sampler2D uClouds;
 uniform float uCloudPeriod;
 uniform float uCloudTexels;  // texels per side of uClouds
 uniform vec2 uGridStep;      // one grid cell in NDC
 uniform float uGridPixels;   // one grid cell in pixels (about)
+// The meadow round the course (SurroundingsPass), a plane at height uGround.x when uGround.y is 1: its
+// colour varies slowly over the screen too (flat, unshadowed), so it is computed here per corner
+// instead of costing llvmpipe a depth-tested fill of half the screen (about 2 ms a frame).
+uniform vec2 uGround;
+uniform vec3 uGroundColor;
+uniform vec2 uFade;          // horizontal distances over which the meadow fades into the sky
 
 out vec3 vSky;        // gradient under the clouds
 out vec3 vCloudColor; // the sun's warm tint on the clouds here
@@ -42,10 +50,17 @@ void main() {
     float up = dir.z;
     float s = max(dot(dir, sun), 0.0);
 
-    vec3 horizon = vec3(0.80, 0.88, 0.96);
-    vec3 zenith = vec3(0.22, 0.45, 0.82);
-    vec3 below = vec3(0.55, 0.70, 0.88);
-    vSky = up >= 0.0 ? mix(horizon, zenith, pow(max(up, 0.0), 0.55)) : mix(horizon, below, clamp(-up * 1.6, 0.0, 1.0));
+    vSky = skyGradient(dir);
+    vGlow = sunGlow(s);
+    vec4 nearPoint = uInverseViewProjection * vec4(aNdc, -1.0, 1.0);
+    vec3 origin = nearPoint.xyz / nearPoint.w;
+    if (uGround.y > 0.5 && up < 0.0 && origin.z > uGround.x) {
+        vec3 p = origin + dir * ((uGround.x - origin.z) / up);
+        vec3 lit = haze(shade(uGroundColor, vec3(0.0, 0.0, 1.0), p, 0.03, 8.0), p);
+        float f = smoothstep(uFade.x, uFade.y, length(p.xy - uEye.xy));
+        vSky = mix(lit, vSky, f);
+        vGlow *= f; // the fragment adds it: mix(lit, sky + glow, f) in all
+    }
 
     // The noise is read at a mip level as coarse as the grid: finer detail could not be interpolated anyway.
     vec2 uv = cloudUv(dir);
@@ -55,7 +70,6 @@ void main() {
     vCloudUv = uv;
     vCloudColor = vec3(1.0, 0.9, 0.7) * pow(s, 8.0) * 0.25;
     vCloudAlpha = up >= 0.0 ? smoothstep(0.02, 0.25, up) * 0.9 : 0.0;
-    vGlow = vec3(1.0, 0.95, 0.80) * (pow(s, 300.0) * 0.6 + pow(s, 12.0) * 0.15);
     vDir = dir;
     gl_Position = vec4(aNdc, 1.0, 1.0);
 }

@@ -13,7 +13,7 @@ import static org.lwjgl.opengl.GL13.GL_MULTISAMPLE;
 import static org.lwjgl.opengl.GL30.*;
 
 /**
- * Draws a course: terrain, objects, the sky where they left the far plane, then water (translucent, last). Owns the passes; needs a
+ * Draws a course: terrain, objects, the surroundings (meadow, trees), the sky where they left the far plane, then water (translucent, last). Owns the passes; needs a
  * current GL context from construction to {@link #close()}.
  */
 public final class SceneRenderer implements AutoCloseable {
@@ -26,6 +26,7 @@ public final class SceneRenderer implements AutoCloseable {
     private final TerrainPass terrain;
     private final ObjectsPass objects;
     private final ObstaclesPass obstacles;
+    private final SurroundingsPass surroundings;
     private final WaterPass water;
     private final List<RenderPass> passes;
     private final FrameContext frame = new FrameContext(FrameContext.Sun.afternoon());
@@ -86,21 +87,26 @@ public final class SceneRenderer implements AutoCloseable {
         TerrainPass t = null;
         ObstaclesPass ob = null;
         ObjectsPass o = null;
+        SurroundingsPass u = null;
         try {
             s = new SkyPass();
             t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing());
             ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit());
             o = new ObjectsPass(course, surface, quality.vertexLit());
+            u = new SurroundingsPass(course.bounds(), TerrainMesh.skirtBase(t.minHeight(), course.bounds()),
+                    SurroundingsPass.treesFor(quality));
             water = new WaterPass(course, surface);
         } catch (RuntimeException e) {
-            for (RenderPass p : new RenderPass[]{o, ob, t, s}) if (p != null) p.close();
+            for (RenderPass p : new RenderPass[]{u, o, ob, t, s}) if (p != null) p.close();
             throw e;
         }
         sky = s;
         terrain = t;
         obstacles = ob;
         objects = o;
-        passes = List.of(terrain, obstacles, objects, sky, water);
+        surroundings = u;
+        sky.setGround(u.level(), SurroundingsPass.MEADOW_COLOR, SurroundingsPass.FADE_START, SurroundingsPass.FADE_END);
+        passes = List.of(terrain, obstacles, objects, surroundings, sky, water);
         ShaderProgram depth = null;
         try {
             depth = ShaderProgram.load("shadow");
@@ -385,6 +391,8 @@ public final class SceneRenderer implements AutoCloseable {
         timer.mark("objects");
         if (ballShadowRedraw && shadows && frame.ballShadowCount > 0) drawBallShadows(width, height);
         timer.mark("ballShadows");
+        surroundings.render(frame); // after the course: early depth test skips what it covers
+        timer.mark("surroundings");
         // The sky after the opaque passes, depth-tested at the far plane: its clouds are shaded only where it shows.
         sky.render(frame);
         timer.mark("sky");
@@ -457,6 +465,7 @@ public final class SceneRenderer implements AutoCloseable {
         terrain.renderForWaterTarget(mirrorFrame); // the coarser mesh, where there is one: far banks, mirrored
         obstacles.renderInRect(mirrorFrame, wet);
         objects.render(mirrorFrame);
+        surroundings.render(mirrorFrame);
         sky.render(mirrorFrame);
         timer.mark("reflectionTarget");
 

@@ -18,6 +18,7 @@ import static org.lwjgl.opengl.GL30.*;
  * corners and interpolated, and only the cells that can show a cloud (some corner above the horizon)
  * read the cloud texture per pixel, only those near the sun draw its disc: from the usual view down
  * onto a course neither shows, so a software rasteriser shades most of the sky for its gradient alone.
+ * Below the horizon it can show the meadow round the course ({@link #setGround}), computed the same way.
  */
 public final class SkyPass implements RenderPass {
     /** The cloud tile's texels per side (4 texels per cell of the finest octave). */
@@ -39,6 +40,10 @@ public final class SkyPass implements RenderPass {
     private final float[] cornerUp = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final float[] cornerSun = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final Vector4f near = new Vector4f(), far = new Vector4f();
+    /** The meadow's plane below the horizon (NaN: none, the hazy far distance), its colour and fade. */
+    private float groundLevel = Float.NaN;
+    private float[] groundColor = {0, 0, 0};
+    private float fadeStart, fadeEnd;
 
     public SkyPass() {
         glBindVertexArray(vao);
@@ -141,8 +146,25 @@ public final class SkyPass implements RenderPass {
         glDepthMask(true);
     }
 
+    /**
+     * Shows a flat meadow of {@code color} at height {@code level} below the horizon (lit by the sun,
+     * hazed as the terrain), fading over fadeStart to fadeEnd metres of horizontal distance from the
+     * eye into the sky's colours: see {@link SurroundingsPass}.
+     */
+    public void setGround(double level, float[] color, float fadeStart, float fadeEnd) {
+        this.groundLevel = (float) level;
+        this.groundColor = color.clone();
+        this.fadeStart = fadeStart;
+        this.fadeEnd = fadeEnd;
+    }
+
     private void use(ShaderProgram shader, FrameContext frame) {
         shader.use();
+        Lighting.apply(shader, frame);
+        boolean ground = !Float.isNaN(groundLevel);
+        shader.set("uGround", ground ? groundLevel : 0f, ground ? 1f : 0f);
+        shader.set("uGroundColor", groundColor[0], groundColor[1], groundColor[2]);
+        shader.set("uFade", fadeStart, fadeEnd);
         shader.set("uInverseViewProjection", frame.inverseViewProjection);
         shader.set("uSunDirection", frame.sun.direction());
         shader.set("uTime", frame.time);

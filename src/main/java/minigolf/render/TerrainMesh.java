@@ -103,7 +103,7 @@ public final class TerrainMesh {
                 maxH = Math.max(maxH, s[0]);
             }
         }
-        double base = Math.min(minH, 0) - Math.max(0.25, 0.015 * Math.max(b.width(), b.depth()));
+        double base = skirtBase(minH, b);
         int skirtVertices = 2 * 2 * (cols + rows);
         float[] v = new float[(cols * rows + skirtVertices) * STRIDE];
         int[] idx = new int[nx * ny * 6 + 2 * 6 * (nx + ny)];
@@ -348,6 +348,11 @@ public final class TerrainMesh {
      */
     public int[] cellStarts() {
         return cellStarts.clone();
+    }
+
+    /** The height the skirts reach down to, for terrain whose lowest sample is {@code minHeight}: where the slab stands. */
+    public static double skirtBase(double minHeight, Bounds b) {
+        return Math.min(minHeight, 0) - Math.max(0.25, 0.015 * Math.max(b.width(), b.depth()));
     }
 
     public double minHeight() {

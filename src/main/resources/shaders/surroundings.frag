@@ -1,0 +1,8 @@
+// See surroundings.vert: everything arrives interpolated.
+in vec3 vColor;
+
+out vec4 fragColor;
+
+void main() {
+    fragColor = vec4(vColor, 1.0);
+}
