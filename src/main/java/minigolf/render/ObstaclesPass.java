@@ -144,7 +144,7 @@ public final class ObstaclesPass implements RenderPass {
     }
 
     /** The pieces are consecutive index runs covering the mesh: all drawn is one draw call. */
-    private static void drawRuns(Mesh mesh, List<ObstacleMeshes.Piece> pieces, java.util.function.Predicate<ObstacleMeshes.Piece> drawn) {
+    static void drawRuns(Mesh mesh, List<ObstacleMeshes.Piece> pieces, java.util.function.Predicate<ObstacleMeshes.Piece> drawn) {
         int runFirst = -1, runEnd = -1;
         for (ObstacleMeshes.Piece p : pieces) {
             if (!drawn.test(p)) continue;

@@ -125,19 +125,9 @@ public final class SurroundingsPass implements RenderPass {
 
     /** The drawn trees' pieces (consecutive index runs), neighbouring ones as one draw. */
     private void drawRuns(List<ObstacleMeshes.Piece> pieces, boolean[] drawn) {
-        int runFirst = -1, runEnd = -1;
-        for (int i = 0; i < pieces.size(); i++) {
-            ObstacleMeshes.Piece p = pieces.get(i);
-            if (!drawn[i]) continue;
-            if (p.first() == runEnd) {
-                runEnd += p.count();
-                continue;
-            }
-            if (runFirst >= 0) mesh.drawRange(runFirst, runEnd - runFirst);
-            runFirst = p.first();
-            runEnd = p.first() + p.count();
-        }
-        if (runFirst >= 0) mesh.drawRange(runFirst, runEnd - runFirst);
+        List<ObstacleMeshes.Piece> shown = new java.util.ArrayList<>();
+        for (int i = 0; i < pieces.size(); i++) if (drawn[i]) shown.add(pieces.get(i));
+        ObstaclesPass.drawRuns(mesh, shown, p -> true);
     }
 
     @Override
