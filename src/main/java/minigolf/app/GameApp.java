@@ -129,6 +129,8 @@ public final class GameApp implements UiActions, UiView {
     private double[] pendingAim;
     private double[] guideKey;
     private final Vector3f followTarget = new Vector3f();
+    /** The time of the last frame drawn (for the camera's easing), NaN before the first. */
+    private float lastDrawTime = Float.NaN;
     /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
     boolean turnToHole;
     // Watching the hole again ("Watch again"): the replay, its rolling stroke and where to go back to.
@@ -460,6 +462,8 @@ public final class GameApp implements UiActions, UiView {
         effects.advanceTo(time);
         renderer.setEffects(effects.mesh());
         followBall();
+        camera.ease(Float.isNaN(lastDrawTime) ? 0 : time - lastDrawTime); // the clearance's moves glide
+        lastDrawTime = time;
         renderer.render(camera, fw, fh, time);
         int mini = Math.min(fw, fh) / 4;
         renderer.renderMinimap(fw - mini - 12, 12, mini, fw, fh);

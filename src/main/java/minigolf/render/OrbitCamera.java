@@ -33,6 +33,15 @@ public final class OrbitCamera {
 
     /** Keeps the ball in sight (the eye moves in front of trees, walls, the flag), or null. */
     private CameraClearance clearance;
+    /**
+     * The clearance's move as drawn, eased ({@link #ease}): extra pitch (radians) and the share of
+     * the distance kept. The player's own turning and zooming stay instant; only the clearance's
+     * corrections glide instead of jumping when a tree passes between the eye and the ball.
+     */
+    private float easedPitch, easedShare = 1;
+    private boolean easing;
+    /** Time constant of the easing (s): 90% of a correction in about 0.3 s. */
+    public static final float EASE_SECONDS = 0.12f;
 
     private final Vector3f homeTarget = new Vector3f();
     private float homeYaw, homePitch, homeDistance;
@@ -135,6 +144,7 @@ public final class OrbitCamera {
         yaw = homeYaw;
         pitch = homePitch;
         distance = homeDistance;
+        easing = false; // a cut: no glide from the old view
     }
 
     public void rotate(float deltaYaw, float deltaPitch) {
@@ -187,13 +197,38 @@ public final class OrbitCamera {
     /** Lets {@code c} move the eye where something would hide the target (null: the plain orbit). */
     public void setClearance(CameraClearance c) {
         clearance = c;
+        easing = false;
+    }
+
+    /**
+     * Moves the drawn clearance correction towards the one the view needs now, over
+     * {@link #EASE_SECONDS} (call once a frame with the frame's time step). Until the first call
+     * the eye is the clearance's own placement.
+     */
+    public void ease(float dt) {
+        if (clearance == null) return;
+        Vector3f placed = clearance.place(target, yaw, pitch, distance, minDistance, MAX_PITCH, new Vector3f());
+        float d = placed.distance(target);
+        float wantPitch = (float) Math.asin(Math.max(-1, Math.min(1, (placed.z - target.z) / Math.max(1e-6f, d)))) - pitch;
+        float wantShare = distance > 0 ? d / distance : 1;
+        if (!easing) {
+            easedPitch = wantPitch;
+            easedShare = wantShare;
+            easing = true;
+            return;
+        }
+        float k = (float) (1 - Math.exp(-Math.max(0, dt) / EASE_SECONDS));
+        easedPitch += (wantPitch - easedPitch) * k;
+        easedShare += (wantShare - easedShare) * k;
     }
 
     public Vector3f eye() {
-        if (clearance != null) return clearance.place(target, yaw, pitch, distance, minDistance, MAX_PITCH, new Vector3f());
-        float cp = (float) Math.cos(pitch);
-        return new Vector3f(target).add(distance * cp * (float) Math.cos(yaw), distance * cp * (float) Math.sin(yaw),
-                distance * (float) Math.sin(pitch));
+        if (clearance != null && !easing) return clearance.place(target, yaw, pitch, distance, minDistance, MAX_PITCH, new Vector3f());
+        float p = clearance != null ? clampPitch(pitch + easedPitch) : pitch;
+        float dist = clearance != null ? Math.max(minDistance, distance * easedShare) : distance;
+        float cp = (float) Math.cos(p);
+        return new Vector3f(target).add(dist * cp * (float) Math.cos(yaw), dist * cp * (float) Math.sin(yaw),
+                dist * (float) Math.sin(p));
     }
 
     public float near() {

@@ -116,4 +116,27 @@ class CameraClearanceTest {
         assertEquals(0.25f, CameraClearance.entry(box, -2, 0, 0, 4, 0, 0), 1e-6);
         assertEquals(Float.POSITIVE_INFINITY, CameraClearance.entry(box, -2, 3, 0, 4, 0, 0), "passes beside it");
     }
+
+    /** The orbit camera glides into the clearance's correction instead of jumping (the player's turning stays instant). */
+    @Test
+    void theCameraGlidesIntoTheCorrection() {
+        CameraClearance c = new CameraClearance(List.of(new float[]{5, -1, 2.2f, 7, 1, 4.2f}), null, 0);
+        OrbitCamera cam = new OrbitCamera(new Vector3f(0, 0, 0), (float) Math.PI / 2, (float) Math.toRadians(30), 10);
+        cam.setClearance(c);
+        cam.ease(1f / 60);
+        Vector3f clear = cam.eye(); // the eye out along +y, the crown along +x: nothing in the way
+        assertEquals(30, Math.toDegrees(Math.asin(clear.z / 10)), 1e-3);
+        // The player turns the camera to look along -x: the crown now stands between eye and ball.
+        cam.rotate((float) -Math.PI / 2, 0);
+        Vector3f placed = c.place(new Vector3f(), 0, (float) Math.toRadians(30), 10, 0.3f, MAX_PITCH, new Vector3f());
+        assertEquals(42, Math.toDegrees(Math.asin(placed.z / 10)), 1e-3);
+        cam.ease(1f / 60);
+        double afterOneFrame = Math.toDegrees(Math.asin(cam.eye().z / cam.eye().length()));
+        assertTrue(afterOneFrame > 30 && afterOneFrame < 32, "one frame in: " + afterOneFrame);
+        assertEquals(0, cam.eye().y, 1e-4, "the turn itself is instant");
+        for (int i = 0; i < 60; i++) cam.ease(1f / 60);
+        assertEquals(42, Math.toDegrees(Math.asin(cam.eye().z / cam.eye().length())), 0.01, "there after a second");
+        cam.reset();
+        assertEquals(30, Math.toDegrees(Math.asin(cam.eye().z / 10)), 1e-3, "a reset cuts, it does not glide");
+    }
 }
