@@ -35,8 +35,9 @@ public final class OrbitCamera {
     private CameraClearance clearance;
     /**
      * The clearance's move as drawn, eased ({@link #ease}): extra pitch (radians) and the share of
-     * the distance kept. The player's own turning and zooming stay instant; only the clearance's
-     * corrections glide instead of jumping when a tree passes between the eye and the ball.
+     * the distance kept. The player's own turning and zooming stay instant; the clearance's
+     * corrections glide where the ball stays in sight during the glide (a correction that lets the
+     * eye back out once a tree has passed), and are taken at once where it would not.
      */
     private float easedPitch, easedShare = 1;
     private boolean easing;
@@ -218,8 +219,15 @@ public final class OrbitCamera {
             return;
         }
         float k = (float) (1 - Math.exp(-Math.max(0, dt) / EASE_SECONDS));
+        float oldPitch = easedPitch, oldShare = easedShare;
         easedPitch += (wantPitch - easedPitch) * k;
         easedShare += (wantShare - easedShare) * k;
+        // Gliding must never hide the ball: where the eased eye's line to it is blocked, the correction is taken at once.
+        Vector3f from = new Vector3f(target.x, target.y, target.z + CameraClearance.BALL_TOP);
+        if (clearance.firstHit(from, eye()) < 1 && (oldPitch != wantPitch || oldShare != wantShare)) {
+            easedPitch = wantPitch;
+            easedShare = wantShare;
+        }
     }
 
     public Vector3f eye() {
