@@ -115,6 +115,8 @@ public final class GameApp implements UiActions, UiView {
     Window window;
     SceneRenderer renderer;
     private RenderQuality quality = RenderQuality.HIGH;
+    /** What the renderer probed as right for this machine (the "auto" graphics setting). */
+    private RenderQuality autoQuality = RenderQuality.HIGH;
     OrbitCamera camera;
     NuklearLayer uiLayer;
     private boolean rebuildScene;
@@ -170,12 +172,17 @@ public final class GameApp implements UiActions, UiView {
 
     /** Runs until the window closes or the requested frames are done; returns the game at the end (or null). */
     public Game run() {
-        quality = RenderQuality.probe(); // llvmpipe: no MSAA, smaller water targets (docs/rendering.md)
+        autoQuality = RenderQuality.probe(); // llvmpipe: no MSAA, smaller water targets (docs/rendering.md)
+        quality = chosenQuality(settings);
         Window.Options wo = options.visible() ? new Window.Options(true, true, quality.samples(), true, 3, 3)
                 : new Window.Options(true, false, 0, true, 3, 3);
-        try (Window w = new Window("Minigolf", 1280, 720, wo)) {
+        int ww = settings.windowWidth() > 0 ? settings.windowWidth() : 1280;
+        int wh = settings.windowHeight() > 0 ? settings.windowHeight() : 720;
+        try (Window w = new Window("Minigolf", ww, wh, wo)) {
             window = w;
             window.setVsync(settings.vsync() && options.frames() <= 0);
+            // The player's full screen, not for scripted runs (tests and screenshots keep their window).
+            if (settings.fullscreen() && options.visible() && options.frames() <= 0) window.toggleFullscreen();
             input.install();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
             try (NuklearLayer ui = new NuklearLayer(window.handle(), scale); Sounds sound = Sounds.open(audio)) {
@@ -771,14 +778,33 @@ public final class GameApp implements UiActions, UiView {
         } catch (CourseException e) {
             throw new IllegalArgumentException(e.detail(), e);
         }
+        UserSettings old = settings;
         settings = newSettings;
         window.setVsync(settings.vsync() && options.frames() <= 0);
+        if (settings.fullscreen() != window.isFullscreen()) window.toggleFullscreen();
+        if (!window.isFullscreen() && settings.windowWidth() > 0
+                && (settings.windowWidth() != old.windowWidth() || settings.windowHeight() != old.windowHeight())) {
+            glfwSetWindowSize(window.handle(), settings.windowWidth(), settings.windowHeight());
+        }
+        if (!settings.graphics().equals(old.graphics())) {
+            quality = chosenQuality(settings); // multisampling stays as the window was made (next start)
+            rebuildScene = true;
+        }
         if (renderer != null) renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0);
         try {
             store.save(settings);
         } catch (SaveGameException e) {
             say("settings not saved: " + e.getMessage());
         }
+    }
+
+    /** The renderer's quality for the player's graphics setting: auto is what the probe found. */
+    private RenderQuality chosenQuality(UserSettings s) {
+        return switch (s.graphics()) {
+            case "high" -> RenderQuality.HIGH;
+            case "low" -> RenderQuality.SOFTWARE;
+            default -> autoQuality;
+        };
     }
 
     @Override

@@ -24,7 +24,7 @@ public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
             "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "noisePosition", "noiseVelocity",
-            "hideFrictionFromBots", "aimGuide", "antiAliasing");
+            "hideFrictionFromBots", "aimGuide", "antiAliasing", "graphics", "windowWidth", "windowHeight");
 
     private final Path directory;
 
@@ -97,7 +97,10 @@ public final class SettingsStore {
                     root.has("noiseVelocity") ? f.number(root, null, "noiseVelocity") : d.noiseVelocity(),
                     root.has("hideFrictionFromBots") ? f.bool(root, null, "hideFrictionFromBots") : d.hideFrictionFromBots(),
                     root.has("aimGuide") ? f.bool(root, null, "aimGuide") : d.aimGuide(),
-                    root.has("antiAliasing") ? f.bool(root, null, "antiAliasing") : d.antiAliasing());
+                    root.has("antiAliasing") ? f.bool(root, null, "antiAliasing") : d.antiAliasing(),
+                    root.has("graphics") ? f.text(root, null, "graphics") : d.graphics(),
+                    root.has("windowWidth") ? f.integer(root, null, "windowWidth", 0, 16384) : d.windowWidth(),
+                    root.has("windowHeight") ? f.integer(root, null, "windowHeight", 0, 16384) : d.windowHeight());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
         }
@@ -153,6 +156,9 @@ public final class SettingsStore {
         root.put("heightColours", s.heightColours());
         root.put("aimGuide", s.aimGuide());
         root.put("antiAliasing", s.antiAliasing());
+        root.put("graphics", s.graphics());
+        root.put("windowWidth", s.windowWidth());
+        root.put("windowHeight", s.windowHeight());
         ArrayNode names = root.putArray("playerNames");
         s.playerNames().forEach(names::add);
         root.put("noisePosition", s.noisePosition());

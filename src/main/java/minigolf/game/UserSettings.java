@@ -22,14 +22,21 @@ import minigolf.physics.SimulationSettings;
  *                      beginners; off is the "pro" setting)
  * @param antiAliasing  smooth edges with FXAA where the window has no MSAA (software rendering,
  *                      where it costs about 8 ms a frame at 1280x720; off by default)
+ * @param graphics      graphics quality: {@code auto} (high on a real GPU, low on a software
+ *                      rasteriser), {@code high} or {@code low} (docs/rendering.md, RenderQuality)
+ * @param windowWidth   the window's size when not full screen, pixels; 0 and 0: 1280 x 720
+ * @param windowHeight  (both 0, or 640 to 16384 wide and 480 to 16384 high)
  */
 public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                            double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
                            double noisePosition, double noiseVelocity, boolean hideFrictionFromBots,
-                           boolean aimGuide, boolean antiAliasing) {
+                           boolean aimGuide, boolean antiAliasing, String graphics, int windowWidth,
+                           int windowHeight) {
+    /** The graphics qualities a player can choose (before DEFAULTS, which checks against it). */
+    public static final List<String> GRAPHICS = List.of("auto", "high", "low");
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
             false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0,
-            false, true, false);
+            false, true, false, "auto", 0, 0);
     public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
     /** Beyond these a putt is a lottery, not "realistic". */
     public static final double MAX_NOISE_POSITION = 0.5, MAX_NOISE_VELOCITY = 1;
@@ -40,7 +47,7 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                         double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
         this(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, 0, 0,
-                false, true, false);
+                false, true, false, "auto", 0, 0);
     }
 
     public UserSettings {
@@ -56,6 +63,12 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
         }
         if (!(noiseVelocity >= 0 && noiseVelocity <= MAX_NOISE_VELOCITY)) {
             throw new IllegalArgumentException("noiseVelocity must be 0 to " + MAX_NOISE_VELOCITY + " m/s, got " + noiseVelocity);
+        }
+        if (!GRAPHICS.contains(graphics)) throw new IllegalArgumentException("graphics must be auto, high or low, got " + graphics);
+        boolean defaultSize = windowWidth == 0 && windowHeight == 0;
+        if (!defaultSize && (windowWidth < 640 || windowWidth > 16384 || windowHeight < 480 || windowHeight > 16384)) {
+            throw new IllegalArgumentException("the window size must be 0 x 0 (the default) or 640 to 16384 x 480 to 16384, got "
+                    + windowWidth + " x " + windowHeight);
         }
         playerNames = List.copyOf(playerNames);
         if (playerNames.isEmpty() || playerNames.size() > Game.MAX_PLAYERS) {
@@ -76,7 +89,8 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     /** The "realistic" setting: both noises at once (0 turns it off). */
     public UserSettings withNoise(double position, double velocity) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
-                heightColours, playerNames, position, velocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                heightColours, playerNames, position, velocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public SimulationSettings simulation() {
@@ -85,64 +99,85 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
 
     public UserSettings withIntegrator(Integrator v) {
         return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withDt(double v) {
         return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
-                antiAliasing);
+                antiAliasing, graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withVsync(boolean v) {
         return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
-                antiAliasing);
+                antiAliasing, graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withFrameLimit(int v) {
         return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withFullscreen(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withMouseSpeed(double v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withStrokeLimit(int v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withHeightColours(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v,
-                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
-                heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing);
+                heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withHideFrictionFromBots(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
-                heightColours, playerNames, noisePosition, noiseVelocity, v, aimGuide, antiAliasing);
+                heightColours, playerNames, noisePosition, noiseVelocity, v, aimGuide, antiAliasing,
+                graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withAimGuide(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, v,
-                antiAliasing);
+                antiAliasing, graphics, windowWidth, windowHeight);
     }
 
     public UserSettings withAntiAliasing(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
-                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, v);
+                heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, v,
+                graphics, windowWidth, windowHeight);
+    }
+
+    public UserSettings withGraphics(String v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, v, windowWidth,
+                windowHeight);
+    }
+
+    public UserSettings withWindowSize(int width, int height) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, graphics, width,
+                height);
     }
 }

@@ -4,29 +4,25 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import minigolf.course.CourseException;
-import minigolf.game.BallReadout;
 import minigolf.game.BotCatalog;
-import minigolf.game.BotTurn;
-import minigolf.game.CourseEdits;
 import minigolf.game.Game;
 import minigolf.game.Player;
 import minigolf.game.PlayerKind;
-import minigolf.game.PlayerState;
 import minigolf.game.ScoreLine;
-import minigolf.game.UserSettings;
-import minigolf.physics.Integrator;
 
-/** The screens (on {@link Gui}): main menu, course choice, new game, settings, HUD, pause menu, scorecard. */
+/**
+ * The screens (on {@link Gui}): main menu, course choice, new game, pause menu, scorecards, help;
+ * the HUD and the settings screen are classes of their own ({@link Hud}, {@link SettingsScreen}).
+ */
 public final class Screens {
-    private static final int PANEL = GuiWindowFlags.NoCollapse | GuiWindowFlags.NoMove | GuiWindowFlags.NoResize
+    static final int PANEL = GuiWindowFlags.NoCollapse | GuiWindowFlags.NoMove | GuiWindowFlags.NoResize
             | GuiWindowFlags.AlwaysAutoResize;
     private static final String[] KINDS = {"Human", "Bot"};
-    private static final String[] INTEGRATORS = {"euler", "rk2", "rk4"};
 
-    private final UiActions actions;
+    final UiActions actions;
+    private final SettingsScreen settingsScreen = new SettingsScreen(this);
+    private final Hud hud = new Hud(this);
     private Screen screen = Screen.MAIN_MENU;
-    private Screen settingsReturn = Screen.MAIN_MENU;
 
     // New-game form.
     private final int[] playerCount = {2};
@@ -34,26 +30,11 @@ public final class Screens {
     private final GuiInt[] kinds = new GuiInt[Game.MAX_PLAYERS];
     private final GuiInt[] bots = new GuiInt[Game.MAX_PLAYERS];
     // Typed shot.
-    private final GuiDouble typedVx = new GuiDouble(1.0);
-    private final GuiDouble typedVy = new GuiDouble(0.0);
-    private final GuiDouble typedVz = new GuiDouble(0.0);
     // Settings form.
-    private final GuiInt integrator = new GuiInt(2);
-    private final GuiInt stepsPerSecond = new GuiInt(60);
-    private final GuiBool vsync = new GuiBool(true);
-    private final GuiBool realistic = new GuiBool(false);
-    private final GuiBool hideFriction = new GuiBool(false);
-    private final GuiInt frameLimit = new GuiInt(60);
-    private final GuiInt strokeLimit = new GuiInt(Game.DEFAULT_STROKE_LIMIT);
-    private final float[] mouseSpeed = {1f};
-    private final GuiBool aimGuide = new GuiBool(true);
-    private final GuiBool antiAliasing = new GuiBool(false);
-    private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
-    private final GuiDouble[] course = new GuiDouble[9];
+    final GuiDouble[] course = new GuiDouble[9];
     private final GuiInt testBot = new GuiInt(0);
     /** The HUD's physics readout (position, velocity, acceleration, slope, friction): off unless asked for. */
-    private final GuiBool details = new GuiBool(false);
-    private String formError;
+    String formError;
 
     public Screens(UiActions actions) {
         this.actions = actions;
@@ -81,16 +62,16 @@ public final class Screens {
             case MAIN_MENU -> mainMenu(view, w, h);
             case COURSES -> courses(view, w, h);
             case NEW_GAME -> newGame(view, w, h);
-            case SETTINGS -> settings(view, w, h);
-            case PLAYING -> hud(view, w, h, true);
+            case SETTINGS -> settingsScreen.settings(view, w, h);
+            case PLAYING -> hud.hud(view, w, h, true);
             case PAUSED -> {
-                hud(view, w, h, false);
+                hud.hud(view, w, h, false);
                 pause(w, h);
             }
             case SCORECARD -> scorecard(view, w, h);
-            case TEST_BOT -> hud(view, w, h, false);
+            case TEST_BOT -> hud.hud(view, w, h, false);
             case ROUND_CARD -> {
-                hud(view, w, h, false);
+                hud.hud(view, w, h, false);
                 roundCard(view, w, h);
             }
             case HELP -> help(w, h);
@@ -121,7 +102,7 @@ public final class Screens {
         }
     }
 
-    private static void centre(float w, float h) {
+    static void centre(float w, float h) {
         Gui.setNextWindowPos(w * 0.5f, h * 0.5f, GuiCond.Always, 0.5f, 0.5f);
     }
 
@@ -157,7 +138,7 @@ public final class Screens {
                 Gui.endMenu();
             }
         }
-        if (Gui.button("Settings", bw, bh)) openSettings(view, Screen.MAIN_MENU);
+        if (Gui.button("Settings", bw, bh)) settingsScreen.openSettings(view, Screen.MAIN_MENU);
         if (Gui.button("Help (F1)", bw, bh)) openHelp();
         if (Gui.button("Quit", bw, bh)) actions.quit();
         Gui.end();
@@ -250,185 +231,9 @@ public final class Screens {
 
     /** Opens a screen as its button does: the settings form filled from the view, help remembering where it was opened. */
     public void open(Screen s, UiView view) {
-        if (s == Screen.SETTINGS) openSettings(view, screen);
+        if (s == Screen.SETTINGS) settingsScreen.openSettings(view, screen);
         else if (s == Screen.HELP) openHelp();
         else show(s);
-    }
-
-    private void openSettings(UiView view, Screen returnTo) {
-        UserSettings s = view.settings();
-        integrator.set(s.integrator().ordinal());
-        stepsPerSecond.set((int) Math.round(1 / s.dt()));
-        vsync.set(s.vsync());
-        realistic.set(s.noisePosition() > 0 || s.noiseVelocity() > 0);
-        hideFriction.set(s.hideFrictionFromBots());
-        frameLimit.set(s.frameLimit());
-        strokeLimit.set(s.strokeLimit());
-        mouseSpeed[0] = (float) s.mouseSpeed();
-        aimGuide.set(s.aimGuide());
-        antiAliasing.set(s.antiAliasing());
-        masterVolume[0] = (float) view.volumes().master();
-        effectsVolume[0] = (float) view.volumes().effects();
-        ambienceVolume[0] = (float) view.volumes().ambience();
-        CourseEdits e = CourseEdits.of(view.world().course());
-        double[] v = {e.gravity(), e.kineticFriction(), e.staticFriction(), e.maxSpeed(), e.startX(), e.startY(),
-                e.holeX(), e.holeY(), e.holeRadius()};
-        for (int i = 0; i < v.length; i++) course[i].set(v[i]);
-        settingsReturn = returnTo;
-        show(Screen.SETTINGS);
-    }
-
-    private void settings(UiView view, float w, float h) {
-        centre(w, h);
-        Gui.begin("Settings", PANEL);
-        Gui.text("Yours (kept in your config folder)");
-        Gui.combo("Integrator", integrator, INTEGRATORS);
-        Gui.inputInt("Physics steps per second", stepsPerSecond);
-        Gui.inputInt("Frame limit (0 = none)", frameLimit);
-        Gui.sameLine(); // pairs on a row: the form fits a 720-pixel-high window
-        Gui.checkbox("Vsync", vsync);
-        Gui.inputInt("Stroke limit", strokeLimit);
-        Gui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
-        Gui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
-        Gui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
-        Gui.checkbox("Aim guide (off: pro)", aimGuide);
-        if (Gui.isItemHovered()) Gui.setTooltip("While aiming, dots show where the ball goes in its first second");
-        Gui.sameLine();
-        Gui.checkbox("Smooth edges (FXAA)", antiAliasing);
-        if (Gui.isItemHovered()) Gui.setTooltip("Anti-aliasing where there is no MSAA; costs about 8 ms a frame with software rendering");
-        Gui.sliderFloat("Volume", masterVolume, 0f, 1f);
-        Gui.sliderFloat("Effects", effectsVolume, 0f, 1f);
-        Gui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
-        Gui.separator();
-        Gui.text("This course (" + view.world().course().name() + "): applies to the next game");
-        String[] labels = {"Gravity (m/s^2)", "Kinetic friction", "Static friction", "Max speed (m/s)", "Start x",
-                "Start y", "Hole x", "Hole y", "Hole radius"};
-        for (int i = 0; i < labels.length; i++) {
-            boolean pair = i >= 4 && i <= 7; // start x and y, hole x and y side by side
-            if (pair) Gui.setNextItemWidth(100);
-            if (pair && i % 2 == 1) Gui.sameLine();
-            Gui.inputDouble(labels[i], course[i], 0, 0, "%.4f");
-        }
-        if (formError != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, formError);
-        if (Gui.button("Apply")) {
-            try {
-                int sps = stepsPerSecond.get();
-                UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
-                        .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
-                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
-                        .withHideFrictionFromBots(hideFriction.get())
-                        .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get());
-                // Keeps noise levels set in the settings file; the box turns the default levels on or all noise off.
-                boolean wasOn = s.noisePosition() > 0 || s.noiseVelocity() > 0;
-                if (realistic.get() != wasOn) {
-                    s = realistic.get() ? s.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY)
-                            : s.withNoise(0, 0);
-                }
-                CourseEdits e = new CourseEdits(course[0].get(), course[1].get(), course[2].get(), course[3].get(),
-                        course[4].get(), course[5].get(), course[6].get(), course[7].get(), course[8].get());
-                actions.applySettings(s, e);
-                actions.applyVolumes(new minigolf.game.AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
-                formError = null;
-                show(settingsReturn);
-            } catch (IllegalArgumentException e) {
-                formError = e.getMessage();
-            } catch (RuntimeException e) {
-                formError = e.getCause() instanceof CourseException ce ? ce.detail() : e.getMessage();
-            }
-        }
-        Gui.sameLine();
-        if (Gui.button("Cancel")) show(settingsReturn);
-        Gui.end();
-    }
-
-    private void hud(UiView view, float w, float h, boolean interactive) {
-        Game g = view.game();
-        Gui.setNextWindowPos(12, 12, GuiCond.Always);
-        Gui.begin("##hud", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
-        minigolf.game.RoundGame rg = view.round();
-        if (rg != null) {
-            Gui.textColored(0.6f, 0.9f, 1f, 1f, String.format(Locale.ROOT, "%s  -  hole %d of %d  -  par %d",
-                    rg.round().name(), rg.holeIndex() + 1, rg.round().size(), rg.hole().par()));
-        }
-        if (g != null) {
-            int cur = g.currentPlayer();
-            if (cur >= 0) {
-                Player p = g.players().get(cur);
-                Gui.textColored(1f, 0.85f, 0.3f, 1f, p.name() + (p.isBot() ? " (bot: " + p.bot() + ")" : "") + " to play");
-            }
-            Gui.beginTable("##players", 2, GuiTableFlags.SizingFixedFit); // names of any width line up
-            for (int i = 0; i < g.players().size(); i++) {
-                PlayerState s = g.player(i);
-                float[] c = PlayerColors.of(i);
-                Gui.tableNextRow();
-                Gui.tableSetColumnIndex(0);
-                Gui.textColored(c[0], c[1], c[2], 1f, g.players().get(i).name());
-                Gui.tableSetColumnIndex(1);
-                Gui.text(String.format(Locale.ROOT, "strokes %d%s%s%s", s.total(),
-                        view.round() != null ? " (par " + view.round().hole().par() + ")" : "",
-                        s.penalties() > 0 ? " (" + s.penalties() + " penalty)" : "",
-                        s.status() == minigolf.game.PlayerStatus.PLAYING ? "" : ", " + s.status().jsonName()));
-            }
-            Gui.endTable();
-        }
-        double aim = view.aimSpeed();
-        if (aim >= 0 && g != null) {
-            double max = view.world().physics().maxSpeed();
-            Gui.progressBar((float) (aim / max), 260, 0, String.format(Locale.ROOT, "power %.0f%%", 100 * aim / max));
-        }
-        if (g != null && !g.isOver()) Gui.text(minigolf.game.Loft.describe(view.loftDegrees()) + "   (wheel while aiming, Up/Down)");
-        if (g != null) Gui.checkbox("details", details);
-        BallReadout r = details.get() ? view.readout() : null;
-        if (r != null) {
-            Gui.separator();
-            Gui.text(String.format(Locale.ROOT, "position  (%.3f, %.3f, %.3f) m", r.x(), r.y(), r.z()));
-            Gui.text(String.format(Locale.ROOT, "velocity  (%.3f, %.3f) m/s  |v| %.3f", r.vx(), r.vy(), r.speed()));
-            Gui.text(String.format(Locale.ROOT, "accel.    (%.3f, %.3f) m/s^2  |a| %.3f", r.ax(), r.ay(), r.acceleration()));
-            Gui.text(String.format(Locale.ROOT, "slope     %.3f (%.1f deg)", r.slope(), r.slopeDegrees()));
-            Gui.text(String.format(Locale.ROOT, "friction  mu_k %.3f  mu_s %.3f", r.kineticFriction(), r.staticFriction()));
-        }
-        Gui.end();
-
-        BotTurn bot = view.botTurn();
-        if (bot != null) {
-            PlanOverlay.draw(Gui.getBackgroundDrawList(), bot.plan(), p -> view.toScreen(p[0], p[1]));
-            Gui.setNextWindowPos(w * 0.5f, h - 60, GuiCond.Always, 0.5f, 1f);
-            Gui.begin("##bot", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
-            Gui.text("Bot thinking: " + bot.message());
-            Gui.progressBar((float) bot.progress(), 320, 0);
-            Gui.sameLine();
-            if (Gui.button("Cancel")) actions.cancelBot();
-            Gui.end();
-        }
-        boolean humanToPlay = g != null && !g.isShotInFlight() && g.currentPlayer() >= 0
-                && !g.players().get(g.currentPlayer()).isBot() && bot == null;
-        if (interactive && humanToPlay) shotPanel(view, w, h);
-    }
-
-    private void shotPanel(UiView view, float w, float h) {
-        double max = view.world().physics().maxSpeed();
-        Gui.setNextWindowPos(w - 12, h - 12, GuiCond.Always, 1f, 1f);
-        Gui.begin("Shot", GuiWindowFlags.NoCollapse | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
-        Gui.text("Drag back from the ball to aim, release to hit,");
-        Gui.text("or type the velocity (max " + max + " m/s):");
-        Gui.setNextItemWidth(120);
-        Gui.inputDouble("vx", typedVx, 0.1, 0.5, "%.3f");
-        Gui.setNextItemWidth(120);
-        Gui.inputDouble("vy", typedVy, 0.1, 0.5, "%.3f");
-        Gui.setNextItemWidth(120);
-        Gui.inputDouble("vz (0 = putt)", typedVz, 0.1, 0.5, "%.3f");
-        double speed = Math.sqrt(typedVx.get() * typedVx.get() + typedVy.get() * typedVy.get() + typedVz.get() * typedVz.get());
-        Gui.progressBar((float) Math.min(1, speed / max), 240, 0, String.format(Locale.ROOT, "%.2f m/s", speed));
-        String problem = minigolf.game.AimModel.checkTyped(typedVx.get(), typedVy.get(), typedVz.get(), max);
-        if (problem != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, problem);
-        if (problem != null) Gui.beginDisabled();
-        if (Gui.button("HIT", 120, 0)) actions.hit(typedVx.get(), typedVy.get(), typedVz.get());
-        if (problem != null) Gui.endDisabled();
-        double aim = view.aimSpeed();
-        if (aim >= 0) {
-            Gui.progressBar((float) (aim / max), 240, 0, String.format(Locale.ROOT, "power %.2f m/s", aim));
-        }
-        Gui.end();
     }
 
     private void pause(float w, float h) {
@@ -458,7 +263,7 @@ public final class Screens {
     }
 
     private void settingsFromPause() {
-        if (lastView != null) openSettings(lastView, Screen.PAUSED);
+        if (lastView != null) settingsScreen.openSettings(lastView, Screen.PAUSED);
     }
 
     /** Remembers the view for actions that need it outside draw (the pause menu's settings). */

@@ -27,12 +27,30 @@ class SettingsStoreTest {
         SettingsStore store = new SettingsStore(dir.resolve("minigolf"));
         UserSettings s = UserSettings.DEFAULTS.withIntegrator(Integrator.EULER).withDt(1.0 / 120).withVsync(false)
                 .withFrameLimit(144).withMouseSpeed(1.7).withStrokeLimit(6).withHeightColours(true)
-                .withPlayerNames(List.of("Ann", "Bob")).withAimGuide(false).withAntiAliasing(true);
+                .withPlayerNames(List.of("Ann", "Bob")).withAimGuide(false).withAntiAliasing(true)
+                .withFullscreen(true).withGraphics("low").withWindowSize(1600, 900);
         store.save(s);
         assertEquals(s, store.load());
         assertFalse(store.load().aimGuide(), "the pro setting survives");
         assertTrue(store.load().antiAliasing());
         assertEquals(1.0 / 120, store.load().simulation().dt(), 0.0, "dt survives exactly");
+    }
+
+    @Test
+    void graphicsAndWindowSizeAreCheckedWithOneLine() throws Exception {
+        SettingsStore store = new SettingsStore(dir);
+        Files.writeString(store.file(), "{\"graphics\": \"ultra\"}");
+        SaveGameException e = assertThrows(SaveGameException.class, store::load);
+        assertEquals(store.file() + ": graphics must be auto, high or low, got ultra", e.getMessage());
+        Files.writeString(store.file(), "{\"windowWidth\": 300, \"windowHeight\": 200}");
+        e = assertThrows(SaveGameException.class, store::load);
+        assertEquals(store.file() + ": the window size must be 0 x 0 (the default) or 640 to 16384 x 480 to 16384, got 300 x 200",
+                e.getMessage());
+        Files.writeString(store.file(), "{\"graphics\": \"high\", \"windowWidth\": 1920, \"windowHeight\": 1080}");
+        UserSettings s = store.load();
+        assertEquals("high", s.graphics());
+        assertEquals(1920, s.windowWidth());
+        assertEquals(1080, s.windowHeight());
     }
 
     @Test

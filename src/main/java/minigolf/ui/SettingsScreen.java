@@ -1,0 +1,159 @@
+package minigolf.ui;
+
+import minigolf.course.CourseException;
+import minigolf.game.CourseEdits;
+import minigolf.game.Game;
+import minigolf.game.UserSettings;
+import minigolf.physics.Integrator;
+
+/**
+ * The Settings screen: window, graphics, sound, mouse, the game's rules, the Advanced physics and
+ * the course's own values; applied together, checked first.
+ */
+final class SettingsScreen {
+    private final Screens screens;
+    private static final String[] INTEGRATORS = {"euler", "rk2", "rk4"};
+    private Screen settingsReturn = Screen.MAIN_MENU;
+    private final GuiInt integrator = new GuiInt(2);
+    private final GuiInt stepsPerSecond = new GuiInt(60);
+    private final GuiBool vsync = new GuiBool(true);
+    private final GuiBool realistic = new GuiBool(false);
+    private final GuiBool hideFriction = new GuiBool(false);
+    private final GuiInt frameLimit = new GuiInt(60);
+    private final GuiInt strokeLimit = new GuiInt(Game.DEFAULT_STROKE_LIMIT);
+    private final float[] mouseSpeed = {1f};
+    private final GuiBool aimGuide = new GuiBool(true);
+    private final GuiBool antiAliasing = new GuiBool(false);
+    private final GuiBool fullscreen = new GuiBool(false);
+    private final GuiBool advanced = new GuiBool(false);
+    private final GuiInt graphics = new GuiInt(0);
+    private final GuiInt windowSize = new GuiInt(0);
+    /** The window sizes offered (0 x 0: the default 1280 x 720), with the player's own size added if it is another. */
+    private int[][] sizes = SIZES;
+    private static final int[][] SIZES = {{0, 0}, {1366, 768}, {1600, 900}, {1920, 1080}, {2560, 1440}};
+    private static final String[] GRAPHICS_LABELS = {"Auto", "High", "Low"};
+    private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
+
+    SettingsScreen(Screens screens) {
+        this.screens = screens;
+    }
+
+    void openSettings(UiView view, Screen returnTo) {
+        UserSettings s = view.settings();
+        integrator.set(s.integrator().ordinal());
+        stepsPerSecond.set((int) Math.round(1 / s.dt()));
+        vsync.set(s.vsync());
+        realistic.set(s.noisePosition() > 0 || s.noiseVelocity() > 0);
+        hideFriction.set(s.hideFrictionFromBots());
+        frameLimit.set(s.frameLimit());
+        strokeLimit.set(s.strokeLimit());
+        mouseSpeed[0] = (float) s.mouseSpeed();
+        aimGuide.set(s.aimGuide());
+        antiAliasing.set(s.antiAliasing());
+        fullscreen.set(s.fullscreen());
+        graphics.set(Math.max(0, UserSettings.GRAPHICS.indexOf(s.graphics())));
+        sizes = SIZES;
+        int at = -1;
+        for (int i = 0; i < SIZES.length; i++) if (SIZES[i][0] == s.windowWidth() && SIZES[i][1] == s.windowHeight()) at = i;
+        if (at < 0) { // the player's own size from the settings file stays on offer
+            sizes = java.util.Arrays.copyOf(SIZES, SIZES.length + 1);
+            sizes[SIZES.length] = new int[]{s.windowWidth(), s.windowHeight()};
+            at = SIZES.length;
+        }
+        windowSize.set(at);
+        masterVolume[0] = (float) view.volumes().master();
+        effectsVolume[0] = (float) view.volumes().effects();
+        ambienceVolume[0] = (float) view.volumes().ambience();
+        CourseEdits e = CourseEdits.of(view.world().course());
+        double[] v = {e.gravity(), e.kineticFriction(), e.staticFriction(), e.maxSpeed(), e.startX(), e.startY(),
+                e.holeX(), e.holeY(), e.holeRadius()};
+        for (int i = 0; i < v.length; i++) screens.course[i].set(v[i]);
+        settingsReturn = returnTo;
+        screens.show(Screen.SETTINGS);
+    }
+
+    void settings(UiView view, float w, float h) {
+        screens.centre(w, h);
+        Gui.begin("Settings", Screens.PANEL);
+        Gui.textColored(1f, 0.85f, 0.3f, 1f, "Game (kept in your config folder)");
+        Gui.inputInt("Stroke limit", strokeLimit);
+        Gui.sameLine(); // pairs on a row: the form fits a 720-pixel-high window
+        Gui.checkbox("Aim guide (off: pro)", aimGuide);
+        if (Gui.isItemHovered()) Gui.setTooltip("While aiming, dots show where the ball goes in its first second");
+        Gui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
+        Gui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
+        Gui.textColored(1f, 0.85f, 0.3f, 1f, "Display");
+        String[] sizeLabels = new String[sizes.length];
+        for (int i = 0; i < sizes.length; i++) {
+            sizeLabels[i] = sizes[i][0] == 0 ? "1280 x 720" : sizes[i][0] + " x " + sizes[i][1];
+        }
+        Gui.setNextItemWidth(170);
+        Gui.combo("Window", windowSize, sizeLabels);
+        Gui.sameLine();
+        Gui.checkbox("Full screen (F11)", fullscreen);
+        Gui.setNextItemWidth(170);
+        Gui.combo("Graphics", graphics, GRAPHICS_LABELS);
+        if (Gui.isItemHovered()) Gui.setTooltip("Auto: high on a graphics card, low on software rendering; multisampling changes at the next start");
+        Gui.sameLine();
+        Gui.checkbox("Smooth edges (FXAA)", antiAliasing);
+        if (Gui.isItemHovered()) Gui.setTooltip("Anti-aliasing where there is no MSAA; costs about 8 ms a frame with software rendering");
+        Gui.inputInt("Frame limit (0 = none)", frameLimit);
+        Gui.sameLine();
+        Gui.checkbox("Vsync", vsync);
+        Gui.textColored(1f, 0.85f, 0.3f, 1f, "Sound and mouse");
+        Gui.sliderFloat("Volume", masterVolume, 0f, 1f);
+        Gui.sliderFloat("Effects", effectsVolume, 0f, 1f);
+        Gui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
+        Gui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
+        Gui.checkbox("Advanced: the physics integrator and step", advanced);
+        if (advanced.get()) { // on one row, so the form still fits a 720-pixel-high window
+            Gui.setNextItemWidth(90);
+            Gui.combo("Integrator", integrator, INTEGRATORS);
+            Gui.sameLine();
+            Gui.inputInt("Steps per second", stepsPerSecond);
+        }
+        Gui.separator();
+        Gui.text("This course (" + view.world().course().name() + "): applies to the next game");
+        String[] labels = {"Gravity (m/s^2)", "Kinetic friction", "Static friction", "Max speed (m/s)", "Start x",
+                "Start y", "Hole x", "Hole y", "Hole radius"};
+        for (int i = 0; i < labels.length; i++) {
+            boolean pair = i >= 4 && i <= 7; // start x and y, hole x and y side by side
+            if (pair) Gui.setNextItemWidth(100);
+            if (pair && i % 2 == 1) Gui.sameLine();
+            Gui.inputDouble(labels[i], screens.course[i], 0, 0, "%.4f");
+        }
+        if (screens.formError != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, screens.formError);
+        if (Gui.button("Apply")) {
+            try {
+                int sps = stepsPerSecond.get();
+                UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
+                        .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
+                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
+                        .withHideFrictionFromBots(hideFriction.get())
+                        .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get())
+                        .withFullscreen(fullscreen.get()).withGraphics(UserSettings.GRAPHICS.get(graphics.get()))
+                        .withWindowSize(sizes[windowSize.get()][0], sizes[windowSize.get()][1]);
+                // Keeps noise levels set in the settings file; the box turns the default levels on or all noise off.
+                boolean wasOn = s.noisePosition() > 0 || s.noiseVelocity() > 0;
+                if (realistic.get() != wasOn) {
+                    s = realistic.get() ? s.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY)
+                            : s.withNoise(0, 0);
+                }
+                GuiDouble[] c = screens.course;
+                CourseEdits e = new CourseEdits(c[0].get(), c[1].get(), c[2].get(), c[3].get(), c[4].get(), c[5].get(),
+                        c[6].get(), c[7].get(), c[8].get());
+                screens.actions.applySettings(s, e);
+                screens.actions.applyVolumes(new minigolf.game.AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
+                screens.formError = null;
+                screens.show(settingsReturn);
+            } catch (IllegalArgumentException e) {
+                screens.formError = e.getMessage();
+            } catch (RuntimeException e) {
+                screens.formError = e.getCause() instanceof CourseException ce ? ce.detail() : e.getMessage();
+            }
+        }
+        Gui.sameLine();
+        if (Gui.button("Cancel")) screens.show(settingsReturn);
+        Gui.end();
+    }
+}
