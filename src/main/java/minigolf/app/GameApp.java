@@ -798,6 +798,11 @@ public final class GameApp implements UiActions, UiView {
         }
     }
 
+    /** The renderer's quality now (for tests). */
+    public RenderQuality renderQuality() {
+        return quality;
+    }
+
     /** The renderer's quality for the player's graphics setting: auto is what the probe found. */
     private RenderQuality chosenQuality(UserSettings s) {
         return switch (s.graphics()) {
