@@ -106,10 +106,8 @@ class FlightTest {
         assertTrue(chip.events().stream().noneMatch(e -> e.type() == StrokeEvent.Type.COLLISION), chip.events().toString());
     }
 
-    @Test
-    void aBallRollingOffAnEdgeTakesOffThere() {
-        // A plateau at h = 3 for x < 0, then a drop of slope 1: at 3 m/s the ground falls away
-        // faster than the ball can fall, so it flies and lands further down.
+    /** A plateau at h = 3 for x < 0, then a drop of slope 1. */
+    private static World cliff() {
         Terrain cliff = new Terrain() {
             public double height(double x, double y) {
                 return x < 0 ? 3 : 3 - x;
@@ -121,7 +119,14 @@ class FlightTest {
                 out[2] = 0;
             }
         };
-        World w = TestObstacles.withFlight(TestWorlds.world(cliff, 0.1, 0.2, 20), 0, null);
+        return TestObstacles.withFlight(TestWorlds.world(cliff, 0.1, 0.2, 20), 0, null);
+    }
+
+    @Test
+    void aBallRollingOffAnEdgeTakesOffThere() {
+        // A plateau at h = 3 for x < 0, then a drop of slope 1: at 3 m/s the ground falls away
+        // faster than the ball can fall, so it flies and lands further down.
+        World w = cliff();
         ShotResult r = TestWorlds.rk4(w).simulate(-2, 0, 4, 0, 0, null);
         StrokeEvent launch = first(r, StrokeEvent.Type.LAUNCH);
         assertEquals(0, launch.x(), 4 * (1.0 / 60), "takes off within a step (6 cm) of the edge");
@@ -137,18 +142,7 @@ class FlightTest {
         // The same drop, the ball started at 25 positions so the edge falls anywhere in a step
         // (and in the step control's sub-steps): it leaves at the edge, never rolls over it first
         // (a ball once launched 23 mm past it, on the slope, and landed at once).
-        Terrain cliff = new Terrain() {
-            public double height(double x, double y) {
-                return x < 0 ? 3 : 3 - x;
-            }
-
-            public void sample(double x, double y, double[] out) {
-                out[0] = height(x, y);
-                out[1] = x < 0 ? 0 : -1;
-                out[2] = 0;
-            }
-        };
-        World w = TestObstacles.withFlight(TestWorlds.world(cliff, 0.1, 0.2, 20), 0, null);
+        World w = cliff();
         for (int k = 0; k < 25; k++) {
             double start = -2 - k * 0.0029;
             ShotResult r = TestWorlds.rk4(w).simulate(start, 0, 4, 0, 0, null);
