@@ -18,8 +18,11 @@ import minigolf.physics.World;
  * the shot can only putt.
  */
 public abstract class SearchBot implements Bot {
-    /** The distance field that tells whether the ball is cut off from the hole along the ground. */
-    private final CourseMaps airMaps = new CourseMaps();
+    /**
+     * The course's grid and distance field to the hole (plain, built once per world): whether the
+     * ball is cut off from the hole along the ground, and the routes of the bots that follow one.
+     */
+    private final CourseMaps maps = new CourseMaps();
 
     @Override
     public final Shot nextShot(BotRequest request) {
@@ -55,10 +58,16 @@ public abstract class SearchBot implements Bot {
     private Shot chipWhenCutOff(BotRequest request) {
         CountingSimulator sim = request.simulator();
         if (!chipsWhenCutOff() || sim.puttsOnly()) return null;
-        airMaps.prepare(request.world(), request.token());
-        if (!ChipSearch.cutOff(airMaps.toHole(), request.ballX(), request.ballY())) return null;
+        CourseMaps m = maps(request);
+        if (!ChipSearch.cutOff(m.toHole(), request.ballX(), request.ballY())) return null;
         sim.phase("chip");
-        return new ChipSearch(sim, airMaps.grid(), airMaps.toHole(), request.ballX(), request.ballY()).search();
+        return new ChipSearch(sim, m.grid(), m.toHole(), request.ballX(), request.ballY()).search();
+    }
+
+    /** The course's plain grid and distance field for the request's world (built on first use, then kept). */
+    protected final CourseMaps maps(BotRequest request) {
+        maps.prepare(request.world(), request.token());
+        return maps;
     }
 
     /** Finds the shot; may throw BudgetExhaustedException (handled) or BotCancelledException (passed on). */

@@ -14,7 +14,6 @@ import minigolf.bot.search.Target;
  * each stroke aims (a few corrected shots) at the next critical point, the last at the hole.
  */
 public final class AStarBot extends SearchBot {
-    private final CourseMaps maps = new CourseMaps();
     private final int shotsPerWaypoint;
 
     public AStarBot() {
@@ -33,7 +32,7 @@ public final class AStarBot extends SearchBot {
     @Override
     protected Shot search(BotRequest request) {
         CountingSimulator sim = request.simulator();
-        maps.prepare(request.world(), request.token());
+        CourseMaps maps = maps(request);
         sim.phase("A*");
         Target hole = Target.hole(sim, request.ballX(), request.ballY());
         List<double[]> points = Waypoints.find(maps.grid(), request.ballX(), request.ballY(), hole.x(), hole.y(),

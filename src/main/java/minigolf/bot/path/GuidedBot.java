@@ -24,7 +24,6 @@ public final class GuidedBot extends SearchBot {
     private final Solver solver;
     private final NewtonSolver newton = new NewtonSolver();
     private final SwarmSolver swarm = new SwarmSolver();
-    private final CourseMaps maps = new CourseMaps();
 
     public GuidedBot(Solver solver) {
         this.solver = solver;
@@ -38,7 +37,7 @@ public final class GuidedBot extends SearchBot {
     @Override
     protected Shot search(BotRequest request) {
         CountingSimulator sim = request.simulator();
-        maps.prepare(request.world(), request.token());
+        CourseMaps maps = maps(request);
         sim.phase("A*");
         double bx = request.ballX(), by = request.ballY();
         Target hole = Target.hole(sim, bx, by);
