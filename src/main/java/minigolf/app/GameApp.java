@@ -135,12 +135,9 @@ public final class GameApp implements UiActions, UiView {
     private float lastDrawTime = Float.NaN;
     /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
     boolean turnToHole;
-    // Watching the hole again ("Watch again"): the replay, its rolling stroke and where to go back to.
-    private HoleReplay replay;
-    private StrokeAnimator replayAnimator;
-    private minigolf.game.ShotRecord replayShot;
+    /** Watching a hole again ("Watch again", "Watch hole N"), and the screen to go back to. */
+    private final ReplayPlayer replayer = new ReplayPlayer();
     private Screen replayReturn;
-    private int replayedStrokes, replayMismatches;
 
     public GameApp(World world, Options options) {
         this.options = options;
@@ -339,53 +336,45 @@ public final class GameApp implements UiActions, UiView {
     }
 
     private void updateReplay(double elapsed) {
-        if (replayAnimator != null) {
-            replayAnimator.advance(elapsed, options.timeScale());
-            if (!replayAnimator.isFinished()) return;
-            replayedStrokes++;
-            if (!HoleReplay.sameEnd(replayShot, replayAnimator.stroke())) replayMismatches++;
-            replayAnimator = null;
-        }
-        if (replay.hasNext()) {
-            replayShot = replay.shots().get(replay.position());
-            replayAnimator = new StrokeAnimator(replay.nextStroke(strokeSounds(false)), game.settings().dt());
-            StrokeFeedback.hit(sounds, Math.sqrt(replayShot.vx() * replayShot.vx() + replayShot.vy() * replayShot.vy()
-                    + replayShot.vz() * replayShot.vz()), world.physics().maxSpeed());
-        } else {
-            stopReplay();
-            say(replayMismatches == 0 ? "replay over: every stroke ended exactly where it did in play"
-                    : replayMismatches + " replayed strokes ended elsewhere than in play");
+        switch (replayer.advance(elapsed, options.timeScale(), game.settings().dt(), () -> strokeSounds(false))) {
+            case STROKE_STARTED -> {
+                ShotRecord r = replayer.shot();
+                StrokeFeedback.hit(sounds, Math.sqrt(r.vx() * r.vx() + r.vy() * r.vy() + r.vz() * r.vz()),
+                        world.physics().maxSpeed());
+            }
+            case OVER -> {
+                int mismatches = replayer.counts()[1];
+                stopReplay();
+                say(mismatches == 0 ? "replay over: every stroke ended exactly where it did in play"
+                        : mismatches + " replayed strokes ended elsewhere than in play");
+            }
+            case ROLLING -> {
+            }
         }
     }
 
     @Override
     public void watchReplay() {
         if (game == null || game.history().isEmpty() || game.isShotInFlight() || screens.screen() == Screen.REPLAY) return;
-        cancelBot();
-        botTurn = null;
-        replay = HoleReplay.of(game);
-        replayAnimator = null;
-        replayedStrokes = 0;
-        replayMismatches = 0;
-        replayReturn = screens.screen();
-        screens.show(Screen.REPLAY);
+        startReplay(HoleReplay.of(game));
     }
 
     @Override
     public void watchHole(int hole) {
         if (round == null || hole < 0 || hole >= round.holesFinished() || round.holeStrokes(hole).isEmpty()
                 || game.isShotInFlight() || screens.screen() == Screen.REPLAY) return;
-        cancelBot();
-        botTurn = null;
         World holeWorld = round.round().hole(hole).world();
-        replay = new HoleReplay(holeWorld, game.settings(), round.holeStrokes(hole));
         if (holeWorld != world) { // another hole's course on screen while it is watched
             world = holeWorld;
             rebuildScene = true;
         }
-        replayAnimator = null;
-        replayedStrokes = 0;
-        replayMismatches = 0;
+        startReplay(new HoleReplay(holeWorld, game.settings(), round.holeStrokes(hole)));
+    }
+
+    private void startReplay(HoleReplay r) {
+        cancelBot();
+        botTurn = null;
+        replayer.start(r);
         replayReturn = screens.screen();
         screens.show(Screen.REPLAY);
     }
@@ -393,8 +382,7 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public void stopReplay() {
         if (screens.screen() != Screen.REPLAY) return;
-        replay = null;
-        replayAnimator = null;
+        replayer.stop();
         if (game != null && world != game.world()) { // back to the hole being played
             world = game.world();
             rebuildScene = true;
@@ -404,14 +392,12 @@ public final class GameApp implements UiActions, UiView {
 
     /** Strokes replayed by the last "Watch again" and how many ended elsewhere than in play (for tests). */
     public int[] replayCounts() {
-        return new int[]{replayedStrokes, replayMismatches};
+        return replayer.counts();
     }
 
     @Override
     public String replayCaption() {
-        if (replay == null || replayShot == null) return null;
-        return "Replay: stroke " + replay.position() + " of " + replay.shots().size() + " - "
-                + game.players().get(replayShot.player()).name();
+        return replayer.caption(game.players());
     }
 
     private static String describe(ShotRecord r) {
@@ -484,10 +470,11 @@ public final class GameApp implements UiActions, UiView {
 
     private List<BallView> ballViews() {
         List<BallView> views = new ArrayList<>();
-        if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
-            double x = replayAnimator.x(), y = replayAnimator.y();
-            float[] c = PlayerColors.of(replayShot.player());
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, replayAnimator.z()), c[0], c[1], c[2]));
+        StrokeAnimator replayed = replayer.animator();
+        if (screens.screen() == Screen.REPLAY && replayed != null) {
+            double x = replayed.x(), y = replayed.y();
+            float[] c = PlayerColors.of(replayer.shot().player());
+            views.add(new BallView((float) x, (float) y, (float) Math.max(0, replayed.z()), c[0], c[1], c[2]));
             return views;
         }
         if (cupDrop.view() != null) views.add(cupDrop.view());
@@ -534,9 +521,9 @@ public final class GameApp implements UiActions, UiView {
     /** The camera glides after the ball in play: the rolling one, else the next player's. */
     private void followBall() {
         if (game == null || input.rotating || input.panning) return;
-        if (screens.screen() == Screen.REPLAY && replayAnimator != null) {
-            followTarget.set((float) replayAnimator.x(), (float) replayAnimator.y(),
-                    (float) world.terrain().height(replayAnimator.x(), replayAnimator.y()));
+        StrokeAnimator replayed = replayer.animator();
+        if (screens.screen() == Screen.REPLAY && replayed != null) {
+            followTarget.set((float) replayed.x(), (float) replayed.y(), (float) world.terrain().height(replayed.x(), replayed.y()));
             camera.setTarget(camera.target().lerp(followTarget, 0.12f));
             return;
         }
