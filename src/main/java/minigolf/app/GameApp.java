@@ -724,8 +724,9 @@ public final class GameApp implements UiActions, UiView {
     @Override
     public void loadGame(Path file) {
         try {
-            if (Files.isRegularFile(file) && SavedRounds.isSavedRound(Files.readString(file))) {
-                RoundGame loaded = SavedRounds.load(file);
+            SavedRounds.AnySave save = SavedRounds.loadAny(file);
+            if (save.round() != null) {
+                RoundGame loaded = save.round();
                 cancelBot();
                 botTurn = null;
                 round = loaded;
@@ -737,7 +738,7 @@ public final class GameApp implements UiActions, UiView {
                 say("loaded " + file.getFileName() + ": " + round.round().name() + ", hole " + (round.holeIndex() + 1));
                 return;
             }
-            SavedGames.Loaded loaded = SavedGames.load(file);
+            SavedGames.Loaded loaded = save.game();
             cancelBot();
             botTurn = null;
             round = null;
@@ -749,8 +750,6 @@ public final class GameApp implements UiActions, UiView {
             say("loaded " + file.getFileName());
         } catch (SaveGameException e) {
             say(e.getMessage());
-        } catch (IOException e) {
-            say("cannot read " + file + ": " + e.getMessage());
         }
     }
 

@@ -37,6 +37,17 @@ public final class SavedRounds {
         }
     }
 
+    /** What a save file holds: a round (then {@code game} is null) or a single game (then {@code round} is null). */
+    public record AnySave(RoundGame round, SavedGames.Loaded game) {
+    }
+
+    /** A saved round or a saved game, whichever the file holds, read once (within the larger, round's, limit). */
+    public static AnySave loadAny(Path file) throws SaveGameException {
+        String text = JsonFields.readText(file, minigolf.course.Limits.ROUND_SAVE_FILE_BYTES);
+        String source = String.valueOf(file);
+        return isSavedRound(text) ? new AnySave(parse(text, source), null) : new AnySave(null, SavedGames.parse(text, source));
+    }
+
     public static RoundGame load(Path file) throws SaveGameException {
         return parse(JsonFields.readText(file, minigolf.course.Limits.ROUND_SAVE_FILE_BYTES), String.valueOf(file));
     }
