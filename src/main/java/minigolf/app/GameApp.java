@@ -1,23 +1,17 @@
 package minigolf.app;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.LocalDateTime;
-import java.time.format.DateTimeFormatter;
 import java.util.ArrayDeque;
-import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.BiConsumer;
-import java.util.stream.Stream;
 import minigolf.course.CourseException;
 import minigolf.game.AimModel;
 import minigolf.game.Loft;
 import minigolf.game.BallReadout;
 import minigolf.game.BotSeats;
-import minigolf.game.BotCatalog;
 import minigolf.game.BotConditions;
 import minigolf.game.BotTurn;
 import minigolf.game.CourseEdits;
@@ -29,17 +23,12 @@ import minigolf.game.Player;
 import minigolf.game.PlayerState;
 import minigolf.game.Round;
 import minigolf.game.RoundGame;
-import minigolf.game.SavedRounds;
-import minigolf.game.SaveGameException;
-import minigolf.game.SavedGames;
 import minigolf.game.SettingsStore;
 import minigolf.game.ShotPlanner;
 import minigolf.game.ShotRecord;
 import minigolf.game.StrokeAnimator;
 import minigolf.game.UserSettings;
 import minigolf.physics.World;
-import minigolf.render.AimView;
-import minigolf.render.BallView;
 import minigolf.render.OrbitCamera;
 import minigolf.render.Png;
 import minigolf.render.RenderQuality;
@@ -52,12 +41,9 @@ import minigolf.ui.Screen;
 import minigolf.ui.Screens;
 import minigolf.ui.UiActions;
 import minigolf.ui.UiView;
-import org.joml.Matrix4f;
 import org.joml.Vector3f;
-import org.joml.Vector4f;
 
 import static org.lwjgl.glfw.GLFW.*;
-import static org.lwjgl.opengl.GL11.*;
 
 /**
  * The game: one window, one render loop. Each frame polls input, advances the rolling ball at the
@@ -82,25 +68,26 @@ public final class GameApp implements UiActions, UiView {
     private final SettingsStore store;
     UserSettings settings;
     World world;
-    private Path coursePath;
+    Path coursePath;
     Game game;
     /** The round being played (null for a single course); {@link #game} is its current hole's game. */
     RoundGame round;
-    /** Scores kept between games (null when the file is broken: it is then left alone). */
-    private HighScores highScores;
-    private AudioSettings audio;
+    /** Settings, volumes, high scores and saved games on disk. */
+    final PlayerFiles files;
+    /** Starting, moving on and ending games and rounds. */
+    private final PlayFlow flow = new PlayFlow(this);
     /** Silent until the window is open, and where there is no audio device. */
     private Sounds sounds;
     /** Confetti and splashes (the renderer draws them; they end by themselves). */
-    private final minigolf.render.Particles effects = new minigolf.render.Particles();
+    final minigolf.render.Particles effects = new minigolf.render.Particles();
     /** The holed ball sinking into the cup (drawn until it is out of sight). */
-    private final minigolf.render.CupDrop cupDrop = new minigolf.render.CupDrop();
+    final minigolf.render.CupDrop cupDrop = new minigolf.render.CupDrop();
     /** The round the next game plays (set by {@link #playRound} or the menu). */
-    private Round roundToPlay;
+    Round roundToPlay;
     /** Frames the between-holes card has been shown (the headless run moves on by itself). */
     private int cardFrames;
     StrokeAnimator animator;
-    private BotTurn botTurn;
+    BotTurn botTurn;
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
     private final BotSeats botSeats = new BotSeats();
     private String message;
@@ -108,7 +95,7 @@ public final class GameApp implements UiActions, UiView {
     private String notice;
     private final Deque<double[]> script;
     final Screens screens = new Screens(this);
-    private final Thumbnails thumbnails = new Thumbnails();
+    final Thumbnails thumbnails = new Thumbnails();
     private List<CourseEntry> courses;
     private List<RoundEntry> rounds;
 
@@ -119,49 +106,27 @@ public final class GameApp implements UiActions, UiView {
     private RenderQuality autoQuality = RenderQuality.HIGH;
     OrbitCamera camera;
     NuklearLayer uiLayer;
-    private boolean rebuildScene;
+    boolean rebuildScene;
     /** Called at the start of every pass of the loop (drawn or not) with the window: tests drive resizes with it. */
     private BiConsumer<Integer, Window> loopHook = (pass, w) -> { };
 
     /** Keys and mouse: aiming, the loft, turning and moving the camera. */
-    private final GameInput input = new GameInput(this);
-    /** The aim guide's path for {@link #guideKey} (x, y, vx, vy), reused while the aim holds (AimView compares it by identity). */
-    private float[] guidePath;
-    /** An aim to show as soon as a human player can aim (play --aim, for screenshots), or null. */
-    private double[] pendingAim;
-    private double[] guideKey;
-    private final Vector3f followTarget = new Vector3f();
-    /** The time of the last frame drawn (for the camera's easing), NaN before the first. */
-    private float lastDrawTime = Float.NaN;
+    final GameInput input = new GameInput(this);
+    /** What each frame shows: the balls, the aim and its guide, the camera following the ball. */
+    private final GameView view = new GameView(this);
     /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
     boolean turnToHole;
     /** Watching a hole again ("Watch again", "Watch hole N"), and the screen to go back to. */
-    private final ReplayPlayer replayer = new ReplayPlayer();
+    final ReplayPlayer replayer = new ReplayPlayer();
     private Screen replayReturn;
 
     public GameApp(World world, Options options) {
         this.options = options;
         this.store = options.store();
-        String[] problem = new String[1];
-        store.removeStaleTemporaries();
-        this.settings = store.loadOrDefaults(problem);
-        if (problem[0] != null) {
-            // Shown until dismissed (a timed message would expire before the window exists) and on stderr.
-            notice = "Settings ignored, the defaults are used: " + problem[0];
-            System.err.println("minigolf: settings ignored, the defaults are used: " + problem[0]);
-        }
-        try {
-            audio = AudioSettings.load(AudioSettings.file(store.directory()));
-        } catch (SaveGameException e) {
-            audio = AudioSettings.DEFAULTS;
-            say("volumes ignored: " + e.getMessage());
-        }
-        try {
-            highScores = HighScores.load(HighScores.file(store.directory()));
-        } catch (SaveGameException e) {
-            highScores = null;
-            say("high scores ignored: " + e.getMessage());
-        }
+        this.files = new PlayerFiles(store, this::say);
+        this.settings = files.loadedSettings();
+        // Shown until dismissed (a timed message would expire before the window exists).
+        if (files.settingsProblem() != null) notice = "Settings ignored, the defaults are used: " + files.settingsProblem();
         this.world = world;
         this.coursePath = options.coursePath();
         this.script = new ArrayDeque<>(options.scriptedShots());
@@ -182,13 +147,13 @@ public final class GameApp implements UiActions, UiView {
             if (settings.fullscreen() && options.visible() && options.frames() <= 0) window.toggleFullscreen();
             input.install();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
-            try (NuklearLayer ui = new NuklearLayer(window.handle(), scale); Sounds sound = Sounds.open(audio)) {
+            try (NuklearLayer ui = new NuklearLayer(window.handle(), scale); Sounds sound = Sounds.open(files.volumes())) {
                 sounds = sound;
                 uiLayer = ui;
                 buildScene();
                 try {
                     if (options.startPlayers() != null) {
-                        if (roundToPlay != null) startRound(roundToPlay, options.startPlayers());
+                        if (roundToPlay != null) flow.startRound(roundToPlay, options.startPlayers());
                         else startGame(options.startPlayers());
                     }
                     loop();
@@ -238,7 +203,7 @@ public final class GameApp implements UiActions, UiView {
                 continue;
             }
             if (rebuildScene) buildScene();
-            drawFrame(fw, fh, (float) (now - start));
+            view.draw(fw, fh, (float) (now - start));
             frame++;
             boolean finalCard = screens.screen() == Screen.SCORECARD
                     || (screens.screen() == Screen.ROUND_CARD && round != null && round.isOver());
@@ -295,7 +260,7 @@ public final class GameApp implements UiActions, UiView {
                 say(p.name() + ": " + describe(r));
                 if (game.isOver()) {
                     if (round != null) {
-                        recordScores(round.finishHole());
+                        files.recordScores(round, round.finishHole());
                         cardFrames = 0;
                         screens.show(Screen.ROUND_CARD);
                     } else {
@@ -410,14 +375,14 @@ public final class GameApp implements UiActions, UiView {
         };
     }
 
-    private void say(String text) {
+    void say(String text) {
         message = text;
         messageUntil = (window != null ? glfwGetTime() : 0) + 5;
     }
 
     // ---- Drawing ------------------------------------------------------------------------------
 
-    private void buildScene() {
+    void buildScene() {
         rebuildScene = false;
         effects.clear(); // a new hole: the last one's confetti stays behind
         cupDrop.clear();
@@ -430,7 +395,7 @@ public final class GameApp implements UiActions, UiView {
         int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
         camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
         camera.setClearance(minigolf.render.CameraClearance.of(world.course(), world.terrain()::height));
-        followTarget.set(camera.target());
+        view.sceneBuilt();
         window.setTitle("Minigolf - " + world.course().name());
     }
 
@@ -439,113 +404,8 @@ public final class GameApp implements UiActions, UiView {
      * player can aim (until a mouse release or right click): for screenshots of the arrow and the aim guide.
      */
     public void showAim(double vx, double vy, int loftDegrees) {
-        pendingAim = new double[]{vx, vy};
+        view.showAim(vx, vy);
         input.loft = Loft.clamp(loftDegrees);
-    }
-
-    private void drawFrame(int fw, int fh, float time) {
-        if (pendingAim != null && canAim()) {
-            input.aiming = true;
-            input.aimVelocity = pendingAim;
-            pendingAim = null;
-        }
-        cupDrop.advanceTo(time);
-        renderer.setBalls(ballViews());
-        renderer.setAim(aimView());
-        effects.advanceTo(time);
-        renderer.setEffects(effects.mesh());
-        followBall();
-        camera.ease(Float.isNaN(lastDrawTime) ? 0 : time - lastDrawTime); // the clearance's moves glide
-        lastDrawTime = time;
-        renderer.render(camera, fw, fh, time);
-        int mini = Math.min(fw, fh) / 4;
-        renderer.renderMinimap(fw - mini - 12, 12, mini, fw, fh);
-        if (screens.screen() == Screen.COURSES) thumbnails.renderNext(courses(), 200, 120);
-        glViewport(0, 0, fw, fh);
-        uiLayer.newFrame();
-        screens.remember(this);
-        screens.draw(this);
-        uiLayer.render();
-    }
-
-    private List<BallView> ballViews() {
-        List<BallView> views = new ArrayList<>();
-        StrokeAnimator replayed = replayer.animator();
-        if (screens.screen() == Screen.REPLAY && replayed != null) {
-            double x = replayed.x(), y = replayed.y();
-            float[] c = PlayerColors.of(replayer.shot().player());
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, replayed.z()), c[0], c[1], c[2]));
-            return views;
-        }
-        if (cupDrop.view() != null) views.add(cupDrop.view());
-        if (game == null) {
-            double x = world.course().start().x(), y = world.course().start().y();
-            views.add(BallView.white(x, y, world.terrain().height(x, y)));
-            return views;
-        }
-        int rolling = game.isShotInFlight() ? game.currentPlayer() : -1;
-        for (int i = 0; i < game.players().size(); i++) {
-            PlayerState s = game.player(i);
-            if (s.status() == minigolf.game.PlayerStatus.HOLED && i != rolling) continue;
-            boolean moving = i == rolling && animator != null;
-            double x = moving ? animator.x() : s.x(), y = moving ? animator.y() : s.y();
-            double z = moving ? animator.z() : world.terrain().height(x, y); // a chip's ball is drawn in the air
-            float[] c = PlayerColors.of(i);
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, z), c[0], c[1], c[2]));
-        }
-        return views;
-    }
-
-    private AimView aimView() {
-        double[] aimVelocity = input.aimVelocity;
-        if (!input.aiming || aimVelocity == null || game == null || game.currentPlayer() < 0) return null;
-        double speed = Math.hypot(aimVelocity[0], aimVelocity[1]);
-        if (speed < 1e-6) return null;
-        PlayerState s = game.player(game.currentPlayer());
-        double[] v = Loft.velocity(aimVelocity[0], aimVelocity[1], input.loft, world.physics().maxSpeed());
-        return new AimView((float) s.x(), (float) s.y(), (float) world.terrain().height(s.x(), s.y()),
-                (float) aimVelocity[0], (float) aimVelocity[1], (float) (speed / world.physics().maxSpeed()),
-                settings.aimGuide() ? guidePath(s.x(), s.y(), v) : null);
-    }
-
-    /** The aim guide (AimGuide: the real engine, the game's settings; a chip's flight too), recomputed when the aim changes. */
-    private float[] guidePath(double x, double y, double[] v) {
-        double[] key = {x, y, v[0], v[1], v[2]};
-        if (!java.util.Arrays.equals(key, guideKey)) {
-            guidePath = minigolf.game.AimGuide.preview(game.world(), game.settings(), x, y, v[0], v[1], v[2], minigolf.game.AimGuide.SECONDS).points();
-            guideKey = key;
-        }
-        return guidePath;
-    }
-
-    /** The camera glides after the ball in play: the rolling one, else the next player's. */
-    private void followBall() {
-        if (game == null || input.rotating || input.panning) return;
-        StrokeAnimator replayed = replayer.animator();
-        if (screens.screen() == Screen.REPLAY && replayed != null) {
-            followTarget.set((float) replayed.x(), (float) replayed.y(), (float) world.terrain().height(replayed.x(), replayed.y()));
-            camera.setTarget(camera.target().lerp(followTarget, 0.12f));
-            return;
-        }
-        int seat = game.currentPlayer();
-        if (seat < 0) return;
-        double x = animator != null ? animator.x() : game.player(seat).x();
-        double y = animator != null ? animator.y() : game.player(seat).y();
-        followTarget.set((float) x, (float) y, (float) world.terrain().height(x, y));
-        Vector3f t = camera.target();
-        t.lerp(followTarget, 0.12f);
-        camera.setTarget(t);
-        if (turnToHole && animator == null) {
-            // Once the balls are at rest, swing round behind the next ball, looking at the hole.
-            double hx = world.hole().position().x() - x, hy = world.hole().position().y() - y;
-            if (Math.hypot(hx, hy) < 1e-6) {
-                turnToHole = false;
-                return;
-            }
-            double want = Math.atan2(-hy, -hx), delta = Math.IEEEremainder(want - camera.yaw(), 2 * Math.PI);
-            camera.rotate((float) (delta * 0.1), 0);
-            if (Math.abs(delta) < 0.005) turnToHole = false;
-        }
     }
 
     boolean canAim() {
@@ -566,92 +426,30 @@ public final class GameApp implements UiActions, UiView {
 
     @Override
     public AudioSettings volumes() {
-        return audio;
+        return files.volumes();
     }
 
     @Override
     public void applyVolumes(AudioSettings v) {
-        audio = v;
         if (sounds != null) sounds.setVolumes(v);
-        try {
-            v.save(AudioSettings.file(store.directory()));
-        } catch (SaveGameException e) {
-            say("volumes not saved: " + e.getMessage());
-        }
+        files.saveVolumes(v);
     }
 
     @Override
     public void startGame(List<Player> players) {
-        if (roundToPlay != null) {
-            startRound(roundToPlay, players);
-            return;
-        }
-        round = null;
-        cancelBot();
-        animator = null;
-        // The "realistic" noise, drawn from a new seed each game (saved with the game, so a resumed game goes on alike).
-        game = new Game(world, settings.simulation(), players, settings.strokeLimit(), settings.noise(), System.nanoTime());
-        camera.reset();
-        screens.show(Screen.PLAYING);
-        say(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
+        flow.startGame(players);
     }
 
-    private void startRound(Round r, List<Player> players) {
-        cancelBot();
-        botTurn = null;
-        animator = null;
-        round = new RoundGame(r, settings.simulation(), players, settings.strokeLimit(), settings.noise(), System.nanoTime());
-        showHole();
-        say(r.name() + ", hole 1 of " + r.size() + " (par " + r.hole(0).par() + "): " + players.get(0).name() + " tees off.");
-    }
 
-    /** Shows the round's current hole: its course, a fresh camera, the HUD. */
-    private void showHole() {
-        game = round.game();
-        world = game.world();
-        coursePath = null;
-        buildScene();
-        screens.show(Screen.PLAYING);
-    }
 
     @Override
     public void nextHole() {
-        if (round == null) return;
-        if (round.isHoleOver()) recordScores(round.finishHole());
-        if (!round.nextHole()) {
-            screens.show(Screen.ROUND_CARD);
-            return;
-        }
-        cancelBot();
-        botTurn = null;
-        animator = null;
-        showHole();
-        Round.Hole h = round.hole();
-        say("Hole " + (round.holeIndex() + 1) + " of " + round.round().size() + ": " + world.course().name() + ", par " + h.par());
-    }
-
-    /** Personal bests for the hole just finished, and the table once the round is over; saved at once. */
-    private void recordScores(int[] holeScores) {
-        if (highScores == null) return;
-        String name = round.round().name();
-        List<HighScores.Achievement> news = new ArrayList<>(highScores.recordHole(name, round.holeIndex(), round.players(), holeScores));
-        if (round.isOver()) {
-            news.addAll(highScores.recordRound(name, round.scorecard(), round.players(), java.time.LocalDate.now()));
-        }
-        try {
-            highScores.save(HighScores.file(store.directory()));
-        } catch (SaveGameException e) {
-            say("scores not saved: " + e.getMessage());
-            return;
-        }
-        if (!news.isEmpty()) {
-            say(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
-        }
+        flow.nextHole();
     }
 
     @Override
     public HighScores highScores() {
-        return highScores;
+        return files.highScores();
     }
 
     @Override
@@ -677,19 +475,7 @@ public final class GameApp implements UiActions, UiView {
 
     @Override
     public void selectCourse(Path file) {
-        try {
-            world = World.load(file);
-            coursePath = file;
-            roundToPlay = null;
-            round = null;
-            game = null;
-            animator = null;
-            rebuildScene = true;
-            screens.show(Screen.MAIN_MENU);
-            say("course: " + world.course().name());
-        } catch (CourseException e) {
-            say(e.getMessage());
-        }
+        flow.selectCourse(file);
     }
 
     @Override
@@ -708,49 +494,12 @@ public final class GameApp implements UiActions, UiView {
 
     @Override
     public void saveGame() {
-        if (game == null) return;
-        try {
-            Files.createDirectories(store.savesDirectory());
-            Path file = store.savesDirectory().resolve((round != null ? "round-" : "game-")
-                    + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".json");
-            if (round != null) SavedRounds.save(round, file);
-            else SavedGames.save(game, file);
-            say("saved to " + file);
-        } catch (IOException | SaveGameException e) {
-            say("not saved: " + e.getMessage());
-        }
+        if (game != null) files.save(game, round);
     }
 
     @Override
     public void loadGame(Path file) {
-        try {
-            SavedRounds.AnySave save = SavedRounds.loadAny(file);
-            if (save.round() != null) {
-                RoundGame loaded = save.round();
-                cancelBot();
-                botTurn = null;
-                round = loaded;
-                roundToPlay = loaded.round();
-                showHole();
-                game = round.game();
-                animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
-                if (game.isOver()) screens.show(Screen.ROUND_CARD);
-                say("loaded " + file.getFileName() + ": " + round.round().name() + ", hole " + (round.holeIndex() + 1));
-                return;
-            }
-            SavedGames.Loaded loaded = save.game();
-            cancelBot();
-            botTurn = null;
-            round = null;
-            world = loaded.world();
-            buildScene();
-            game = loaded.resume();
-            animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
-            screens.show(game.isOver() ? Screen.SCORECARD : Screen.PLAYING);
-            say("loaded " + file.getFileName());
-        } catch (SaveGameException e) {
-            say(e.getMessage());
-        }
+        flow.load(file);
     }
 
     @Override
@@ -777,11 +526,7 @@ public final class GameApp implements UiActions, UiView {
             rebuildScene = true;
         }
         if (renderer != null) renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0);
-        try {
-            store.save(settings);
-        } catch (SaveGameException e) {
-            say("settings not saved: " + e.getMessage());
-        }
+        files.saveSettings(settings);
     }
 
     /** The renderer's quality now (for tests). */
@@ -800,12 +545,7 @@ public final class GameApp implements UiActions, UiView {
 
     @Override
     public void toMainMenu() {
-        cancelBot();
-        botTurn = null;
-        animator = null;
-        game = null;
-        round = null;
-        screens.show(Screen.MAIN_MENU);
+        flow.toMainMenu();
     }
 
     @Override
@@ -904,13 +644,7 @@ public final class GameApp implements UiActions, UiView {
 
     @Override
     public List<Path> savedGames() {
-        Path dir = store.savesDirectory();
-        if (!Files.isDirectory(dir)) return List.of();
-        try (Stream<Path> files = Files.list(dir)) {
-            return files.filter(p -> p.toString().endsWith(".json")).sorted().toList();
-        } catch (IOException e) {
-            return List.of();
-        }
+        return files.savedGames();
     }
 
     @Override
