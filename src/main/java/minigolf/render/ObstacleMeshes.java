@@ -21,8 +21,27 @@ public final class ObstacleMeshes {
     public static final float[] TRUNK_COLOR = {0.40f, 0.28f, 0.17f};
     /** Sides of the drawn trunk polygon (the physics cylinder is round; 16 sides differ by under 2%). */
     public static final int TRUNK_SEGMENTS = 16;
-    /** The crown's radius relative to the trunk's height, and its least size relative to the trunk's radius. */
-    static final double CROWN_PER_HEIGHT = 0.32, CROWN_PER_RADIUS = 2.5;
+    /** The crown's least size relative to the trunk's radius. */
+    static final double CROWN_PER_RADIUS = 2.5;
+
+    /**
+     * How a tree's crown is drawn: its size (the crown model is about that wide either side of the
+     * trunk) per trunk height, and the height of its centre above the trunk's top, in crown sizes.
+     */
+    public record CrownStyle(double perHeight, double rise) {
+        /** A course's trees: the crown sits on the trunk, high enough that the player sees the green under it. */
+        public static final CrownStyle COURSE = new CrownStyle(0.32, 0.85);
+        /**
+         * The trees round the course: a fuller crown hung over the trunk's upper half, so that from a
+         * player's eye, a metre or two up, they read as trees and not as bare poles under a lollipop.
+         */
+        public static final CrownStyle SURROUNDINGS = new CrownStyle(0.42, -0.3);
+
+        /** The crown's size for a trunk this high and wide. */
+        public double size(double height, double radius) {
+            return Math.max(perHeight * height, CROWN_PER_RADIUS * radius);
+        }
+    }
 
     /**
      * The solid obstacles and the decorative crowns; either may have no triangles. Each obstacle's
@@ -50,6 +69,12 @@ public final class ObstacleMeshes {
      */
     public static Built build(List<Obstacle> obstacles, HeightProbe ground,
                               Function<Obstacle.Model, MaterialLibrary> modelMaterials) {
+        return build(obstacles, ground, modelMaterials, CrownStyle.COURSE);
+    }
+
+    /** As above, the trees' crowns drawn in this style. */
+    public static Built build(List<Obstacle> obstacles, HeightProbe ground,
+                              Function<Obstacle.Model, MaterialLibrary> modelMaterials, CrownStyle crownStyle) {
         Writer solid = new Writer(), crowns = new Writer();
         ModelResource crown = ModelResource.get("tree-crown");
         List<Piece> solidPieces = new java.util.ArrayList<>(), crownPieces = new java.util.ArrayList<>();
@@ -59,10 +84,10 @@ public final class ObstacleMeshes {
                 double[] c = ObstacleGeometry.treeCylinder(tree, ground);
                 solid.append(Shapes.cylinder(c[0], c[1], c[3], c[4], c[2], TRUNK_SEGMENTS,
                         TRUNK_COLOR[0], TRUNK_COLOR[1], TRUNK_COLOR[2]));
-                double size = Math.max(CROWN_PER_HEIGHT * tree.height(), CROWN_PER_RADIUS * c[2]);
+                double size = crownStyle.size(tree.height(), c[2]);
                 // Each tree turns its crown by an angle from its position, so a wood does not repeat itself.
                 double turn = Math.floorMod((long) Math.floor(c[0] * 1000 + c[1] * 7919), 360);
-                crowns.model(crown.mesh(), crown.materials(), c[0], c[1], c[4] + 0.85 * size, turn, size);
+                crowns.model(crown.mesh(), crown.materials(), c[0], c[1], c[4] + crownStyle.rise() * size, turn, size);
             } else if (o instanceof Obstacle.Model m) {
                 solid.model(m.mesh(), modelMaterials.apply(m), m.position().x(), m.position().y(), m.position().z(),
                         m.rotationDeg(), m.scale());

@@ -57,7 +57,8 @@ public final class SurroundingsPass implements RenderPass {
 
     static Layout build(double level, List<Obstacle.Tree> trees) {
         if (trees.isEmpty()) return null;
-        ObstacleMeshes.Built built = ObstacleMeshes.build(List.copyOf(trees), (x, y) -> level, m -> null);
+        ObstacleMeshes.Built built = ObstacleMeshes.build(List.copyOf(trees), (x, y) -> level, m -> null,
+                ObstacleMeshes.CrownStyle.SURROUNDINGS);
         // The trunks reach 1 m into the ground, as the physics' cylinders do; the meadow is drawn by the
         // sky, behind everything, so they must stop at its level.
         float[] v = built.solid().vertices().clone();

@@ -63,7 +63,7 @@ public final class TreePlacement {
 
     /** The crown's size as ObstacleMeshes draws it (the crown model is about this wide either side of the trunk). */
     static double crownSize(double height, double radius) {
-        return Math.max(ObstacleMeshes.CROWN_PER_HEIGHT * height, ObstacleMeshes.CROWN_PER_RADIUS * radius);
+        return ObstacleMeshes.CrownStyle.SURROUNDINGS.size(height, radius);
     }
 
     /** Distance from (x, y) to the bounds' rectangle (0 inside). */

@@ -105,13 +105,36 @@ class ObstacleMeshesTest {
         assertEquals(2.0 + 0.1 + 0.05, maxZ, 1e-6); // h(1, 2) + height
         MeshData crown = built.decoration();
         assertEquals(240, crown.triangleCount());
-        double size = ObstacleMeshes.CROWN_PER_HEIGHT * 2.0, low = Double.MAX_VALUE;
+        double size = ObstacleMeshes.CrownStyle.COURSE.size(2.0, 0.15), low = Double.MAX_VALUE;
         for (int v = 0; v < crown.vertexCount(); v++) {
             low = Math.min(low, crown.get(v, 0, 2));
             assertTrue(Math.hypot(crown.get(v, 0, 0) - 1, crown.get(v, 0, 1) - 2) < 1.3 * size, "crown stays over the trunk");
             assertTrue(crown.get(v, 1, 1) > 0.2f || crown.get(v, 2, 1) > crown.get(v, 2, 0), "crowns are leaf green");
         }
         assertTrue(low < maxZ && low > maxZ - 0.2 * size, "the crown sits on the trunk's top: lowest " + low + ", top " + maxZ);
+    }
+
+    @Test
+    void treesRoundTheCourseHangTheirCrownOverTheTrunksUpperHalf() {
+        // A 4 m tree on flat ground: the course style leaves the whole trunk bare under the crown (a
+        // lollipop from a player's eye); the surroundings' style covers its upper half.
+        Obstacle.Tree tree = new Obstacle.Tree(new Vec2(0, 0), 0.18, 4.0, 0);
+        for (ObstacleMeshes.CrownStyle style : List.of(ObstacleMeshes.CrownStyle.COURSE, ObstacleMeshes.CrownStyle.SURROUNDINGS)) {
+            MeshData crown = ObstacleMeshes.build(List.of(tree), (x, y) -> 0, m -> MaterialLibrary.empty(), style).decoration();
+            double low = Double.MAX_VALUE, high = -Double.MAX_VALUE, wide = 0;
+            for (int v = 0; v < crown.vertexCount(); v++) {
+                low = Math.min(low, crown.get(v, 0, 2));
+                high = Math.max(high, crown.get(v, 0, 2));
+                wide = Math.max(wide, Math.hypot(crown.get(v, 0, 0), crown.get(v, 0, 1)));
+            }
+            if (style == ObstacleMeshes.CrownStyle.COURSE) {
+                assertTrue(low > 3.6, "a course tree's crown starts at its trunk's top: lowest " + low);
+            } else {
+                assertTrue(low > 1.6 && low < 2.4, "bare trunk about half the tree: crown from " + low + " m");
+                assertTrue(high > 4.5 && high < 5.5, "the crown rises above the trunk: top " + high);
+                assertTrue(wide > 1.3 && wide < 1.9, "a full crown, about 0.4 of the height either side: " + wide);
+            }
+        }
     }
 
     @Test
