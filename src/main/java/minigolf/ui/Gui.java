@@ -176,6 +176,15 @@ public final class Gui {
         nextConstraints = new float[]{minWidth, minHeight, maxWidth, maxHeight};
     }
 
+    /**
+     * The window being built: x, y, width and height in interface units. In the frame a window is
+     * first measured it is placed off screen (negative x and y).
+     */
+    public static float[] windowRect() {
+        if (win == null) throw new IllegalStateException("windowRect outside a window");
+        return new float[]{win.x, win.y, win.w, win.h};
+    }
+
     public static void setNextWindowSize(float width, float height, int cond) {
         setNextWindowSize(width, height);
     }

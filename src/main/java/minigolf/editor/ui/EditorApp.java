@@ -509,8 +509,7 @@ public final class EditorApp {
     private void drawFrame(int fw, int fh) {
         if (message != null && glfwGetTime() > messageUntil) message = null;
         renderer.render(camera, fw, fh, time);
-        int mini = Math.min(fw, fh) / 5;
-        renderer.renderMinimap(fw - mini - 12, 40, mini, fw, fh);
+        renderer.renderMinimap(fw - MINIMAP_MARGIN - minimapSize(fw, fh), MINIMAP_TOP, minimapSize(fw, fh), fw, fh);
         glViewport(0, 0, fw, fh);
         uiLayer.newFrame();
         drawMarkers(fw, fh);
@@ -520,6 +519,25 @@ public final class EditorApp {
         panels.statusLine(fw, fh);
         panels.dialogs(fw, fh);
         uiLayer.render();
+    }
+
+    /** The minimap's top and right margin, framebuffer pixels (below the menu bar). */
+    static final int MINIMAP_TOP = 40, MINIMAP_MARGIN = 12;
+
+    /**
+     * The minimap's side: a fifth of the window, but never reaching down into the Course panel,
+     * which grows up from the bottom right (a 1366 x 768 laptop leaves it about 140 px).
+     */
+    int minimapSize(int fw, int fh) {
+        float toPixels = uiLayer == null ? 1 : fw / Math.max(1f, uiLayer.displayWidth());
+        return minimapSize(fw, fh, panels.courseTop() * toPixels);
+    }
+
+    /** As above, the Course panel's top at {@code courseTop} framebuffer pixels. */
+    static int minimapSize(int fw, int fh, float courseTop) {
+        int wanted = Math.min(fw, fh) / 5;
+        float room = courseTop - MINIMAP_TOP - 8;
+        return (int) Math.max(Math.min(wanted, room), Math.min(wanted, 64));
     }
 
     /** Screen position of a point on the course, in interface (window, top-left) pixels; null behind the camera. */

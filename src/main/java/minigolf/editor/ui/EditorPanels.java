@@ -47,6 +47,8 @@ final class EditorPanels {
     private final GuiInt holeRule = new GuiInt(), maxObjects = new GuiInt();
     private final GuiString courseName = new GuiString(128);
     private final GuiDouble objA = new GuiDouble(), objB = new GuiDouble(), objC = new GuiDouble(), objRestitution = new GuiDouble();
+    /** Where the Course panel's top was last drawn (interface units): the minimap stays above it. */
+    private float courseTop = Float.MAX_VALUE;
     private int selectedFieldsFor = -1;
     private long selectedFieldsVersion = -1;
     private final GuiDouble zoneKinetic = new GuiDouble(), zoneStatic = new GuiDouble();
@@ -284,11 +286,18 @@ final class EditorPanels {
         courseName.set(c.name());
     }
 
+    /** The Course panel's top in interface units as last drawn; very large before it was. */
+    float courseTop() {
+        return courseTop;
+    }
+
     void coursePanel(int fw, int fh) {
         syncFields();
         Gui.setNextWindowPos(fw - 8, fh - 48, GuiCond.Always, 1f, 1f);
         Gui.setNextWindowSize(330, 0, GuiCond.Always);
         Gui.begin("Course", GuiWindowFlags.NoMove | GuiWindowFlags.NoCollapse);
+        float[] rect = Gui.windowRect();
+        if (rect[1] >= 0) courseTop = rect[1];
         try {
             Gui.inputText("Name", courseName);
             if (Gui.isItemDeactivatedAfterEdit()) app.editor.setName(courseName.get());
