@@ -205,9 +205,7 @@ public final class GameApp implements UiActions, UiView {
             if (rebuildScene) buildScene();
             view.draw(fw, fh, (float) (now - start));
             frame++;
-            boolean finalCard = screens.screen() == Screen.SCORECARD
-                    || (screens.screen() == Screen.ROUND_CARD && round != null && round.isOver());
-            overFrames = finalCard ? overFrames + 1 : 0;
+            overFrames = showsFinalCard() ? overFrames + 1 : 0;
             // A new window takes its content size in its second frame: stop once the scorecard has been drawn.
             boolean over = options.exitWhenOver() && overFrames >= 3;
             if ((options.frames() > 0 && frame >= options.frames()) || over) {
@@ -406,6 +404,12 @@ public final class GameApp implements UiActions, UiView {
     public void showAim(double vx, double vy, int loftDegrees) {
         view.showAim(vx, vy);
         input.loft = Loft.clamp(loftDegrees);
+    }
+
+    /** The game or the round is over and its card is shown. */
+    boolean showsFinalCard() {
+        return screens.screen() == Screen.SCORECARD
+                || (screens.screen() == Screen.ROUND_CARD && round != null && round.isOver());
     }
 
     boolean canAim() {

@@ -32,6 +32,11 @@ final class GameView {
     private double[] pendingAim;
     /** The time of the last frame drawn (for the camera's easing), NaN before the first. */
     private float lastDrawTime = Float.NaN;
+    /** The final card's view has been set up (it turns from there), and the clearance it set aside. */
+    private boolean onCard;
+    private minigolf.render.CameraClearance cardClearance;
+    /** The picture shifts the card's view replaced (x, y). */
+    private float[] cardShift;
 
     GameView(GameApp app) {
         this.app = app;
@@ -40,6 +45,8 @@ final class GameView {
     /** A new scene: the camera's follow point starts where the camera looks. */
     void sceneBuilt() {
         followTarget.set(app.camera.target());
+        onCard = false; // a new camera, with its own clearance
+        cardClearance = null;
     }
 
     /** Shows the aim (vx, vy) m/s from the first frame a human player can aim (for screenshots). */
@@ -59,8 +66,19 @@ final class GameView {
         app.renderer.setAim(aimView());
         app.effects.advanceTo(time);
         app.renderer.setEffects(app.effects.mesh());
-        followBall();
-        app.camera.ease(Float.isNaN(lastDrawTime) ? 0 : time - lastDrawTime); // the clearance's moves glide
+        float dt = Float.isNaN(lastDrawTime) ? 0 : time - lastDrawTime;
+        if (app.showsFinalCard()) {
+            cardView(dt);
+        } else {
+            if (onCard) { // back to following a ball
+                app.camera.setClearance(cardClearance);
+                app.camera.setScreenShiftX(cardShift[0]);
+                app.camera.setScreenShiftY(cardShift[1]);
+            }
+            onCard = false;
+            followBall();
+        }
+        app.camera.ease(dt); // the clearance's moves glide
         lastDrawTime = time;
         app.renderer.render(app.camera, fw, fh, time);
         int mini = Math.min(fw, fh) / 4;
@@ -125,6 +143,40 @@ final class GameView {
         }
         return guidePath;
     }
+
+    /**
+     * Behind the final card the camera leaves the last ball (a view that a tree beside it could tip
+     * steeply down onto the green) for the whole course: with the card it cuts to the course's
+     * middle at {@link #CARD_PITCH} and a distance that frames the course from every side, then turns slowly round
+     * it. "Play again" or "Watch hole" brings the ball-following camera back.
+     */
+    private void cardView(float dt) {
+        if (app.input.rotating || app.input.panning) return;
+        if (!onCard) {
+            World world = app.world;
+            minigolf.course.Bounds b = world.course().bounds();
+            double cx = 0.5 * (b.minX() + b.maxX()), cy = 0.5 * (b.minY() + b.maxY());
+            app.camera.setTarget(new Vector3f((float) cx, (float) cy, (float) Math.max(0, world.terrain().height(cx, cy))));
+            app.camera.rotate(0, CARD_PITCH - app.camera.pitch());
+            cardShift = new float[]{app.camera.screenShiftX(), app.camera.screenShiftY()};
+            app.camera.setScreenShiftX(CARD_SHIFT_X);
+            app.camera.setScreenShiftY(0);
+            app.camera.frameFromAllSides(world.course(), world.terrain(),
+                    (float) app.window.framebufferWidth() / Math.max(1, app.window.framebufferHeight()), 0.92f);
+            // The overview looks at the whole course, not at a ball a tree could hide: from that far the
+            // clearance would only pull the eye into the crowns round the middle.
+            cardClearance = app.camera.clearance();
+            app.camera.setClearance(null);
+            onCard = true;
+        }
+        app.camera.rotate(CARD_TURN * dt, 0);
+    }
+
+    /**
+     * The final card's view: its pitch, its turn (radians per second), and the course's middle
+     * right of the screen's, clear of the card at the left ({@code Screens.leftOfCourse}).
+     */
+    static final float CARD_PITCH = (float) Math.toRadians(40), CARD_TURN = 0.08f, CARD_SHIFT_X = 0.42f;
 
     /** The camera glides after the ball in play: the rolling one, else the next player's. */
     private void followBall() {

@@ -27,7 +27,7 @@ public final class OrbitCamera {
     private float pitch;
     private float distance;
     /** Where the target appears vertically, in NDC (0 = centre, -0.4 = a fifth of the height below it). */
-    private float screenShiftY;
+    private float screenShiftY, screenShiftX;
     private float minDistance = 0.3f;
     private float maxDistance = 200f;
 
@@ -132,6 +132,22 @@ public final class OrbitCamera {
         minDistance = Math.min(savedMin, hi);
     }
 
+    /**
+     * Moves the eye to where the whole course stays in view however the camera turns about its
+     * target at this pitch: the largest of the distances that frame it from eight sides.
+     */
+    public void frameFromAllSides(Course course, Terrain terrain, float aspect, float margin) {
+        List<Vector3f> outline = courseOutline(course, terrain);
+        float savedYaw = yaw, far = 0;
+        for (int k = 0; k < 8; k++) {
+            yaw = (float) (k * Math.PI / 4);
+            fit(outline, aspect, margin);
+            far = Math.max(far, distance);
+        }
+        yaw = savedYaw;
+        distance = clampDistance(far);
+    }
+
     private void setHome() {
         homeTarget.set(target);
         homeYaw = yaw;
@@ -191,8 +207,22 @@ public final class OrbitCamera {
         screenShiftY = ndc;
     }
 
+    /** Where the target shows across the picture, in NDC (0: the middle; positive: to the right). */
+    public float screenShiftX() {
+        return screenShiftX;
+    }
+
+    public void setScreenShiftX(float ndc) {
+        screenShiftX = ndc;
+    }
+
     public float distance() {
         return distance;
+    }
+
+    /** What moves the eye where something would hide the target; null for the plain orbit. */
+    public CameraClearance clearance() {
+        return clearance;
     }
 
     /** Lets {@code c} move the eye where something would hide the target (null: the plain orbit). */
@@ -253,7 +283,7 @@ public final class OrbitCamera {
 
     public Matrix4f projection(float aspect, Matrix4f dest) {
         // A lens shift: the image moves on screen, the view direction does not.
-        return dest.translation(0, screenShiftY, 0).perspective(FOV_Y, aspect, near(), far());
+        return dest.translation(screenShiftX, screenShiftY, 0).perspective(FOV_Y, aspect, near(), far());
     }
 
     public Matrix4f viewProjection(float aspect, Matrix4f dest) {

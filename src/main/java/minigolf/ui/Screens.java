@@ -71,7 +71,8 @@ public final class Screens {
             case SCORECARD -> scorecard(view, w, h);
             case TEST_BOT -> hud.hud(view, w, h, false);
             case ROUND_CARD -> {
-                hud.hud(view, w, h, false);
+                // The final card says all the HUD would (and stands where it would): the course turns beside it.
+                if (view.round() == null || !view.round().isOver()) hud.hud(view, w, h, false);
                 roundCard(view, w, h);
             }
             case HELP -> help(w, h);
@@ -105,6 +106,14 @@ public final class Screens {
     static void centre(float w, float h) {
         Gui.setNextWindowPos(w * 0.5f, h * 0.5f, GuiCond.Always, 0.5f, 0.5f);
     }
+
+    /** A final card stands at the left, so that the course the camera turns round shows beside it. */
+    static void leftOfCourse(float w, float h) {
+        Gui.setNextWindowPos(w * FINAL_CARD_LEFT, h * 0.5f, GuiCond.Always, 0f, 0.5f);
+    }
+
+    /** The final card's left edge, a share of the screen's width (the camera keeps the course right of it). */
+    public static final float FINAL_CARD_LEFT = 0.03f;
 
     private void mainMenu(UiView view, float w, float h) {
         centre(w, h);
@@ -272,7 +281,7 @@ public final class Screens {
     }
 
     private void scorecard(UiView view, float w, float h) {
-        centre(w, h);
+        leftOfCourse(w, h);
         Gui.begin("Scorecard: " + view.world().course().name(), PANEL);
         Game g = view.game();
         if (g != null && Gui.beginTable("score", 6, GuiTableFlags.Borders | GuiTableFlags.RowBg)) {
@@ -308,7 +317,8 @@ public final class Screens {
         if (rg == null) return;
         minigolf.game.RoundScorecard card = rg.scorecard();
         int holes = card.pars().length;
-        centre(w, h);
+        if (card.over()) leftOfCourse(w, h);
+        else centre(w, h);
         Gui.begin((card.over() ? "Final card: " : "Card: ") + card.roundName() + "###roundcard", PANEL);
         if (Gui.beginTable("##card", holes + 3, GuiTableFlags.Borders | GuiTableFlags.RowBg | GuiTableFlags.SizingFixedFit)) {
             Gui.tableSetupColumn("Hole");

@@ -39,10 +39,19 @@ class RoundWindowTest {
                 new SettingsStore(dir.resolve("config")), true, true);
         GameApp app = new GameApp(full.hole(0).world(), options);
         app.playRound(two);
-        boolean[] sawCardBetween = {false};
+        boolean[] sawCardBetween = {false}, clearanceInPlay = {false};
+        // The camera as the final card's frames left it (the hook runs before each frame): target, yaw, shift, clearance.
+        List<float[]> cardViews = new java.util.ArrayList<>();
+        boolean[] cardClearance = {false};
         app.onLoopPass((pass, window) -> {
             RoundGame rg = app.roundGame();
             if (rg != null && app.screen() == Screen.ROUND_CARD && !rg.isOver()) sawCardBetween[0] = true;
+            if (app.screen() == Screen.PLAYING && app.camera != null && app.camera.clearance() != null) clearanceInPlay[0] = true;
+            if (rg != null && rg.isOver() && app.screen() == Screen.ROUND_CARD && app.camera != null) {
+                org.joml.Vector3f t = app.camera.target();
+                cardViews.add(new float[]{t.x, t.y, app.camera.yaw(), app.camera.screenShiftX(), app.camera.pitch()});
+                cardClearance[0] |= app.camera.clearance() != null;
+            }
         });
         app.run();
 
@@ -58,6 +67,18 @@ class RoundWindowTest {
         assertEquals(2, h.table("Two of Meadowbrook").get(0).score());
         assertEquals(1, h.personalBest("Two of Meadowbrook", 1, "Ann"));
         assertTrue(Files.size(shots.resolve("round-card.png")) > 10_000);
+
+        // Behind the final card the camera shows the whole last course (Tree Slalom), turning, right of the card.
+        assertTrue(clearanceInPlay[0], "while playing, the camera keeps the ball clear of the trees");
+        assertTrue(cardViews.size() >= 2, "final card frames seen: " + cardViews.size());
+        float[] last = cardViews.get(cardViews.size() - 1), before = cardViews.get(0);
+        minigolf.course.Bounds b = full.hole(5).world().course().bounds();
+        assertEquals(0.5 * (b.minX() + b.maxX()), last[0], 1e-4, "looking at the course's middle");
+        assertEquals(0.5 * (b.minY() + b.maxY()), last[1], 1e-4);
+        assertEquals(GameView.CARD_SHIFT_X, last[3], 0, "the course shows right of the card");
+        assertEquals(GameView.CARD_PITCH, last[4], 1e-5);
+        assertTrue(last[2] != before[2], "the view turns: yaw " + before[2] + " -> " + last[2]);
+        assertFalse(cardClearance[0], "no clearance pulls the overview into the crowns round the middle");
 
         // The help screen, as F1 opens it, over the course.
         GameApp help = new GameApp(full.hole(2).world(), new GameApp.Options(null, shots.resolve("help.png"), 6, null, List.of(), 1,

@@ -55,6 +55,31 @@ class OrbitCameraTest {
     }
 
     @Test
+    void theFinalCardsViewKeepsTheCourseInSightFromEverySideRightOfTheMiddle() {
+        Course lake = TestCourses.lake();
+        OrbitCamera c = new OrbitCamera(new Vector3f(0, 0, 0), 0.3f, (float) Math.toRadians(40), 1);
+        c.setScreenShiftX(0.42f);
+        c.frameFromAllSides(lake, TestCourses.LAKE, 1.6f, 0.92f);
+        float framed = c.distance();
+        for (int k = 0; k < 16; k++) { // also the yaws between the eight it was framed from
+            c.rotate((float) (Math.PI / 8), 0);
+            for (Vector3f p : OrbitCamera.courseOutline(lake, TestCourses.LAKE)) {
+                float[] s = c.project(p, 1600, 1000);
+                assertNotNull(s, "behind the eye: " + p);
+                assertTrue(s[0] >= 0 && s[0] <= 1600 && s[1] >= 0 && s[1] <= 1000, "off screen at yaw " + c.yaw() + ": " + p);
+            }
+        }
+        assertEquals(framed, c.distance(), 0, "turning keeps the distance");
+        float[] middle = c.project(new Vector3f(0, 0, 0), 1600, 1000);
+        assertEquals(800 * 1.42, middle[0], 1, "the target shows 0.42 NDC right of the middle");
+        // Tighter than framing from one side would need only if some side needs more: never less.
+        OrbitCamera one = new OrbitCamera(new Vector3f(0, 0, 0), 0.3f, (float) Math.toRadians(40), 1);
+        one.setScreenShiftX(0.42f);
+        one.fit(OrbitCamera.courseOutline(lake, TestCourses.LAKE), 1.6f, 0.92f);
+        assertTrue(framed >= one.distance() - 1e-4, framed + " vs " + one.distance());
+    }
+
+    @Test
     void panningDragsTheGroundWithTheCursor() {
         OrbitCamera c = new OrbitCamera(new Vector3f(), 0, 0.6f, 10); // eye on +x, looking towards -x; screen right is +y
         c.pan(100, 0, 600);
