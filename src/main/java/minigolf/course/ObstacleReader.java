@@ -1,0 +1,169 @@
+package minigolf.course;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import static minigolf.course.CourseLoader.*;
+
+/** Reads a course file's {@code zones} (friction areas and their shapes) and {@code obstacles} (walls, trees, boxes, models). */
+final class ObstacleReader extends CourseJsonReader {
+    private final ModelFiles models;
+
+    ObstacleReader(String source, ModelFiles models) {
+        super(source);
+        this.models = models;
+    }
+
+    List<Zone> zones(JsonNode n, String path) throws CourseException {
+        if (n == null) return List.of();
+        if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+        if (n.size() > Limits.ZONES) throw error(path, "too many zones: " + n.size() + " (the limit is " + Limits.ZONES + ")");
+        int points = 0;
+        for (JsonNode z : n) {
+            JsonNode pts = z.path("shape").path("points");
+            if (pts.isArray()) points += pts.size();
+        }
+        if (points > Limits.ALL_POLYGON_POINTS) {
+            throw error(path, "too many polygon points in all zones: " + points + " (the limit is "
+                    + Limits.ALL_POLYGON_POINTS + ")");
+        }
+        List<Zone> zones = new ArrayList<>(n.size());
+        for (int i = 0; i < n.size(); i++) {
+            String zp = path + "[" + i + "]";
+            ObjectNode o = object(n.get(i), zp);
+            knownFields(o, zp, ZONE_FIELDS);
+            Shape shape = shape(required(o, zp, "shape"), join(zp, "shape"));
+            String kp = join(zp, "kineticFriction"), sp = join(zp, "staticFriction");
+            double kinetic = nonNegative(number(required(o, zp, "kineticFriction"), kp), kp);
+            double stat = nonNegative(number(required(o, zp, "staticFriction"), sp), sp);
+            zones.add(new Zone(shape, kinetic, stat));
+        }
+        return zones;
+    }
+
+    Shape shape(JsonNode n, String path) throws CourseException {
+        ObjectNode o = object(n, path);
+        String tp = join(path, "type");
+        JsonNode t = required(o, path, "type");
+        String type = t.isTextual() ? t.textValue() : null;
+        if (type == null || !(type.equals("rect") || type.equals("circle") || type.equals("polygon"))) {
+            throw error(tp, "expected one of rect, circle, polygon, got " + show(t));
+        }
+        switch (type) {
+            case "rect" -> {
+                knownFields(o, path, RECT_FIELDS);
+                Vec2 min = vec(required(o, path, "min"), join(path, "min"));
+                Vec2 max = vec(required(o, path, "max"), join(path, "max"));
+                minBelowMax(min, max, path);
+                return new Shape.Rect(min, max);
+            }
+            case "circle" -> {
+                knownFields(o, path, CIRCLE_FIELDS);
+                Vec2 center = vec(required(o, path, "center"), join(path, "center"));
+                String rp = join(path, "radius");
+                return new Shape.Circle(center, positive(number(required(o, path, "radius"), rp), rp));
+            }
+            default -> {
+                knownFields(o, path, POLYGON_FIELDS);
+                String pp = join(path, "points");
+                JsonNode pts = required(o, path, "points");
+                if (!pts.isArray()) throw error(pp, "expected an array of [x, y] points, got " + kind(pts));
+                if (pts.size() < 3) throw error(pp, "a polygon needs at least 3 points, got " + pts.size());
+                if (pts.size() > Limits.POLYGON_POINTS) {
+                    throw error(pp, "too many points: " + pts.size() + " (the limit is " + Limits.POLYGON_POINTS + ")");
+                }
+                List<Vec2> points = new ArrayList<>(pts.size());
+                for (int i = 0; i < pts.size(); i++) points.add(vec(pts.get(i), pp + "[" + i + "]"));
+                return new Shape.Polygon(points);
+            }
+        }
+    }
+
+    List<Obstacle> obstacles(JsonNode n, String path) throws CourseException {
+        if (n == null) return List.of();
+        if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+        if (n.size() > Limits.OBSTACLES) {
+            throw error(path, "too many obstacles: " + n.size() + " (the limit is " + Limits.OBSTACLES + ")");
+        }
+        List<Obstacle> obstacles = new ArrayList<>(n.size());
+        long triangles = 0;
+        for (int i = 0; i < n.size(); i++) {
+            Obstacle obstacle = obstacle(n.get(i), path + "[" + i + "]");
+            if (obstacle instanceof Obstacle.Model m) {
+                triangles += m.mesh().triangleCount();
+                if (triangles > Limits.TRIANGLES) {
+                    throw error(path + "[" + i + "]", "too many model triangles in all: " + triangles
+                            + " with this one (the limit is " + Limits.TRIANGLES + ")");
+                }
+            }
+            obstacles.add(obstacle);
+        }
+        return obstacles;
+    }
+
+    Obstacle obstacle(JsonNode n, String path) throws CourseException {
+        ObjectNode o = object(n, path);
+        JsonNode t = required(o, path, "type");
+        String type = t.isTextual() ? t.textValue() : "";
+        switch (type) {
+            case "wall" -> {
+                knownFields(o, path, WALL_FIELDS);
+                Vec2 from = vec(required(o, path, "from"), join(path, "from"));
+                Vec2 to = vec(required(o, path, "to"), join(path, "to"));
+                String tp = join(path, "thickness");
+                double thickness = nonNegative(number(required(o, path, "thickness"), tp), tp);
+                if (thickness == 0 && from.equals(to)) {
+                    throw error(path, "from and to are the same point and thickness is 0: the wall has no extent");
+                }
+                String hp = join(path, "height");
+                double height = positive(number(required(o, path, "height"), hp), hp);
+                return new Obstacle.Wall(from, to, thickness, height, restitution(o, path));
+            }
+            case "tree" -> {
+                knownFields(o, path, TREE_FIELDS);
+                Vec2 position = vec(required(o, path, "position"), join(path, "position"));
+                String rp = join(path, "radius"), hp = join(path, "height");
+                double radius = positive(number(required(o, path, "radius"), rp), rp);
+                double height = positive(number(required(o, path, "height"), hp), hp);
+                return new Obstacle.Tree(position, radius, height, restitution(o, path));
+            }
+            case "box" -> {
+                knownFields(o, path, BOX_FIELDS);
+                Vec3 min = vec3(required(o, path, "min"), join(path, "min"));
+                Vec3 max = vec3(required(o, path, "max"), join(path, "max"));
+                if (!(min.x() < max.x() && min.y() < max.y() && min.z() < max.z())) {
+                    throw error(path, "min must be < max in all three axes, got min " + point3(min) + ", max " + point3(max));
+                }
+                double rotation = o.has("rotationDeg") ? number(o.get("rotationDeg"), join(path, "rotationDeg")) : 0;
+                return new Obstacle.Box(min, max, rotation, restitution(o, path));
+            }
+            case "model" -> {
+                knownFields(o, path, MODEL_FIELDS);
+                String fp = join(path, "file");
+                String file = string(required(o, path, "file"), fp);
+                if (file.isBlank()) throw error(fp, "must be a non-empty file name");
+                Vec3 position = vec3(required(o, path, "position"), join(path, "position"));
+                double rotation = o.has("rotationDeg") ? number(o.get("rotationDeg"), join(path, "rotationDeg")) : 0;
+                double scale = optionalPositive(o, path, "scale", 1);
+                double restitution = restitution(o, path);
+                minigolf.mesh.TriangleMesh mesh;
+                try {
+                    mesh = models.load(file);
+                } catch (ModelFiles.ModelException e) {
+                    throw error(fp, e.getMessage());
+                }
+                return new Obstacle.Model(file, position, rotation, scale, restitution, mesh);
+            }
+            default -> throw error(join(path, "type"), "expected one of wall, tree, box, model, got " + show(t));
+        }
+    }
+
+    private double restitution(ObjectNode o, String path) throws CourseException {
+        if (!o.has("restitution")) return Obstacle.DEFAULT_RESTITUTION;
+        String p = join(path, "restitution");
+        return unit(number(o.get("restitution"), p), p);
+    }
+}
