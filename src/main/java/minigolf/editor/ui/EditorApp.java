@@ -13,11 +13,9 @@ import minigolf.editor.BotCheck;
 import minigolf.editor.ChangeSet;
 import minigolf.editor.CourseEditor;
 import minigolf.editor.EditableCourse;
-import minigolf.editor.EditorKey;
 import minigolf.editor.ObstacleTools;
 import minigolf.editor.Problem;
 import minigolf.editor.Recovery;
-import minigolf.editor.TerrainPicker;
 import minigolf.editor.ToolController;
 import minigolf.game.BotCatalog;
 import minigolf.ui.PlanOverlay;
@@ -37,9 +35,7 @@ import minigolf.ui.GuiDrawList;
 import minigolf.ui.GuiInt;
 import minigolf.ui.GuiString;
 import minigolf.ui.NuklearLayer;
-import org.joml.Matrix4f;
 import org.joml.Vector3f;
-import org.joml.Vector4f;
 
 import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL11.*;
@@ -73,7 +69,7 @@ public final class EditorApp {
     ToolController tool;
     Window window;
     private RenderQuality quality = RenderQuality.HIGH;
-    private NuklearLayer uiLayer;
+    NuklearLayer uiLayer;
     private SceneRenderer renderer;
     OrbitCamera camera;
     boolean heightMap, rebuildScene = true;
@@ -86,12 +82,8 @@ public final class EditorApp {
     BotCheck botCheck;
     final GuiInt botChoice = new GuiInt(0);
     private Path playFile;
-    // Mouse.
-    private boolean rotating, panning, stroking, dragging;
-    private int dragObject = -1;
-    private double dragStartX, dragStartY, lastDabX, lastDabY;
-    private double lastX, lastY;
-    private boolean cursorSeen;
+    /** Keys and mouse: the tool, dragging objects, the camera. */
+    private final EditorInput input = new EditorInput(this);
     final GuiString pathField = new GuiString("courses/my-course.json", 512);
     long fieldsVersion = -1;
     int selected = -1;
@@ -117,7 +109,7 @@ public final class EditorApp {
         try (Window w = new Window("Minigolf editor", 1400, 860, wo)) {
             window = w;
             window.setVsync(options.frames() <= 0);
-            installInput();
+            input.install();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
             try (NuklearLayer ui = new NuklearLayer(window.handle(), scale, minigolf.ui.UiFont.EDITOR_SIZE_PIXELS)) {
                 uiLayer = ui;
@@ -155,7 +147,7 @@ public final class EditorApp {
             window.pollEvents();
             if (frame < options.scriptedKeys().size()) {
                 int[] k = options.scriptedKeys().get(frame);
-                onKey(k[0], k[1]);
+                input.onKey(k[0], k[1]);
             }
             int fw = window.framebufferWidth(), fh = window.framebufferHeight();
             if (fw <= 0 || fh <= 0 || window.isIconified()) {
@@ -246,187 +238,14 @@ public final class EditorApp {
         }
     }
 
-    // ---- Input ----------------------------------------------------------------------------------
-
-    private void installInput() {
-        long h = window.handle();
-        glfwSetKeyCallback(h, (win, key, scancode, action, mods) -> {
-            if (action == GLFW_RELEASE || (uiLayer != null && uiLayer.wantsKeyboard())) return;
-            boolean repeatable = key == GLFW_KEY_W || key == GLFW_KEY_A || key == GLFW_KEY_S || key == GLFW_KEY_D;
-            if (action == GLFW_REPEAT && !repeatable) return;
-            onKey(key, mods);
-        });
-        glfwSetWindowCloseCallback(h, win -> {
-            if (editor.isDirty()) {
-                glfwSetWindowShouldClose(win, false);
-                dialog = Dialog.CONFIRM_CLOSE;
-            }
-        });
-        glfwSetMouseButtonCallback(h, (win, button, action, mods) -> {
-            boolean down = action == GLFW_PRESS;
-            double[] x = new double[1], y = new double[1];
-            glfwGetCursorPos(win, x, y);
-            lastX = x[0];
-            lastY = y[0];
-            if (down && uiLayer != null && uiLayer.wantsMouse()) return;
-            // The game's camera scheme (CameraDrag): right-drag or Ctrl + left-drag turns, Shift + right,
-            // middle or Ctrl + Shift + left moves; a plain left press is the tool.
-            minigolf.ui.CameraDrag drag = down ? minigolf.ui.CameraDrag.of(button, mods) : minigolf.ui.CameraDrag.NONE;
-            if (down && drag != minigolf.ui.CameraDrag.NONE) {
-                rotating = drag == minigolf.ui.CameraDrag.ROTATE;
-                panning = drag == minigolf.ui.CameraDrag.PAN;
-            } else if (!down && button != GLFW_MOUSE_BUTTON_LEFT) {
-                rotating = false;
-                panning = false;
-            }
-            if (button == GLFW_MOUSE_BUTTON_LEFT) {
-                if (down && drag == minigolf.ui.CameraDrag.NONE) {
-                    toolDown(x[0], y[0]);
-                } else if (!down) {
-                    if (rotating || panning) {
-                        rotating = false;
-                        panning = false;
-                    }
-                    toolUp(x[0], y[0]);
-                }
-            }
-        });
-        glfwSetCursorPosCallback(h, (win, x, y) -> {
-            if (!cursorSeen) { // the first event only says where the pointer already was (e.g. under Xvfb)
-                cursorSeen = true;
-                lastX = x;
-                lastY = y;
-                return;
-            }
-            float dx = (float) (x - lastX), dy = (float) (y - lastY);
-            lastX = x;
-            lastY = y;
-            if (rotating) {
-                camera.rotate(-dx * 0.006f, dy * 0.006f);
-            } else if (panning) {
-                int[] ww = new int[1], wh = new int[1];
-                glfwGetWindowSize(win, ww, wh);
-                camera.pan(dx, dy, Math.max(1, wh[0]));
-            } else if (uiLayer == null || !uiLayer.wantsMouse()) {
-                toolMove(x, y);
-            }
-        });
-        glfwSetScrollCallback(h, (win, xoff, yoff) -> {
-            if (uiLayer == null || !uiLayer.wantsMouse()) camera.zoom((float) yoff);
-        });
-    }
-
     /** One key press (the GLFW callback and scripted input both end here). */
     public void onKey(int key, int mods) {
-        boolean ctrl = (mods & GLFW_MOD_CONTROL) != 0;
-        if (ctrl) {
-            switch (key) {
-                case GLFW_KEY_Z -> say(tool.press(EditorKey.UNDO));
-                case GLFW_KEY_Y -> say(tool.press(EditorKey.REDO));
-                case GLFW_KEY_S -> save();
-                default -> {
-                }
-            }
-            return;
-        }
-        EditorKey k = switch (key) {
-            case GLFW_KEY_W -> EditorKey.UP;
-            case GLFW_KEY_A -> EditorKey.LEFT;
-            case GLFW_KEY_S -> EditorKey.DOWN;
-            case GLFW_KEY_D -> EditorKey.RIGHT;
-            case GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT -> EditorKey.TOGGLE_TOOL;
-            case GLFW_KEY_M -> EditorKey.WALL;
-            case GLFW_KEY_B -> EditorKey.TREE;
-            case GLFW_KEY_ENTER, GLFW_KEY_KP_ENTER -> EditorKey.PLACE;
-            case GLFW_KEY_P -> EditorKey.DELETE;
-            case GLFW_KEY_Q -> EditorKey.ROTATE_LEFT;
-            case GLFW_KEY_E -> EditorKey.ROTATE_RIGHT;
-            default -> null;
-        };
-        if (k != null) {
-            say(tool.press(k));
-            return;
-        }
-        switch (key) {
-            case GLFW_KEY_H -> toggleHeightMap();
-            case GLFW_KEY_R -> camera.reset();
-            case GLFW_KEY_F11 -> window.toggleFullscreen();
-            default -> {
-            }
-        }
+        input.onKey(key, mods);
     }
 
     void toggleHeightMap() {
         heightMap = !heightMap;
         renderer.terrainPass().setColorMode(heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN);
-    }
-
-    private void toolDown(double cx, double cy) {
-        double[] p = pick(cx, cy);
-        if (p == null) return;
-        tool.moveTo(p[0], p[1]);
-        if (tool.isBrushAction()) {
-            editor.beginStroke(tool.brush(), p[0], p[1], tool.radius, tool.strength);
-            stroking = true;
-            lastDabX = p[0];
-            lastDabY = p[1];
-            return;
-        }
-        if (tool.mode() == ToolController.Mode.OBJECT) {
-            int k = editor.obstacleNear(p[0], p[1], ToolController.PICK_DISTANCE);
-            if (k >= 0) { // drag an existing object
-                selected = k;
-                dragObject = k;
-                dragging = true;
-                dragStartX = p[0];
-                dragStartY = p[1];
-                return;
-            }
-        }
-        say(tool.applyAt(p[0], p[1]));
-    }
-
-    private void toolMove(double cx, double cy) {
-        double[] p = pick(cx, cy);
-        if (p == null) return;
-        tool.moveTo(p[0], p[1]);
-        if (stroking && Math.hypot(p[0] - lastDabX, p[1] - lastDabY) >= 0.25 * tool.radius) {
-            editor.dab(p[0], p[1]);
-            lastDabX = p[0];
-            lastDabY = p[1];
-        }
-    }
-
-    private void toolUp(double cx, double cy) {
-        if (stroking) {
-            stroking = false;
-            editor.endStroke();
-        }
-        if (dragging) {
-            dragging = false;
-            double[] p = pick(cx, cy);
-            if (p != null && Math.hypot(p[0] - dragStartX, p[1] - dragStartY) > 1e-3) {
-                editor.moveObstacle(dragObject, p[0] - dragStartX, p[1] - dragStartY);
-            }
-            dragObject = -1;
-        }
-    }
-
-    /** Cursor (window coordinates) to the terrain point under it, or null. */
-    private double[] pick(double cx, double cy) {
-        if (camera == null) return null;
-        int[] ww = new int[1], wh = new int[1];
-        glfwGetWindowSize(window.handle(), ww, wh);
-        int fw = window.framebufferWidth(), fh = window.framebufferHeight();
-        double x = cx * fw / Math.max(1, ww[0]), y = cy * fh / Math.max(1, wh[0]);
-        float nx = (float) (2 * x / fw - 1), ny = (float) (1 - 2 * y / fh);
-        Matrix4f inv = camera.viewProjection((float) fw / fh, new Matrix4f()).invert();
-        Vector4f near = new Vector4f(nx, ny, -1, 1).mul(inv), far = new Vector4f(nx, ny, 1, 1).mul(inv);
-        near.div(near.w);
-        far.div(far.w);
-        World w = editor.world();
-        return TerrainPicker.pick(w.terrain(), w.bounds(), near.x, near.y, near.z, far.x - near.x, far.y - near.y,
-                far.z - near.z, 0.5 * editor.course().spacing());
     }
 
     // ---- Actions --------------------------------------------------------------------------------
