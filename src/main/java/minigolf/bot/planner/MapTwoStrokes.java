@@ -26,6 +26,8 @@ final class MapTwoStrokes {
     static final double[] HILL_SPEEDS = {1, 0.6};
     static final int TRIES = 14;
     static final int EXACT_TRIES = 6;
+    /** Lay-ups whose rest points get the deep look-ahead ({@link #deepLookAhead}). */
+    static final int DEEP = 3;
     static final double SPACING = 0.3;
     /** A run of marked cells longer than this forgives as much as any. */
     static final double LONG_RUN = 1.0;
@@ -40,6 +42,8 @@ final class MapTwoStrokes {
     /** Sweep shots resting in marked cells: tried after the lay-ups, at most {@link #EXACT_TRIES}. */
     private final List<Target> exact = new ArrayList<>();
     private boolean swept;
+    /** Lay-ups played by {@link #search} whose look-ahead found no putt, in the order tried. */
+    private final List<Eval> played = new ArrayList<>();
 
     MapTwoStrokes(Stroke s, OnePuttMap map) {
         this.s = s;
@@ -83,6 +87,7 @@ final class MapTwoStrokes {
         targets.sort((a, b) -> Double.compare(a.score(), b.score()));
         exact.sort((a, b) -> Double.compare(a.score(), b.score()));
         s.sim.phase("one-putt look-ahead");
+        if (DEBUG) System.err.printf(java.util.Locale.ROOT, "map lay-ups from (%.2f,%.2f): %d targets, %d exact%n", s.px, s.py, targets.size(), exact.size());
         List<double[]> tried = new ArrayList<>();
         List<Target> order = new ArrayList<>(targets);
         order.addAll(exact);
@@ -97,9 +102,35 @@ final class MapTwoStrokes {
             tried.add(new double[] {t.x(), t.y()});
             if (isExact) exactTried++;
             Eval e = s.evaluate(t.shot(), s.holeX, s.holeY);
+            if (DEBUG) System.err.printf(java.util.Locale.ROOT, "  target %s (%.2f,%.2f) score %.2f -> (%.2f,%.2f) %s cushions %d%n", isExact ? "exact" : "run", t.x(), t.y(), t.score(), e.restX(), e.restY(), e.result().outcome(), map.cushions(e.restX(), e.restY()));
             if (e.holed()) return t.shot();
             if (e.penalty()) continue;
             if (lookAhead(e.restX(), e.restY())) return t.shot();
+            played.add(e);
+        }
+        return null;
+    }
+
+    /**
+     * The last two-stroke search: from the rest points of the first {@code count} lay-ups played
+     * whose look-ahead failed (best ranked first), a dense hole-in-one sweep ({@link DenseSweep}:
+     * bank and flying putts the map's single guess misses). The holing putt is kept; the lay-up
+     * is the shot. Null when none holes.
+     */
+    Shot deepLookAhead(int count) {
+        s.sim.phase("deep look-ahead");
+        List<Eval> order = new ArrayList<>(played);
+        // The easiest putt the map knows first (a stable sort: the lay-ups' own order breaks ties).
+        order.sort((a, b) -> Double.compare(map.cost(a.restX(), a.restY()), map.cost(b.restX(), b.restY())));
+        for (int i = 0; i < Math.min(count, order.size()); i++) {
+            Eval e = order.get(i);
+            Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, e.restX(), e.restY(), s.plan);
+            Shot putt = new DenseSweep(next).holeInOne();
+            if (DEBUG) System.err.printf(java.util.Locale.ROOT, "  deep from (%.2f,%.2f): %s%n", e.restX(), e.restY(), putt != null);
+            if (putt != null) {
+                s.solved.add(new Solved(s.world, e.restX(), e.restY(), putt));
+                return e.shot();
+            }
         }
         return null;
     }
@@ -123,6 +154,8 @@ final class MapTwoStrokes {
         }
         return next.solvedHole();
     }
+
+    static final boolean DEBUG = Boolean.getBoolean("minigolf.debugMap");
 
     /** The runs of marked cells along one shot's path, each a lay-up target. */
     final class Runs implements TrajectoryListener {

@@ -185,6 +185,8 @@ public final class PlannerBot extends SearchBot {
             if (denseSweep) {
                 shot = twoStrokes.wideLayupSweep();
                 if (shot != null) return shot;
+                shot = mapLayups.deepLookAhead(MapTwoStrokes.DEEP);
+                if (shot != null) return shot;
             }
         }
         sim.phase("lay-up");
