@@ -87,7 +87,6 @@ final class MapTwoStrokes {
         targets.sort((a, b) -> Double.compare(a.score(), b.score()));
         exact.sort((a, b) -> Double.compare(a.score(), b.score()));
         s.sim.phase("one-putt look-ahead");
-        if (DEBUG) System.err.printf(java.util.Locale.ROOT, "map lay-ups from (%.2f,%.2f): %d targets, %d exact%n", s.px, s.py, targets.size(), exact.size());
         List<double[]> tried = new ArrayList<>();
         List<Target> order = new ArrayList<>(targets);
         order.addAll(exact);
@@ -102,7 +101,6 @@ final class MapTwoStrokes {
             tried.add(new double[] {t.x(), t.y()});
             if (isExact) exactTried++;
             Eval e = s.evaluate(t.shot(), s.holeX, s.holeY);
-            if (DEBUG) System.err.printf(java.util.Locale.ROOT, "  target %s (%.2f,%.2f) score %.2f -> (%.2f,%.2f) %s cushions %d%n", isExact ? "exact" : "run", t.x(), t.y(), t.score(), e.restX(), e.restY(), e.result().outcome(), map.cushions(e.restX(), e.restY()));
             if (e.holed()) return t.shot();
             if (e.penalty()) continue;
             if (lookAhead(e.restX(), e.restY())) return t.shot();
@@ -112,10 +110,12 @@ final class MapTwoStrokes {
     }
 
     /**
-     * The last two-stroke search: from the rest points of the first {@code count} lay-ups played
-     * whose look-ahead failed (best ranked first), a dense hole-in-one sweep ({@link DenseSweep}:
-     * bank and flying putts the map's single guess misses). The holing putt is kept; the lay-up
-     * is the shot. Null when none holes.
+     * The last two-stroke search: from the rest points of {@code count} lay-ups played whose
+     * look-ahead failed, those where the map knows the easiest putt first, a dense hole-in-one
+     * sweep ({@link DenseSweep}). The map's one putt per cell is a guess that breaks where a putt
+     * flies off a rim, glances off a wall's end or crosses sand at near the speed limit; the
+     * sweep from the real rest point finds such putts where they are not a fluke of one point.
+     * The holing putt is kept for the next stroke; the lay-up is the shot. Null when none holes.
      */
     Shot deepLookAhead(int count) {
         s.sim.phase("deep look-ahead");
@@ -126,7 +126,6 @@ final class MapTwoStrokes {
             Eval e = order.get(i);
             Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, e.restX(), e.restY(), s.plan);
             Shot putt = new DenseSweep(next).holeInOne();
-            if (DEBUG) System.err.printf(java.util.Locale.ROOT, "  deep from (%.2f,%.2f): %s%n", e.restX(), e.restY(), putt != null);
             if (putt != null) {
                 s.solved.add(new Solved(s.world, e.restX(), e.restY(), putt));
                 return e.shot();
@@ -154,8 +153,6 @@ final class MapTwoStrokes {
         }
         return next.solvedHole();
     }
-
-    static final boolean DEBUG = Boolean.getBoolean("minigolf.debugMap");
 
     /** The runs of marked cells along one shot's path, each a lay-up target. */
     final class Runs implements TrajectoryListener {
