@@ -7,7 +7,9 @@ import minigolf.physics.World;
 
 /**
  * Tool (test scope): what the one-putt map says at a point of a tile course and whether the
- * look-ahead holes from there and from points round it. Arguments: SEED INDEX X Y [RADIUS].
+ * look-ahead holes from there and from points round it (0.1 m apart, RADIUS round it); with
+ * --dense, whether a dense hole-in-one sweep ({@link DenseSweep}) holes from each instead.
+ * Arguments: SEED INDEX X Y [RADIUS] [--dense].
  */
 final class MapProbe {
     public static void main(String[] args) {
