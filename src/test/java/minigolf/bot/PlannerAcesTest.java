@@ -23,8 +23,17 @@ class PlannerAcesTest {
         Playthrough.Result planner = play("planner", mazeD), aces = play("planner-aces", mazeD);
         assertEquals(4, planner.strokes());
         assertEquals(3, aces.strokes(), "the fewest the exhaustive search finds");
-        // Measured 3,913: the one-putt map (720 rays) and its lay-up look-aheads cost about 1,100 more than before it.
-        assertTrue(aces.simulations() <= 4_000, aces.simulations() + " simulations");
+        // Measured 7,226: 3,913 with the one-putt map (720 rays) and its lay-up look-aheads, then the deep
+        // look-ahead's three dense sweeps from the first stroke's lay-ups (no two-stroke game here).
+        assertTrue(aces.simulations() <= 7_400, aces.simulations() + " simulations");
+    }
+
+    @Test
+    void onTuningTileCourse777Dash38TheDeepLookAheadFindsTheTwoStrokeGame() {
+        // Seed 777 (tuning, never the held-out 424242): a lay-up onto dirt and a putt near the speed
+        // limit, which the map's own putts miss; 3 strokes before the deep look-ahead.
+        World tile = TileCourses.generate(777, 39).get(38);
+        assertEquals(2, play("planner-aces", tile).strokes());
     }
 
     @Test

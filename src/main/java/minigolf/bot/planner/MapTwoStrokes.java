@@ -26,6 +26,8 @@ final class MapTwoStrokes {
     static final double[] HILL_SPEEDS = {1, 0.6};
     static final int TRIES = 14;
     static final int EXACT_TRIES = 6;
+    /** Lay-ups whose rest points get the deep look-ahead ({@link #deepLookAhead}). */
+    static final int DEEP = 3;
     static final double SPACING = 0.3;
     /** A run of marked cells longer than this forgives as much as any. */
     static final double LONG_RUN = 1.0;
@@ -40,6 +42,8 @@ final class MapTwoStrokes {
     /** Sweep shots resting in marked cells: tried after the lay-ups, at most {@link #EXACT_TRIES}. */
     private final List<Target> exact = new ArrayList<>();
     private boolean swept;
+    /** Lay-ups played by {@link #search} whose look-ahead found no putt, in the order tried. */
+    private final List<Eval> played = new ArrayList<>();
 
     MapTwoStrokes(Stroke s, OnePuttMap map) {
         this.s = s;
@@ -100,6 +104,32 @@ final class MapTwoStrokes {
             if (e.holed()) return t.shot();
             if (e.penalty()) continue;
             if (lookAhead(e.restX(), e.restY())) return t.shot();
+            played.add(e);
+        }
+        return null;
+    }
+
+    /**
+     * The last two-stroke search: from the rest points of {@code count} lay-ups played whose
+     * look-ahead failed, those where the map knows the easiest putt first, a dense hole-in-one
+     * sweep ({@link DenseSweep}). The map's one putt per cell is a guess that breaks where a putt
+     * flies off a rim, glances off a wall's end or crosses sand at near the speed limit; the
+     * sweep from the real rest point finds such putts where they are not a fluke of one point.
+     * The holing putt is kept for the next stroke; the lay-up is the shot. Null when none holes.
+     */
+    Shot deepLookAhead(int count) {
+        s.sim.phase("deep look-ahead");
+        List<Eval> order = new ArrayList<>(played);
+        // The easiest putt the map knows first (a stable sort: the lay-ups' own order breaks ties).
+        order.sort((a, b) -> Double.compare(map.cost(a.restX(), a.restY()), map.cost(b.restX(), b.restY())));
+        for (int i = 0; i < Math.min(count, order.size()); i++) {
+            Eval e = order.get(i);
+            Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, e.restX(), e.restY(), s.plan);
+            Shot putt = new DenseSweep(next).holeInOne();
+            if (putt != null) {
+                s.solved.add(new Solved(s.world, e.restX(), e.restY(), putt));
+                return e.shot();
+            }
         }
         return null;
     }

@@ -185,6 +185,11 @@ public final class PlannerBot extends SearchBot {
             if (denseSweep) {
                 shot = twoStrokes.wideLayupSweep();
                 if (shot != null) return shot;
+                if (request.strokesTaken() == 0) {
+                    // On the first stroke only: later ones gained no stroke on the tuning sets and cost more.
+                    shot = mapLayups.deepLookAhead(MapTwoStrokes.DEEP);
+                    if (shot != null) return shot;
+                }
             }
         }
         sim.phase("lay-up");

@@ -45,4 +45,33 @@ class MapTwoStrokesTest {
         ShotResult second = engine.simulate(first.endX(), first.endY(), putt.shot().vx(), putt.shot().vy());
         assertEquals(Outcome.HOLED, second.outcome());
     }
+
+    /**
+     * Tuning course 777-38 (planner-aces 3 strokes, the exhaustive search 2: a lay-up onto the dirt
+     * and a putt at 4.96 m/s): the map's putt from each lay-up misses, so the lay-ups alone find no
+     * two-stroke game; the deep look-ahead (a dense sweep from the lay-up with the easiest map putt)
+     * does, and both strokes replayed on the engine hole.
+     */
+    @Test
+    void theDeepLookAheadFindsTheTwoStrokeGameTheMapsPuttMisses() {
+        World w = TileCourses.generate(777, 39).get(38);
+        Stroke s = StagesTest.stroke(w, w.course().start().x(), w.course().start().y());
+        OnePuttMap map = OnePuttMap.build(s.probe);
+        MapTwoStrokes stage = new MapTwoStrokes(s, map);
+        assertNull(new DenseSweep(s, stage).holeInOne());
+        assertNull(stage.search(), "the map's lay-ups and putts alone find no two-stroke game");
+        long before = s.sim.count();
+        Shot layup = stage.deepLookAhead(MapTwoStrokes.DEEP);
+        assertNotNull(layup);
+        // At most the dense sweep's cost per lay-up (hills: three speeds all round, its fans and starts).
+        long used = s.sim.count() - before;
+        assertTrue(used <= MapTwoStrokes.DEEP * 1300, used + " simulations");
+        Simulator engine = new Simulator(w, SimulationSettings.DEFAULT);
+        ShotResult first = engine.simulate(s.px, s.py, layup.vx(), layup.vy());
+        assertEquals(Outcome.STOPPED, first.outcome());
+        Solved putt = s.solved.stream().filter(k -> k.x() == first.endX() && k.y() == first.endY()).findFirst()
+                .orElseThrow(() -> new AssertionError("no putt kept for the lay-up's rest point"));
+        ShotResult second = engine.simulate(first.endX(), first.endY(), putt.shot().vx(), putt.shot().vy());
+        assertEquals(Outcome.HOLED, second.outcome());
+    }
 }
