@@ -489,6 +489,8 @@ public final class Stroke {
      * flies; otherwise the part into or off the ground is dropped and it rolls on.
      */
     private void bounceOffObstacleWhileRolling() {
+        // A new heading: the rest rule's decision about a turn ahead was for the old one.
+        rest.forget();
         double wz = hx * vx + hy * vy;
         double before = Math.sqrt(vx * vx + vy * vy + wz * wz);
         double vn = vx * paths.hit.nx + vy * paths.hit.ny + wz * paths.hit.nz;
@@ -576,8 +578,11 @@ public final class Stroke {
         }
         double after = Math.sqrt(vx * vx + vy * vy + vz * vz);
         event(StrokeEvent.Type.COLLISION, before, after);
-        // Come to rest on top of an obstacle: the ball is unplayable there, which counts as out.
-        if (paths.hit.nz > 0.5 && -vn * paths.hit.restitution < hopSpeed && after < hopSpeed / paths.hit.nz) {
+        // Settling on top of an obstacle (docs/physics.md, "Flight"): off a face turned upwards the
+        // ball leaves slower than a 1 mm hop, whatever its speed along the face. It cannot roll
+        // there, so it is unplayable: out, at the contact.
+        double away = vn < 0 ? -vn * paths.hit.restitution : vn;
+        if (paths.hit.nz > 0.5 && away < hopSpeed) {
             finish(Outcome.OUT, x, y, z);
         }
     }
@@ -614,6 +619,7 @@ public final class Stroke {
         vz = impact.vz;
         if (impact.settles) {
             flying = false;
+            rest.forget();
             event(StrokeEvent.Type.LAND, impact.before, impact.after);
         } else {
             event(StrokeEvent.Type.BOUNCE, impact.before, impact.after);
