@@ -90,9 +90,10 @@ class ObstacleRulesAgreementTest {
     }
 
     /**
-     * `lake-obstacles` shot 664 meets a wall at 0.07 m/s and rolls back up the slope, turning
-     * with a speed minimum of 0.4 mm/s: by the rule it stops there. The engine once kept the
-     * decision it had taken about the turn before the contact (roll back) and ended 4.3 mm away.
+     * `lake-obstacles` shot 664 meets a wall at 0.07 m/s, braking on a slope steeper than μk,
+     * and stops near it. The engine once kept the decision about the turn ahead that it had taken
+     * before the contact, for the old heading (roll back down), and ended 4.3 mm from the
+     * reference (0.35 m since a ball settles against a wall).
      */
     @Test
     void theRestRuleDecidesATurnAfreshAfterAContact() throws CourseException {
