@@ -196,17 +196,6 @@ final class RollingStep {
      * while leaning on an obstacle, without the part that pushes into it.
      */
     void acceleration(double gx, double gy, double mu, double pvx, double pvy) {
-        free(gx, gy, mu, pvx, pvy);
-        if (leaning) {
-            double into = ax * leanX + ay * leanY;
-            if (into < 0) {
-                ax -= into * leanX;
-                ay -= into * leanY;
-            }
-        }
-    }
-
-    private void free(double gx, double gy, double mu, double pvx, double pvy) {
         double speedSquared = pvx * pvx + pvy * pvy;
         double normalisation = complete ? 1 + gx * gx + gy * gy : 1;
         if (speedSquared == 0) {
@@ -215,9 +204,7 @@ final class RollingStep {
             double factor = slope > mu ? -gravity * (1 - mu / slope) / normalisation : 0;
             ax = factor * gx;
             ay = factor * gy;
-            return;
-        }
-        if (complete) {
+        } else if (complete) {
             double along = gx * pvx + gy * pvy;
             double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
             ax = -gravity * gx / normalisation - frictionScale * pvx;
@@ -226,6 +213,13 @@ final class RollingStep {
             double frictionScale = mu * gravity / Math.sqrt(speedSquared);
             ax = -gravity * gx - frictionScale * pvx;
             ay = -gravity * gy - frictionScale * pvy;
+        }
+        if (leaning) {
+            double into = ax * leanX + ay * leanY;
+            if (into < 0) {
+                ax -= into * leanX;
+                ay -= into * leanY;
+            }
         }
     }
 }
