@@ -128,6 +128,8 @@ class CommandLineTest {
         assertEquals(0, r.code(), r.err());
         assertEquals(200, r.json().get("shots").asInt());
         assertTrue(r.json().get("shotsPerSecond").asDouble() > 0);
+        // CPU time never exceeds the wall time of the same thread.
+        assertTrue(r.json().get("shotsPerCpuSecond").asDouble() >= 0.9 * r.json().get("shotsPerSecond").asDouble(), r.out());
     }
 
     @Test
