@@ -1,5 +1,6 @@
 package minigolf.cli;
 
+import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.file.Path;
 import java.util.Arrays;
@@ -11,6 +12,7 @@ import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.Simulator;
 import minigolf.physics.World;
+import minigolf.physics.reference.Conditioning;
 import minigolf.physics.reference.ReferenceResult;
 import minigolf.physics.reference.ReferenceSimulator;
 import picocli.CommandLine.Command;
@@ -23,7 +25,10 @@ import picocli.CommandLine.Model.CommandSpec;
         description = {"Compares end points of random shots at the chosen integrator and step with an independent "
                 + "reference (minigolf.physics.reference: adaptive Dormand-Prince 5(4) with its own event location "
                 + "and stop rule, sharing no stepping code with the engine).",
-                "Shots the reference does not cover (flight) are counted in 'covered' and left out of the errors."})
+                "Shots the reference does not cover (a ball left leaning on a wall) are counted in 'notCovered' and left "
+                        + "out of the errors; so are ill-conditioned shots, whose reference end point moves by more than "
+                        + "1 mm when a velocity component changes by 1e-7 m/s ('illConditioned', listed in "
+                        + "'illConditionedShots'): they have no 1 mm answer. 'compared' counts the rest."})
 final class BenchAccuracyCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -54,7 +59,8 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         ReferenceSimulator reference = new ReferenceSimulator(world);
         RandomShots random = new RandomShots(seed, world.physics().maxSpeed());
         double[] errors = new double[shots];
-        int covered = 0, sameOutcome = 0;
+        int covered = 0, compared = 0, sameOutcome = 0;
+        ArrayNode illConditioned = Json.array();
         Map<String, Integer> notCovered = new TreeMap<>();
         ObjectNode worst = null;
         double worstError = -1;
@@ -66,16 +72,31 @@ final class BenchAccuracyCommand implements Callable<Integer> {
                 notCovered.merge(b.note(), 1, Integer::sum);
                 continue;
             }
+            covered++;
             ShotResult a = tested.simulate(x0, y0, v[0], v[1]);
-            if (a.outcome() == b.outcome()) sameOutcome++;
             double error = Math.hypot(a.endX() - b.endX(), a.endY() - b.endY());
-            errors[covered++] = error;
+            double spread = Conditioning.spread(reference, x0, y0, v[0], v[1], b);
+            if (Conditioning.illConditioned(spread)) {
+                ObjectNode shot = illConditioned.addObject();
+                shot.put("shot", i);
+                shot.set("velocity", Json.array(v[0], v[1]));
+                if (Double.isFinite(spread)) {
+                    shot.put("spreadMm", spread * 1e3);
+                } else {
+                    shot.putNull("spreadMm");
+                    shot.put("note", "a perturbed shot is not covered");
+                }
+                shot.put("errorMm", error * 1e3);
+                continue;
+            }
+            if (a.outcome() == b.outcome()) sameOutcome++;
+            errors[compared++] = error;
             if (error > worstError) {
                 worstError = error;
-                worst = worstShot(v, a, b, error);
+                worst = worstShot(i, v, a, b, error);
             }
         }
-        double[] sorted = Arrays.copyOf(errors, covered);
+        double[] sorted = Arrays.copyOf(errors, compared);
         Arrays.sort(sorted);
         int within = 0;
         for (double e : sorted) if (e <= 1e-3) within++;
@@ -88,6 +109,8 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         out.put("covered", covered);
         ObjectNode reasons = out.putObject("notCovered");
         notCovered.forEach(reasons::put);
+        out.put("illConditioned", illConditioned.size());
+        out.put("compared", compared);
         putMm(out, "medianErrorMm", sorted, 0.5);
         putMm(out, "p90ErrorMm", sorted, 0.9);
         putMm(out, "p999ErrorMm", sorted, 0.999);
@@ -95,11 +118,12 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         out.put("withinOneMm", within);
         out.put("sameOutcome", sameOutcome);
         if (worst != null) out.set("worst", worst);
+        out.set("illConditionedShots", illConditioned);
         spec.commandLine().getOut().println(Json.write(out));
         return 0;
     }
 
-    /** The nearest-rank percentile of the covered shots' errors, in mm; null when no shot was covered. */
+    /** The nearest-rank percentile of the compared shots' errors, in mm; null when no shot was compared. */
     private static void putMm(ObjectNode out, String key, double[] sorted, double fraction) {
         if (sorted.length == 0) {
             out.putNull(key);
@@ -109,8 +133,9 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         out.put(key, sorted[Math.max(0, Math.min(sorted.length - 1, rank - 1))] * 1e3);
     }
 
-    private static ObjectNode worstShot(double[] v, ShotResult engine, ReferenceResult reference, double error) {
+    private static ObjectNode worstShot(int shot, double[] v, ShotResult engine, ReferenceResult reference, double error) {
         ObjectNode worst = Json.object();
+        worst.put("shot", shot);
         worst.set("velocity", Json.array(v[0], v[1]));
         worst.put("errorMm", error * 1e3);
         ObjectNode e = worst.putObject("engine");

@@ -30,6 +30,12 @@ final class RollingStep {
     private double x, y, vx, vy, hx, hy, muK;
     /** While not NaN, the kinetic friction every stage uses (a step that ends at a zone's edge). */
     double frozenMuK = Double.NaN;
+    /**
+     * While leaning, the ball rolls along an obstacle whose horizontal normal (pointing away from
+     * it) is (leanX, leanY): the obstacle takes the part of the acceleration that pushes into it.
+     */
+    boolean leaning;
+    double leanX, leanY;
     /** The last acceleration computed. */
     double ax, ay;
     /** The state a sub-step produced. */
@@ -126,6 +132,13 @@ final class RollingStep {
     private void slowSubStep(double tau, double hx, double hy) {
         double normalisation = complete ? 1 + hx * hx + hy * hy : 1;
         double gx = -gravity * hx / normalisation, gy = -gravity * hy / normalisation;
+        if (leaning) {
+            double into = gx * leanX + gy * leanY;
+            if (into < 0) {
+                gx -= into * leanX;
+                gy -= into * leanY;
+            }
+        }
         double wx = vx + tau * gx, wy = vy + tau * gy;
         double w = Math.sqrt(wx * wx + wy * wy);
         double friction = muK * gravity;
@@ -178,7 +191,10 @@ final class RollingStep {
         acceleration(sample[1], sample[2], mu, pvx, pvy);
     }
 
-    /** The equations of motion: writes (ax, ay) for slope (gx, gy), friction mu and velocity v. */
+    /**
+     * The equations of motion: writes (ax, ay) for slope (gx, gy), friction mu and velocity v;
+     * while leaning on an obstacle, without the part that pushes into it.
+     */
     void acceleration(double gx, double gy, double mu, double pvx, double pvy) {
         double speedSquared = pvx * pvx + pvy * pvy;
         double normalisation = complete ? 1 + gx * gx + gy * gy : 1;
@@ -188,9 +204,7 @@ final class RollingStep {
             double factor = slope > mu ? -gravity * (1 - mu / slope) / normalisation : 0;
             ax = factor * gx;
             ay = factor * gy;
-            return;
-        }
-        if (complete) {
+        } else if (complete) {
             double along = gx * pvx + gy * pvy;
             double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
             ax = -gravity * gx / normalisation - frictionScale * pvx;
@@ -199,6 +213,13 @@ final class RollingStep {
             double frictionScale = mu * gravity / Math.sqrt(speedSquared);
             ax = -gravity * gx - frictionScale * pvx;
             ay = -gravity * gy - frictionScale * pvy;
+        }
+        if (leaning) {
+            double into = ax * leanX + ay * leanY;
+            if (into < 0) {
+                ax -= into * leanX;
+                ay -= into * leanY;
+            }
         }
     }
 }

@@ -61,6 +61,8 @@ public final class Stroke {
     private final EventLog events;
     private final PathSweep paths;
     private final TakeOff takeOff;
+    /** A ball settled against an obstacle rolls along it; null without obstacles. */
+    private final Leaning lean;
 
     // The ball's state and the terrain sample at it (reused as the first stage of the next step).
     private double x, y, vx, vy, t;
@@ -145,6 +147,8 @@ public final class Stroke {
         this.scene = world.obstacles();
         this.ballRadius = physics.ballRadius();
         this.impact = new GroundImpact(physics.groundRestitution(), hopSpeed);
+        this.lean = scene == null ? null
+                : new Leaning(scene, terrain, rolling, ballRadius, gravity, complete);
         this.events = recordEvents ? new EventLog() : null;
         this.x = x0;
         this.y = y0;
@@ -214,6 +218,13 @@ public final class Stroke {
             return 0;
         }
         double speed = Math.sqrt(vx * vx + vy * vy);
+        // A ball leaning on an obstacle leaves it at rest, where the ground no longer pulls it
+        // towards it, or where the obstacle is out of reach (its end).
+        boolean leaning = lean != null && lean.active();
+        if (leaning && (speed == 0 || !lean.holds(x, y, hx, hy))) {
+            lean.release();
+            leaning = false;
+        }
         // A ball the rest rule sends back down (it turned faster than REST_SPEED) is not at rest
         // when an energy cut leaves it at v = 0 at its turn: it starts down again, once.
         boolean sentBack = speed == 0 && rest.rollsBack();
@@ -227,9 +238,16 @@ public final class Stroke {
         double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
             double decelerationAlongV = -(a1x * vx + a1y * vy) / speed;
-            double slope = Math.sqrt(hx * hx + hy * hy);
+            // Leaning, the rule sees the ground without the part of its slope the obstacle takes.
+            double ghx = hx, ghy = hy;
+            if (leaning) {
+                lean.effective(hx, hy);
+                ghx = lean.gx;
+                ghy = lean.gy;
+            }
+            double slope = Math.sqrt(ghx * ghx + ghy * ghy);
             if (decelerationAlongV > 0) {
-                double stop = rest.stopWithin(tau, speed, decelerationAlongV, slope, vx, vy, hx, hy, muK);
+                double stop = rest.stopWithin(tau, speed, decelerationAlongV, slope, vx, vy, ghx, ghy, muK);
                 if (stop >= 0) {
                     finishStep(stop, RollingStep.Kind.STOP, a1x, a1y, speed);
                     return pieceTime;
@@ -339,6 +357,15 @@ public final class Stroke {
             subStep(endTau, kind, a1x, a1y);
             event = hazardAt(nx, ny);
         }
+        boolean leaves = false;
+        if (lean != null && lean.active() && !lean.touches(nx, ny)) {
+            // Past the end of the obstacle it leans on: the step ends there, and it rolls on free.
+            endTau = locateObstacleEnd(endTau, kind, a1x, a1y);
+            subStep(endTau, kind, a1x, a1y);
+            stopping = false;
+            event = null;
+            leaves = true;
+        }
         boolean collided = false;
         if (scene != null && paths.sweep(x, y, h + ballRadius, vx, vy, 0, nx, ny, 0, nvx, nvy, 0, endTau, true)) {
             // The ball reaches an obstacle first: the step ends there (on the swept path).
@@ -349,6 +376,7 @@ public final class Stroke {
             stopping = false;
             event = null;
             collided = true;
+            leaves = false;
         }
         double speed1 = stopping && event == null ? 0 : Math.sqrt(nvx * nvx + nvy * nvy);
         boolean pathEndsHere = stopping || event != null || collided;
@@ -384,6 +412,13 @@ public final class Stroke {
             bounceOffObstacleWhileRolling();
             notifyListener();
             resume = true;
+            return;
+        }
+        if (leaves) {
+            lean.release();
+            notifyListener();
+            resume = true;
+            subPiece = true;
             return;
         }
         if (!stopping && !dissipates(kind, a1x, a1y)) return;
@@ -478,6 +513,7 @@ public final class Stroke {
         z = h;
         vz = hx * vx + hy * vy;
         flying = true;
+        if (lean != null) lean.release();
         event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
         pieceTime = rolled;
         resume = true;
@@ -489,6 +525,8 @@ public final class Stroke {
      * flies; otherwise the part into or off the ground is dropped and it rolls on.
      */
     private void bounceOffObstacleWhileRolling() {
+        // A new heading: the rest rule's decision about a turn ahead was for the old one.
+        rest.forget();
         double wz = hx * vx + hy * vy;
         double before = Math.sqrt(vx * vx + vy * vy + wz * wz);
         double vn = vx * paths.hit.nx + vy * paths.hit.ny + wz * paths.hit.nz;
@@ -503,6 +541,7 @@ public final class Stroke {
         if (away > hopSpeed) {
             vz = wz;
             flying = true;
+            lean.release();
             event(StrokeEvent.Type.COLLISION, before, Math.sqrt(vx * vx + vy * vy + wz * wz));
             event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
             return;
@@ -512,6 +551,15 @@ public final class Stroke {
         double into = vx * gx + vy * gy + wz * gz;
         vx -= into * gx;
         vy -= into * gy;
+        if (lean.settles(paths.hit.nx, paths.hit.ny, paths.hit.nz, vx, vy, hx, hy)) {
+            // It settles against the obstacle (docs/physics.md): it rolls along it from here.
+            vx = lean.vx;
+            vy = lean.vy;
+            x += lean.dx;
+            y += lean.dy;
+            sampleCurrent();
+            z = h;
+        }
         wz = hx * vx + hy * vy;
         event(StrokeEvent.Type.COLLISION, before, Math.sqrt(vx * vx + vy * vy + wz * wz));
     }
@@ -576,8 +624,11 @@ public final class Stroke {
         }
         double after = Math.sqrt(vx * vx + vy * vy + vz * vz);
         event(StrokeEvent.Type.COLLISION, before, after);
-        // Come to rest on top of an obstacle: the ball is unplayable there, which counts as out.
-        if (paths.hit.nz > 0.5 && -vn * paths.hit.restitution < hopSpeed && after < hopSpeed / paths.hit.nz) {
+        // Settling on top of an obstacle (docs/physics.md, "Flight"): off a face turned upwards the
+        // ball leaves slower than a 1 mm hop, whatever its speed along the face. It cannot roll
+        // there, so it is unplayable: out, at the contact.
+        double away = vn < 0 ? -vn * paths.hit.restitution : vn;
+        if (paths.hit.nz > 0.5 && away < hopSpeed) {
             finish(Outcome.OUT, x, y, z);
         }
     }
@@ -614,6 +665,7 @@ public final class Stroke {
         vz = impact.vz;
         if (impact.settles) {
             flying = false;
+            rest.forget();
             event(StrokeEvent.Type.LAND, impact.before, impact.after);
         } else {
             event(StrokeEvent.Type.BOUNCE, impact.before, impact.after);
@@ -660,6 +712,17 @@ public final class Stroke {
         if (!area.contains(px, py)) return Outcome.OUT;
         if (terrain.height(px, py) < 0) return Outcome.WATER;
         return null;
+    }
+
+    /** The first sub-step length at which the obstacle the ball leans on is out of its reach, by bisection. */
+    private double locateObstacleEnd(double tau, RollingStep.Kind kind, double a1x, double a1y) {
+        double on = 0, off = tau;
+        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
+            double mid = 0.5 * (on + off);
+            subStep(mid, kind, a1x, a1y);
+            if (lean.touches(nx, ny)) on = mid; else off = mid;
+        }
+        return off;
     }
 
     /** The first sub-step length at which the ball is in a hazard, found by bisection. */

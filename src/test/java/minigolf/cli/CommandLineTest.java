@@ -128,6 +128,8 @@ class CommandLineTest {
         assertEquals(0, r.code(), r.err());
         assertEquals(200, r.json().get("shots").asInt());
         assertTrue(r.json().get("shotsPerSecond").asDouble() > 0);
+        // CPU time never exceeds the wall time of the same thread.
+        assertTrue(r.json().get("shotsPerCpuSecond").asDouble() >= 0.9 * r.json().get("shotsPerSecond").asDouble(), r.out());
     }
 
     @Test
@@ -136,6 +138,25 @@ class CommandLineTest {
         assertEquals(0, r.code(), r.err());
         assertEquals(3, r.json().get("withinOneMm").asInt(), r.out());
         assertTrue(r.json().get("maxErrorMm").asDouble() < 1, r.out());
+    }
+
+    /**
+     * Shot 74 of `lake-obstacles` (seed 1) stops on the shore, or rolls into the lake a metre
+     * away when its velocity changes by 1e-7 m/s: it is counted ill-conditioned and left out of
+     * the errors, and the other covered shots are compared.
+     */
+    @Test
+    void benchAccuracyCountsIllConditionedShotsApart() throws IOException {
+        CliRun r = run("bench-accuracy", course("lake-obstacles.json"), "--shots", "75");
+        assertEquals(0, r.code(), r.err());
+        JsonNode json = r.json();
+        assertEquals(1, json.get("illConditioned").asInt(), r.out());
+        JsonNode shot = json.get("illConditionedShots").get(0);
+        assertEquals(74, shot.get("shot").asInt(), r.out());
+        assertTrue(shot.get("spreadMm").asDouble() > 1000, r.out());
+        assertEquals(json.get("covered").asInt() - 1, json.get("compared").asInt(), r.out());
+        assertEquals(json.get("compared").asInt(), json.get("withinOneMm").asInt(), r.out());
+        assertTrue(json.get("maxErrorMm").asDouble() < 1, r.out());
     }
 
     private static List<String> fieldNames(JsonNode json) {

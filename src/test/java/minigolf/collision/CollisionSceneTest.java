@@ -100,4 +100,32 @@ class CollisionSceneTest {
         }
         assertFalse(all.anyNear(-1, -1, -0.5, -0.5), "nothing is listed near the origin");
     }
+
+    /**
+     * anyShapeNear may only say "no" where no sweep inside the rectangle can touch anything: for
+     * random chords among walls, trunks and turned boxes, every chord that hits has a "yes" for
+     * its own bounding rectangle, and the test sees both answers many times.
+     */
+    @Test
+    void anyShapeNearNeverHidesAContact() {
+        CollisionScene scene = scene(unitBox(30),
+                new Obstacle.Tree(new Vec2(3, 2), 0.15, 1, 0.7),
+                new Obstacle.Wall(new Vec2(-6, -4), new Vec2(-2, -5), 0.05, 0.3, 0.7),
+                new Obstacle.Box(new Vec3(4, -5, -1), new Vec3(4.5, -3, 0.5), 70, 0.7));
+        java.util.Random random = new java.util.Random(3);
+        Hit hit = new Hit();
+        double[] scratch = new double[3];
+        int hits = 0, noes = 0;
+        for (int k = 0; k < 50_000; k++) {
+            double x0 = -8 + 16 * random.nextDouble(), y0 = -8 + 16 * random.nextDouble();
+            double x1 = x0 + random.nextGaussian() * 0.4, y1 = y0 + random.nextGaussian() * 0.4;
+            boolean near = scene.anyShapeNear(Math.min(x0, x1), Math.min(y0, y1), Math.max(x0, x1), Math.max(y0, y1));
+            if (scene.sweep(x0, y0, 0.1, x1, y1, 0.1, hit, scratch)) {
+                hits++;
+                assertTrue(near, "a hit from (" + x0 + ", " + y0 + ") to (" + x1 + ", " + y1 + ")");
+            }
+            if (!near) noes++;
+        }
+        assertTrue(hits > 500 && noes > 10_000, hits + " hits, " + noes + " noes");
+    }
 }

@@ -2,6 +2,7 @@ package minigolf.terrain;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -107,5 +108,33 @@ class GridTerrainTest {
         assertThrows(IllegalArgumentException.class, () -> new GridTerrain(0, 0, 1, new double[][] {{1, 2}}));
         assertThrows(IllegalArgumentException.class, () -> new GridTerrain(0, 0, 0, new double[][] {{1, 2}, {3, 4}}));
         assertThrows(IllegalArgumentException.class, () -> new GridTerrain(0, 0, 1, new double[][] {{1, 2}, {3}}));
+    }
+
+    /**
+     * Inside the grid, height and sample take a path without index clamps; it must give the
+     * clamped path's values bit for bit (saved games replay strokes to the bit).
+     */
+    @Test
+    void theInteriorPathIsBitForBitTheClampedOne() {
+        GridTerrain grid = sampled((x, y) -> Math.sin(3 * x) * Math.cos(2 * y) + 0.1 * x * y);
+        Random random = new Random(5);
+        double[] fast = new double[3], clamped = new double[3];
+        int interior = 0;
+        for (int k = 0; k < 20_000; k++) {
+            double x = -2.3 + 5.6 * random.nextDouble(), y = -1.3 + 4.6 * random.nextDouble();
+            double u = (x + 2) / SPACING, v = (y + 1) / SPACING;
+            if (u < 0 || v < 0 || u > 20 || v > 16) continue;
+            int i = Math.min((int) u, 19), j = Math.min((int) v, 15);
+            double tx = u - i, ty = v - j;
+            grid.sample(x, y, fast);
+            grid.clampedSample(i, j, tx, ty, clamped);
+            if (i >= 1 && i + 2 < 21 && j >= 1 && j + 2 < 17) interior++;
+            assertEquals(Double.doubleToRawLongBits(clamped[0]), Double.doubleToRawLongBits(fast[0]));
+            assertEquals(Double.doubleToRawLongBits(clamped[1] / SPACING), Double.doubleToRawLongBits(fast[1]));
+            assertEquals(Double.doubleToRawLongBits(clamped[2] / SPACING), Double.doubleToRawLongBits(fast[2]));
+            assertEquals(Double.doubleToRawLongBits(grid.clampedHeight(i, j, tx, ty)),
+                    Double.doubleToRawLongBits(grid.height(x, y)));
+        }
+        assertTrue(interior > 10_000, interior + " interior points");
     }
 }

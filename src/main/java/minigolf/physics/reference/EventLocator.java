@@ -27,7 +27,9 @@ final class EventLocator {
         /** (p − c)·v turns from negative to ≥ 0: the path's closest approach to the hole. */
         CLOSEST,
         /** vᵀHv < −g: the ground curves away faster than gravity can hold the ball. */
-        TAKE_OFF
+        TAKE_OFF,
+        /** A ball leaning on an obstacle is no longer pulled towards it, or is past its end. */
+        LEAVE_OBSTACLE
     }
 
     static final double TIME_TOLERANCE = 1e-12;
@@ -38,6 +40,7 @@ final class EventLocator {
     private final DormandPrince stepper;
     private final RollingEquations equations;
     private final ReferenceFriction friction;
+    private final ReferenceLean lean;
     private final PlayArea area;
     private final Terrain terrain;
     private final Hole hole;
@@ -50,7 +53,9 @@ final class EventLocator {
     Type type;
     double lo, hi;
 
-    EventLocator(World world, DormandPrince stepper, RollingEquations equations, ReferenceFriction friction) {
+    EventLocator(World world, DormandPrince stepper, RollingEquations equations, ReferenceFriction friction,
+                 ReferenceLean lean) {
+        this.lean = lean;
         this.stepper = stepper;
         this.equations = equations;
         this.friction = friction;
@@ -130,6 +135,8 @@ final class EventLocator {
                 // would straddle the bounds (where a grid is extended flat) and launch a ball that
                 // is simply leaving; that ball is out where it crosses, flying or not.
                 return equations.curvatureTimesSpeedSquared(x, yy, vx, vy) < -g && insideAhead(x, yy, vx, vy);
+            case LEAVE_OBSTACLE:
+                return lean.leavesAt(x, yy);
             default:
                 throw new AssertionError(t);
         }

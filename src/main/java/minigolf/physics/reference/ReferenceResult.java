@@ -3,8 +3,9 @@ package minigolf.physics.reference;
 import minigolf.physics.Outcome;
 
 /**
- * The end of one reference stroke. {@code covered} is false when the shot needs physics the
- * reference does not model (a ball left leaning on an obstacle) or ran past its step guard;
+ * The end of one reference stroke. {@code covered} is false when the shot ran past the
+ * reference's guards (more than 1,000 obstacle contacts: a ball wedged between obstacles; or
+ * more than a million steps);
  * {@code note} then says which, and the other fields are where the reference gave up.
  * {@code launches} counts the times the ball left the ground, {@code contacts} its obstacle hits.
  */

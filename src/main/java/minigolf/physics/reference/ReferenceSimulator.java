@@ -16,10 +16,11 @@ import minigolf.terrain.Terrain;
  * play area, the obstacles' swept-sphere test).
  *
  * <p>A ball leaves the ground (a chip, the take-off criterion vᵀHv &lt; −g, an obstacle bounce
- * upwards faster than a 1 mm hop) into {@link ReferenceFlight}. A shot that exceeds
- * {@value #MAX_STEPS} accepted steps or {@value #MAX_CONTACTS} obstacle contacts (a ball left
- * leaning on a wall) is returned not covered. Several times the engine's work per shot. Not
- * thread-safe; one per thread.
+ * upwards faster than a 1 mm hop) into {@link ReferenceFlight}. A ball that the slope presses
+ * against an obstacle settles against it and rolls along it ({@link ReferenceLean}). A shot that
+ * exceeds {@value #MAX_STEPS} accepted steps or {@value #MAX_CONTACTS} obstacle contacts (a ball
+ * wedged in a corner between obstacles) is returned not covered. Several times the engine's work
+ * per shot. Not thread-safe; one per thread.
  */
 public final class ReferenceSimulator {
     public static final double TOLERANCE = 1e-10;
@@ -46,6 +47,7 @@ public final class ReferenceSimulator {
     private final EventLocator events;
     private final ObstacleContact obstacles;
     private final ReferenceFlight flight;
+    private final ReferenceLean lean;
     private final double[] y = new double[4], a = new double[2], sample = new double[3];
     private double t;
     private long steps;
@@ -67,9 +69,10 @@ public final class ReferenceSimulator {
         this.hole = world.hole();
         this.maxTime = maxTime;
         this.friction = new ReferenceFriction(world);
-        this.equations = new RollingEquations(world, friction);
+        this.lean = new ReferenceLean(world);
+        this.equations = new RollingEquations(world, friction, lean);
         this.stepper = new DormandPrince(new double[] {tolerance, tolerance, tolerance, tolerance});
-        this.events = new EventLocator(world, stepper, equations, friction);
+        this.events = new EventLocator(world, stepper, equations, friction, lean);
         this.obstacles = new ObstacleContact(world, stepper, false);
         this.flight = new ReferenceFlight(world, maxTime, tolerance);
     }
@@ -93,6 +96,7 @@ public final class ReferenceSimulator {
         steps = 0;
         contacts = 0;
         launches = 0;
+        lean.off();
         friction.holdZone(friction.zoneAt(x0, y0));
         terrain.sample(x0, y0, sample);
         double rise = sample[1] * vx + sample[2] * vy;
@@ -171,6 +175,10 @@ public final class ReferenceSimulator {
                     }
                     scanFrom = events.hi;
                     break;
+                case LEAVE_OBSTACLE:
+                    restartAt(events.hi);
+                    lean.off();
+                    return null;
                 case TAKE_OFF: {
                     restartAt(events.hi);
                     terrain.sample(y[0], y[1], sample);
@@ -185,7 +193,10 @@ public final class ReferenceSimulator {
             if (++contacts > MAX_CONTACTS) {
                 return ReferenceResult.notCovered("more than " + MAX_CONTACTS + " obstacle contacts", y[0], y[1], t, steps);
             }
-            if (!obstacles.respond(y)) {
+            if (obstacles.respond(y)) {
+                lean.afterContact(y, obstacles.nx, obstacles.ny, obstacles.nz);
+            } else {
+                lean.off();
                 return fly(y[0], y[1], terrain.height(y[0], y[1]), obstacles.flight[0], obstacles.flight[1], obstacles.flight[2]);
             }
             return null;
@@ -201,6 +212,7 @@ public final class ReferenceSimulator {
      */
     private ReferenceResult fly(double x, double yy, double z, double vx, double vy, double vz) {
         launches++;
+        lean.off();
         flight.steps = steps;
         flight.contacts = contacts;
         ReferenceResult end = flight.fly(x, yy, z, vx, vy, vz, t);
@@ -249,13 +261,15 @@ public final class ReferenceSimulator {
      */
     private ReferenceResult comeToRest() {
         double x = y[0], yy = y[1];
+        lean.off();
         terrain.sample(x, yy, sample);
         double h = sample[0], hx = sample[1], hy = sample[2], slope = Math.hypot(hx, hy);
         // Capture rule: a ball at rest within the radius passes there at speed 0, below v_c(1 − (δ/r)²).
         if (hole.rule() == HoleRule.CAPTURE && captured(x, yy, 0)) return end(Outcome.HOLED, x, yy);
         double mu = friction.holding(x, yy);
         boolean holds = slope <= mu
-                || terrain.height(x - CREASE_PROBE * hx / slope, yy - CREASE_PROBE * hy / slope) >= h - mu * CREASE_PROBE;
+                || terrain.height(x - CREASE_PROBE * hx / slope, yy - CREASE_PROBE * hy / slope) >= h - mu * CREASE_PROBE
+                || lean.leansAtRest(x, yy, hx, hy);
         if (holds) {
             boolean inHole = hole.rule() == HoleRule.REST
                     && Math.hypot(x - hole.position().x(), yy - hole.position().y()) <= hole.radius();

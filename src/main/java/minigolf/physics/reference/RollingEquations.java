@@ -19,10 +19,13 @@ final class RollingEquations implements DormandPrince.Rhs {
     private final ReferenceFriction friction;
     private final double g;
     private final boolean complete;
+    /** A ball leaning on an obstacle does not accelerate into it. */
+    private final ReferenceLean lean;
     private final double[] sample = new double[3];
     private final double[] probe = new double[3];
 
-    RollingEquations(World world, ReferenceFriction friction) {
+    RollingEquations(World world, ReferenceFriction friction, ReferenceLean lean) {
+        this.lean = lean;
         this.terrain = world.terrain();
         this.friction = friction;
         this.g = world.physics().gravity();
@@ -56,6 +59,7 @@ final class RollingEquations implements DormandPrince.Rhs {
             out[at] = -g * hx - f * vx;
             out[at + 1] = -g * hy - f * vy;
         }
+        lean.constrain(out, at);
     }
 
     /**
