@@ -29,13 +29,16 @@ public final class RobustBot implements Bot {
     private NoiseModel valueNoise;
     private ValueMap values;
     /**
-     * Where this game's ball lay when the planner's shot was replaced: back near one, the
-     * planner's shot is played (the value map may misjudge a spot, e.g. a basin the ball rolls back
-     * into; the planner's own cycle memory then takes over).
+     * Where this game's ball lay when the planner's shot was replaced, and its value there: back
+     * near one and no nearer the hole by the value map, the planner's shot is played (the value
+     * map may misjudge a spot, e.g. a basin the ball rolls back into; the planner's own cycle
+     * memory then takes over).
      */
     private final List<double[]> replacedFrom = new ArrayList<>();
     /** "Near" for {@link #replacedFrom}, metres. */
     static final double RETURN_RADIUS = 0.5;
+    /** Back near such a spot, the value map must expect this many strokes fewer than there. */
+    static final double PROGRESS = 0.05;
 
     @Override
     public String name() {
@@ -48,14 +51,25 @@ public final class RobustBot implements Bot {
         NoiseModel noise = request.noise();
         if (noise.isNone()) return base;
         double x = request.ballX(), y = request.ballY();
+        ValueMap map;
+        try {
+            map = valuesFor(request);
+        } catch (BotCancelledException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            request.simulator().recordError(name() + ": " + e);
+            return base;
+        }
+        double here = map.fromRest(x, y);
         for (double[] p : replacedFrom) {
-            // Exactly there: a lost ball put back, which the choice has already priced in.
+            // Exactly there: a lost ball put back, which the choice has already priced in. Nearer
+            // the hole by the map: progress (a missed putt that stopped closer), not a cycle.
             double d = Math.hypot(p[0] - x, p[1] - y);
-            if (d > 0 && d < RETURN_RADIUS) return base;
+            if (d > 0 && d < RETURN_RADIUS && here > p[2] - PROGRESS) return base;
         }
         NoisyChoice choice = null;
         try {
-            choice = new NoisyChoice(request, base, valuesFor(request));
+            choice = new NoisyChoice(request, base, map);
             choice.search();
         } catch (BudgetExhaustedException e) {
             // The best scored so far (the planner's shot if none was).
@@ -66,7 +80,7 @@ public final class RobustBot implements Bot {
             if (request.token().isCancelled()) throw new BotCancelledException();
         }
         Shot chosen = choice == null ? base : choice.best();
-        if (!chosen.equals(base)) replacedFrom.add(new double[] {x, y});
+        if (!chosen.equals(base)) replacedFrom.add(new double[] {x, y, here});
         return chosen;
     }
 
