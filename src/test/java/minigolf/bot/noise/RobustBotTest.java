@@ -65,7 +65,7 @@ class RobustBotTest {
 
     /**
      * Sine-cross-limit: the ace needs 4.9-5.4 m/s and a fast miss runs out of bounds; the robust
-     * bot lays up along the line when that is cheaper. Measured: planner 4.2, robust 2.5.
+     * bot lays up along the line when that is cheaper. Measured: planner 4.2, robust 2.0.
      */
     @Test
     void nearTheSpeedLimitTheRobustBotLaysUpAndGainsStrokes() {
