@@ -13,9 +13,10 @@ import minigolf.physics.World;
  * coarse grid of cells well clear of water (and a little clear of obstacles); a cell is one stroke from the hole when a straight
  * putt from it sees the hole clear of water and the hole is within a maximum-speed roll, k + 1
  * strokes when it so sees a cell k strokes away. Built once per course (breadth first from the
- * hole); the planner lays up to the reachable cell with the fewest strokes left.
+ * hole); the planner lays up to the reachable cell with the fewest strokes left. {@code robust} reads
+ * it as the noiseless part of its value map ({@code minigolf.bot.noise.ValueMap}).
  */
-final class StrokePlan {
+public final class StrokePlan {
     /** At most about this many cells (coarser cells on bigger courses). */
     private static final int TARGET_CELLS = 700;
     /** A resting place this far from water at least (robust to a small error of the lay-up). */
@@ -35,7 +36,7 @@ final class StrokePlan {
     private final int[] strokes;
     private final double holeX, holeY;
 
-    StrokePlan(World world, CourseGrid fine, CancellationToken token) {
+    public StrokePlan(World world, CourseGrid fine, CancellationToken token) {
         this.world = world;
         this.fine = fine;
         double area = world.bounds().width() * world.bounds().depth();
@@ -93,13 +94,39 @@ final class StrokePlan {
         return strokes.length;
     }
 
+    /** The cell's side in metres. */
+    public double cell() {
+        return cell;
+    }
+
+    /**
+     * Strokes from (x, y) to the hole: its own cell's, or where that is no resting cell (beside a
+     * wall or water), the fewest of the neighbouring cells a line from (x, y) reaches clear of
+     * obstacles; Integer.MAX_VALUE when none.
+     */
+    public int strokesAt(double x, double y) {
+        int c0 = (int) Math.floor((x - minX) / cell), r0 = (int) Math.floor((y - minY) / cell);
+        if (c0 >= 0 && c0 < cols && r0 >= 0 && r0 < rows && strokes[r0 * cols + c0] != Integer.MAX_VALUE) {
+            return strokes[r0 * cols + c0];
+        }
+        int best = Integer.MAX_VALUE;
+        for (int r = r0 - 1; r <= r0 + 1; r++) {
+            for (int c = c0 - 1; c <= c0 + 1; c++) {
+                if (c < 0 || c >= cols || r < 0 || r >= rows) continue;
+                int i = r * cols + c;
+                if (strokes[i] < best && fine.clearLine(x, y, x(i), y(i), 0, 0)) best = strokes[i];
+            }
+        }
+        return best;
+    }
+
     /** Strokes from cell i to the hole, or Integer.MAX_VALUE when no plan reaches it. */
     int strokes(int i) {
         return strokes[i];
     }
 
     /** Whether a straight putt from (x0, y0) can stop at (x1, y1): a clear line within reach. */
-    boolean putt(double x0, double y0, double x1, double y1) {
+    public boolean putt(double x0, double y0, double x1, double y1) {
         double distance = Math.hypot(x1 - x0, y1 - y0);
         if (distance > 0.99 * reach(x0, y0, x1, y1)) return false;
         return fine.clearLine(x0, y0, x1, y1, LINE_CLEARANCE, LINE_OBSTACLE_CLEARANCE);

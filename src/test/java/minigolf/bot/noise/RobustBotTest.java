@@ -1,6 +1,7 @@
 package minigolf.bot.noise;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -41,7 +42,7 @@ class RobustBotTest {
     /**
      * Lake-bowl (water on the direct line) at 0.05 m/s, 10 seeds: the planner's ace attempts
      * skirt the water; the robust bot's are scored under the noise. Measured: planner 3.2,
-     * robust 2.4 mean strokes.
+     * robust 2.0 mean strokes.
      */
     @Test
     void onTheLakeTheRobustBotTakesFewerStrokesThanThePlanner() {
@@ -52,7 +53,7 @@ class RobustBotTest {
         assertTrue(robust <= planner - 0.5, "planner " + planner + ", robust " + robust);
     }
 
-    /** Tree field: measured planner 3.7, robust 3.1; the robust bot must not be worse. */
+    /** Tree field: measured planner 3.6, robust 2.9; the robust bot must not be worse. */
     @Test
     void onTheTreeFieldTheRobustBotIsNoWorse() {
         World trees = ShotNoiseTest.load("tree-field");
@@ -64,7 +65,7 @@ class RobustBotTest {
 
     /**
      * Sine-cross-limit: the ace needs 4.9-5.4 m/s and a fast miss runs out of bounds; the robust
-     * bot lays up along the line when that is cheaper. Measured: planner 4.2, robust 3.7.
+     * bot lays up along the line when that is cheaper. Measured: planner 4.2, robust 2.0.
      */
     @Test
     void nearTheSpeedLimitTheRobustBotLaysUpAndGainsStrokes() {
@@ -72,7 +73,38 @@ class RobustBotTest {
         double planner = meanStrokes("planner", slope, 10), robust = meanStrokes("robust", slope, 10);
         System.out.printf("sine-cross-limit, velocity noise 0.05 m/s, 10 seeds: planner %.2f, robust %.2f mean strokes%n",
                 planner, robust);
-        assertTrue(robust <= planner - 0.3, "planner " + planner + ", robust " + robust);
+        assertTrue(robust <= planner - 1, "planner " + planner + ", robust " + robust);
+    }
+
+    /**
+     * Maze B with hills and pools: the planner's lay-ups beside a pool drown under the noise; the
+     * robust bot re-chooses a lay-up that is lost a quarter of the time or more. Measured: planner
+     * 5.0, robust 3.9.
+     */
+    @Test
+    void aLayUpThatOftenDrownsIsReplaced() {
+        World maze = ShotNoiseTest.load("maze-b-hills");
+        double planner = meanStrokes("planner", maze, 10), robust = meanStrokes("robust", maze, 10);
+        System.out.printf("maze-b-hills, velocity noise 0.05 m/s, 10 seeds: planner %.2f, robust %.2f mean strokes%n",
+                planner, robust);
+        assertTrue(robust <= planner - 0.5, "planner " + planner + ", robust " + robust);
+    }
+
+    /**
+     * From the start of sine-cross-limit the planner's ace (about 5 m/s) runs out of bounds past
+     * the hole on more than half of the draws; the robust bot plays a softer shot that stays in
+     * play (noiseless), and the same request gives the same shot.
+     */
+    @Test
+    void itTradesAnAceThatRunsOutForASaferShotAndIsDeterministic() {
+        World slope = ShotNoiseTest.load("sine-cross-limit");
+        double x = slope.course().start().x(), y = slope.course().start().y();
+        Shot planner = Bots.create("planner").nextShot(new BotRequest(new CountingSimulator(slope), x, y, 0, 9, NOISE));
+        Shot robust = Bots.create("robust").nextShot(new BotRequest(new CountingSimulator(slope), x, y, 0, 9, NOISE));
+        Shot again = Bots.create("robust").nextShot(new BotRequest(new CountingSimulator(slope), x, y, 0, 9, NOISE));
+        assertEquals(robust, again);
+        assertTrue(robust.speed() < planner.speed() - 0.2, "planner " + planner.speed() + ", robust " + robust.speed());
+        assertFalse(new CountingSimulator(slope).simulate(x, y, robust).outcome().isPenalty());
     }
 
     @Test
