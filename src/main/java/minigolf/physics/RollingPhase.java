@@ -134,6 +134,7 @@ final class RollingPhase {
 
     private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         BallState b = ball;
+        RollingTrial tr = trial;
         if (kind == RollingStep.Kind.INTEGRATOR && takesOffWithin(tau, a1x, a1y)) {
             // The ground falls away faster than gravity can pull the ball down: it flies this step,
             // from where the ground begins to curve away too fast (found by bisection). Decided
@@ -141,50 +142,50 @@ final class RollingPhase {
             launchWithin(tau, a1x, a1y);
             return;
         }
-        if (!(trial.holds(tau) && kind == RollingStep.Kind.INTEGRATOR)) trial.run(tau, kind, a1x, a1y);
-        if (!Double.isFinite(trial.nx + trial.ny + trial.nvx + trial.nvy)) throw NonFiniteMotionException.motion(b.x, b.y);
+        if (!(tr.holds(tau) && kind == RollingStep.Kind.INTEGRATOR)) tr.run(tau, kind, a1x, a1y);
+        if (!Double.isFinite(tr.nx + tr.ny + tr.nvx + tr.nvy)) throw NonFiniteMotionException.motion(b.x, b.y);
         // A stop step ends at rest, and so does a slow step in which friction held the ball.
         boolean stopping = kind == RollingStep.Kind.STOP
-                || (kind == RollingStep.Kind.SLOW && trial.nvx == 0 && trial.nvy == 0);
+                || (kind == RollingStep.Kind.SLOW && tr.nvx == 0 && tr.nvy == 0);
         double endTau = tau;
-        Outcome event = locate.hazardAt(trial.nx, trial.ny);
+        Outcome event = locate.hazardAt(tr.nx, tr.ny);
         if (event != null) {
             endTau = locate.hazard(tau, kind, a1x, a1y);
-            trial.run(endTau, kind, a1x, a1y);
-            event = locate.hazardAt(trial.nx, trial.ny);
+            tr.run(endTau, kind, a1x, a1y);
+            event = locate.hazardAt(tr.nx, tr.ny);
         }
         boolean leaves = false;
-        if (lean != null && lean.active() && !lean.touches(trial.nx, trial.ny)) {
+        if (lean != null && lean.active() && !lean.touches(tr.nx, tr.ny)) {
             // Past the end of the obstacle it leans on: the step ends there, and it rolls on free.
             endTau = locate.obstacleEnd(lean, endTau, kind, a1x, a1y);
-            trial.run(endTau, kind, a1x, a1y);
+            tr.run(endTau, kind, a1x, a1y);
             stopping = false;
             event = null;
             leaves = true;
         }
         boolean collided = false;
         if (scene != null && paths.sweep(b.x, b.y, b.h + ballRadius, b.vx, b.vy, 0,
-                trial.nx, trial.ny, 0, trial.nvx, trial.nvy, 0, endTau, true)) {
+                tr.nx, tr.ny, 0, tr.nvx, tr.nvy, 0, endTau, true)) {
             // The ball reaches an obstacle first: the step ends there (on the swept path).
             endTau *= paths.contactAt;
-            trial.run(endTau, kind, a1x, a1y);
-            trial.nx = paths.contactX;
-            trial.ny = paths.contactY;
+            tr.run(endTau, kind, a1x, a1y);
+            tr.nx = paths.contactX;
+            tr.ny = paths.contactY;
             stopping = false;
             event = null;
             collided = true;
             leaves = false;
         }
-        double speed1 = stopping && event == null ? 0 : Math.sqrt(trial.nvx * trial.nvx + trial.nvy * trial.nvy);
+        double speed1 = stopping && event == null ? 0 : Math.sqrt(tr.nvx * tr.nvx + tr.nvy * tr.nvy);
         boolean pathEndsHere = stopping || event != null || collided;
-        if (hole.captureRule && hole.captures(trial.nx, trial.ny, speed0, speed1, endTau, pathEndsHere)) {
+        if (hole.captureRule && hole.captures(tr.nx, tr.ny, speed0, speed1, endTau, pathEndsHere)) {
             return;
         }
         b.markStepStart();
-        b.x = trial.nx;
-        b.y = trial.ny;
-        b.vx = stopping && event == null ? 0 : trial.nvx;
-        b.vy = stopping && event == null ? 0 : trial.nvy;
+        b.x = tr.nx;
+        b.y = tr.ny;
+        b.vx = stopping && event == null ? 0 : tr.nvx;
+        b.vy = stopping && event == null ? 0 : tr.nvy;
         b.t += endTau;
         b.steps++;
         b.pieceTime = endTau;

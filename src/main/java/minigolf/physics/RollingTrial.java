@@ -31,22 +31,26 @@ final class RollingTrial {
     /** A sub-step of length tau of the given kind from the ball's state into n*. */
     void run(double tau, RollingStep.Kind kind, double a1x, double a1y) {
         held = false;
-        rolling.from(ball.x, ball.y, ball.vx, ball.vy, ball.hx, ball.hy, ball.muK);
-        rolling.advance(tau, kind, a1x, a1y);
-        nx = rolling.nx;
-        ny = rolling.ny;
-        nvx = rolling.nvx;
-        nvy = rolling.nvy;
+        BallState b = ball;
+        RollingStep r = rolling;
+        r.from(b.x, b.y, b.vx, b.vy, b.hx, b.hy, b.muK);
+        r.advance(tau, kind, a1x, a1y);
+        nx = r.nx;
+        ny = r.ny;
+        nvx = r.nvx;
+        nvy = r.nvy;
     }
 
     /** The step control's length for the coming RK4 step (at most tau); n* then hold that step. */
     double controlledLength(double tau, double a1x, double a1y) {
-        rolling.from(ball.x, ball.y, ball.vx, ball.vy, ball.hx, ball.hy, ball.muK);
+        BallState b = ball;
+        RollingStep r = rolling;
+        r.from(b.x, b.y, b.vx, b.vy, b.hx, b.hy, b.muK);
         double length = control.length(tau, a1x, a1y);
-        nx = rolling.nx;
-        ny = rolling.ny;
-        nvx = rolling.nvx;
-        nvy = rolling.nvy;
+        nx = r.nx;
+        ny = r.ny;
+        nvx = r.nvx;
+        nvy = r.nvy;
         held = true;
         heldTau = length;
         return length;

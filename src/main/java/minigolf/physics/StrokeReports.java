@@ -21,7 +21,10 @@ final class StrokeReports {
 
     /** The ball's current state, to the listener. */
     void state() {
-        if (listener != null) listener.onState(ball.t, ball.x, ball.y, ball.z, ball.vx, ball.vy, ball.verticalSpeed());
+        TrajectoryListener l = listener;
+        if (l == null) return;
+        BallState b = ball;
+        l.onState(b.t, b.x, b.y, b.z, b.vx, b.vy, b.verticalSpeed());
     }
 
     /** The ball's current place with a velocity of exactly zero (a ball dropping into the hole). */
