@@ -31,6 +31,10 @@ final class RollingPhase {
     private final double maxTime;
     /** Whether the course has friction zones, whose edges cut steps. */
     private final boolean zoned;
+    /** Whether RK4's error control chooses the steps' lengths. */
+    private final boolean controlled;
+    /** Whether the hole's capture rule is checked along every step. */
+    private final boolean captureRule;
 
     RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepLocator locate,
                  RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy, CollisionScene scene,
@@ -54,6 +58,8 @@ final class RollingPhase {
         this.ballRadius = ballRadius;
         this.maxTime = maxTime;
         this.zoned = zoned;
+        this.controlled = trial.controlled();
+        this.captureRule = hole.captureRule;
     }
 
     /** One rolling piece of at most tau seconds; returns the time it took. */
@@ -105,14 +111,14 @@ final class RollingPhase {
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
             // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
             // in a step. Such steps treat friction implicitly (RollingStep.Kind.SLOW).
-            double maxChange = gravity * (slope + b.muK) * tau * (trial.controlled() ? StepControl.SLOW_FRACTION : 1);
+            double maxChange = gravity * (slope + b.muK) * tau * (controlled ? StepControl.SLOW_FRACTION : 1);
             if (decelerationAlongV > 0 && speed <= maxChange) {
                 finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
                 return b.pieceTime;
             }
         }
         double whole = tau;
-        if (trial.controlled()) tau = trial.controlledLength(tau, a1x, a1y);
+        if (controlled) tau = trial.controlledLength(tau, a1x, a1y);
         b.pieceTime = tau;
         finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
         if (tau < whole && !b.resume && b.outcome == null) {
@@ -178,7 +184,7 @@ final class RollingPhase {
         }
         double speed1 = stopping && event == null ? 0 : Math.sqrt(tr.nvx * tr.nvx + tr.nvy * tr.nvy);
         boolean pathEndsHere = stopping || event != null || collided;
-        if (hole.captureRule && hole.captures(tr.nx, tr.ny, speed0, speed1, endTau, pathEndsHere)) {
+        if (captureRule && hole.captures(tr.nx, tr.ny, speed0, speed1, endTau, pathEndsHere)) {
             return;
         }
         b.markStepStart();

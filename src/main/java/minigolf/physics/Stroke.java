@@ -136,22 +136,23 @@ public final class Stroke {
 
     /** Advances the ball by one step (or ends the stroke). Does nothing once finished. */
     public void step() {
-        if (ball.outcome != null) return;
+        BallState b = ball;
+        if (b.outcome != null) return;
         double remaining = dt;
         int pieces = 0;
         while (pieces < MAX_PIECES) {
-            ball.resume = false;
-            ball.subPiece = false;
-            remaining -= ball.flying ? flight.piece(remaining) : rolling.piece(remaining);
-            if (!ball.resume || ball.outcome != null || remaining <= 1e-9 * dt) return;
+            b.resume = false;
+            b.subPiece = false;
+            remaining -= b.flying ? flight.piece(remaining) : rolling.piece(remaining);
+            if (!b.resume || b.outcome != null || remaining <= 1e-9 * dt) return;
             // A sub-step the error control asked for is no contact: it does not count towards a wedge.
-            if (!ball.subPiece) pieces++;
+            if (!b.subPiece) pieces++;
         }
         // Wedged: more contacts in one step than we follow. The ball stops where it is for the rest of it.
-        ball.t += remaining;
-        ball.vx = 0;
-        ball.vy = 0;
-        ball.vz = 0;
+        b.t += remaining;
+        b.vx = 0;
+        b.vy = 0;
+        b.vz = 0;
     }
 
     /**
