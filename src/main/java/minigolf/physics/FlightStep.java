@@ -5,7 +5,7 @@ import minigolf.terrain.Terrain;
 /**
  * A flying ball's sub-steps: gravity and quadratic drag, a = -g z - k |v| v, integrated with RK4
  * (exact on the parabola without drag) from a start state into (fx, fy, fz, fvx, fvy, fvz), and
- * where within a step it comes down on the ground or the water's surface. {@link Stroke} owns the
+ * where within a step it comes down on the ground or the water's surface. {@link BallState} holds the
  * ball's state; this class only integrates.
  */
 final class FlightStep {

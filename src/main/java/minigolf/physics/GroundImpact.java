@@ -4,7 +4,7 @@ package minigolf.physics;
  * A flying ball meeting the ground (docs/physics.md, "Flight"): normal speed times the
  * restitution e (the course's groundRestitution or Penner's turf model), tangential speed reduced
  * by Coulomb impact friction (at most to 5/7, where the ball rolls). A bounce lower than a 1 mm
- * hop settles the ball into rolling. {@link Stroke} applies the result.
+ * hop settles the ball into rolling. {@link FlightPhase} applies the result.
  */
 final class GroundImpact {
     /** Coulomb friction of a landing ball on turf; the tangential loss is at most 2/7 (the ball then rolls). */

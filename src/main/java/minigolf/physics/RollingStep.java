@@ -6,7 +6,7 @@ import minigolf.terrain.Terrain;
  * The rolling equations and one sub-step of them, from a start state into (nx, ny, nvx, nvy).
  * Equations (docs/course-format.md): classic a = -g grad h - mu_k g v/|v|; complete
  * a = -g grad h/D - mu_k g/sqrt(D) * v/sqrt(|v|^2 + (grad h . v)^2) with D = 1 + |grad h|^2.
- * {@link Stroke} owns the ball's state; this class only integrates.
+ * {@link BallState} holds the ball's state; this class only integrates.
  */
 final class RollingStep {
     /** How a step advances the ball. */

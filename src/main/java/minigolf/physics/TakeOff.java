@@ -4,7 +4,7 @@ import minigolf.terrain.Terrain;
 
 /**
  * Whether and when a rolling ball leaves the ground within a step (docs/physics.md, "Taking off"),
- * from the step's start state given by {@link #from}. {@link Stroke} launches the ball.
+ * from the step's start state given by {@link #from}. {@link RollingPhase} launches the ball.
  */
 final class TakeOff {
     /** How much lower than a free-falling ball the ground must be at a step's end for the ball to take off. */

@@ -1,0 +1,251 @@
+package minigolf.physics;
+
+import minigolf.collision.CollisionScene;
+import minigolf.terrain.Terrain;
+
+/**
+ * The rolling pieces of a stroke. A piece decides what kind of step the ball takes (none at rest,
+ * the analytic stop, the slow implicit step, or the integrator's, error-controlled with RK4),
+ * integrates it as a trial, cuts it at the first thing that happens inside it (take-off, a zone's
+ * edge, a hazard, the end of an obstacle it leans on, an obstacle, the hole) and commits it, which
+ * the energy guard may still rewrite.
+ */
+final class RollingPhase {
+    private final BallState ball;
+    private final StrokeReports reports;
+    private final RollingStep rolling;
+    private final RollingTrial trial;
+    private final StepLocator locate;
+    private final RestRule rest;
+    private final TakeOff takeOff;
+    private final HoleRules hole;
+    private final EnergyGuard energy;
+    /** The obstacles and the ball settled against one; null without obstacles. */
+    private final CollisionScene scene;
+    private final Leaning lean;
+    private final PathSweep paths;
+    private final ObstacleContact contact;
+    private final Terrain terrain;
+    private final double gravity;
+    private final double ballRadius;
+    private final double maxTime;
+    /** Whether the course has friction zones, whose edges cut steps. */
+    private final boolean zoned;
+    /** Whether RK4's error control chooses the steps' lengths. */
+    private final boolean controlled;
+    /** Whether the hole's capture rule is checked along every step. */
+    private final boolean captureRule;
+
+    RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepLocator locate,
+                 RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy, CollisionScene scene,
+                 Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain, double gravity,
+                 double ballRadius, double maxTime, boolean zoned) {
+        this.ball = ball;
+        this.reports = reports;
+        this.rolling = rolling;
+        this.trial = trial;
+        this.locate = locate;
+        this.rest = rest;
+        this.takeOff = takeOff;
+        this.hole = hole;
+        this.energy = energy;
+        this.scene = scene;
+        this.lean = lean;
+        this.paths = paths;
+        this.contact = contact;
+        this.terrain = terrain;
+        this.gravity = gravity;
+        this.ballRadius = ballRadius;
+        this.maxTime = maxTime;
+        this.zoned = zoned;
+        this.controlled = trial.controlled();
+        this.captureRule = hole.captureRule;
+    }
+
+    /** One rolling piece of at most tau seconds; returns the time it took. */
+    double piece(double tau) {
+        BallState b = ball;
+        if (b.t >= maxTime) {
+            reports.finish(Outcome.TIMEOUT, b.x, b.y, b.z);
+            return 0;
+        }
+        double speed = Math.sqrt(b.vx * b.vx + b.vy * b.vy);
+        // A ball leaning on an obstacle leaves it at rest, where the ground no longer pulls it
+        // towards it, or where the obstacle is out of reach (its end).
+        boolean leaning = lean != null && lean.active();
+        if (leaning && (speed == 0 || !lean.holds(b.x, b.y, b.hx, b.hy))) {
+            lean.release();
+            leaning = false;
+        }
+        // A ball the rest rule sends back down (it turned faster than REST_SPEED) is not at rest
+        // when an energy cut leaves it at v = 0 at its turn: it starts down again, once.
+        boolean sentBack = speed == 0 && rest.rollsBack();
+        if (sentBack) rest.forget();
+        if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.hx, b.hy, b.muK)) {
+            reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : Outcome.STOPPED, b.x, b.y, b.z);
+            return 0;
+        }
+        b.pieceTime = tau;
+        rolling.acceleration(b.hx, b.hy, b.muK, b.vx, b.vy);
+        double a1x = rolling.ax, a1y = rolling.ay;
+        if (speed > 0) {
+            double decelerationAlongV = -(a1x * b.vx + a1y * b.vy) / speed;
+            // Leaning, the rule sees the ground without the part of its slope the obstacle takes.
+            double ghx = b.hx, ghy = b.hy;
+            if (leaning) {
+                lean.effective(b.hx, b.hy);
+                ghx = lean.gx;
+                ghy = lean.gy;
+            }
+            double slope = Math.sqrt(ghx * ghx + ghy * ghy);
+            if (decelerationAlongV > 0) {
+                double stop = rest.stopWithin(tau, speed, decelerationAlongV, slope, b.vx, b.vy, ghx, ghy, b.muK);
+                if (stop >= 0) {
+                    finishStep(stop, RollingStep.Kind.STOP, a1x, a1y, speed);
+                    return b.pieceTime;
+                }
+            } else {
+                rest.forget();
+            }
+            // A slow, braking ball: the friction direction would flip inside the integrator's
+            // stages (they can cancel and make the ball creep for ever) and, explicit, it would
+            // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
+            // in a step. Such steps treat friction implicitly (RollingStep.Kind.SLOW).
+            double maxChange = gravity * (slope + b.muK) * tau * (controlled ? StepControl.SLOW_FRACTION : 1);
+            if (decelerationAlongV > 0 && speed <= maxChange) {
+                finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
+                return b.pieceTime;
+            }
+        }
+        double whole = tau;
+        if (controlled) tau = trial.controlledLength(tau, a1x, a1y);
+        b.pieceTime = tau;
+        finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
+        if (tau < whole && !b.resume && b.outcome == null) {
+            b.resume = true;
+            b.subPiece = true;
+        }
+        return b.pieceTime;
+    }
+
+    /** Completes a step of length tau of the given kind, with events, and commits it. */
+    private void finishStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
+        try {
+            if (zoned && kind == RollingStep.Kind.INTEGRATOR) tau = locate.zoneEdge(tau, a1x, a1y);
+            commitStep(tau, kind, a1x, a1y, speed0);
+        } finally {
+            rolling.frozenMuK = Double.NaN;
+        }
+    }
+
+    private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
+        BallState b = ball;
+        RollingTrial tr = trial;
+        if (kind == RollingStep.Kind.INTEGRATOR && takesOffWithin(tau, a1x, a1y)) {
+            // The ground falls away faster than gravity can pull the ball down: it flies this step,
+            // from where the ground begins to curve away too fast (found by bisection). Decided
+            // before water and the bounds, which a flying ball only meets where it comes down.
+            launchWithin(tau, a1x, a1y);
+            return;
+        }
+        if (!(tr.holds(tau) && kind == RollingStep.Kind.INTEGRATOR)) tr.run(tau, kind, a1x, a1y);
+        if (!Double.isFinite(tr.nx + tr.ny + tr.nvx + tr.nvy)) throw NonFiniteMotionException.motion(b.x, b.y);
+        // A stop step ends at rest, and so does a slow step in which friction held the ball.
+        boolean stopping = kind == RollingStep.Kind.STOP
+                || (kind == RollingStep.Kind.SLOW && tr.nvx == 0 && tr.nvy == 0);
+        double endTau = tau;
+        Outcome event = locate.hazardAt(tr.nx, tr.ny);
+        if (event != null) {
+            endTau = locate.hazard(tau, kind, a1x, a1y);
+            tr.run(endTau, kind, a1x, a1y);
+            event = locate.hazardAt(tr.nx, tr.ny);
+        }
+        boolean leaves = false;
+        if (lean != null && lean.active() && !lean.touches(tr.nx, tr.ny)) {
+            // Past the end of the obstacle it leans on: the step ends there, and it rolls on free.
+            endTau = locate.obstacleEnd(lean, endTau, kind, a1x, a1y);
+            tr.run(endTau, kind, a1x, a1y);
+            stopping = false;
+            event = null;
+            leaves = true;
+        }
+        boolean collided = false;
+        if (scene != null && paths.sweep(b.x, b.y, b.h + ballRadius, b.vx, b.vy, 0,
+                tr.nx, tr.ny, 0, tr.nvx, tr.nvy, 0, endTau, true)) {
+            // The ball reaches an obstacle first: the step ends there (on the swept path).
+            endTau *= paths.contactAt;
+            tr.run(endTau, kind, a1x, a1y);
+            tr.nx = paths.contactX;
+            tr.ny = paths.contactY;
+            stopping = false;
+            event = null;
+            collided = true;
+            leaves = false;
+        }
+        double speed1 = stopping && event == null ? 0 : Math.sqrt(tr.nvx * tr.nvx + tr.nvy * tr.nvy);
+        boolean pathEndsHere = stopping || event != null || collided;
+        if (captureRule && hole.captures(tr.nx, tr.ny, speed0, speed1, endTau, pathEndsHere)) {
+            return;
+        }
+        b.markStepStart();
+        b.x = tr.nx;
+        b.y = tr.ny;
+        b.vx = stopping && event == null ? 0 : tr.nvx;
+        b.vy = stopping && event == null ? 0 : tr.nvy;
+        b.t += endTau;
+        b.steps++;
+        b.pieceTime = endTau;
+        if (event != null) {
+            b.z = terrain.height(b.x, b.y);
+            reports.state();
+            reports.finish(event, b.x, b.y, b.z);
+            return;
+        }
+        b.sampleGround();
+        b.z = b.h;
+        if (collided) {
+            contact.whileRolling();
+            reports.state();
+            b.resume = true;
+            return;
+        }
+        if (leaves) {
+            lean.release();
+            reports.state();
+            b.resume = true;
+            b.subPiece = true;
+            return;
+        }
+        if (!stopping && !energy.dissipates(kind, a1x, a1y)) return;
+        reports.state();
+    }
+
+    /** Whether the ball leaves the ground within the coming tau (docs/physics.md, "Taking off"). */
+    private boolean takesOffWithin(double tau, double a1x, double a1y) {
+        BallState b = ball;
+        takeOff.from(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, b.muK);
+        return takeOff.takesOff(tau, a1x, a1y);
+    }
+
+    /** Rolls until the moment of take-off within the coming tau, then launches the ball from there. */
+    private void launchWithin(double tau, double a1x, double a1y) {
+        BallState b = ball;
+        double rolled = takeOff.time(tau, a1x, a1y);
+        if (rolled > 0) {
+            trial.run(rolled, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+            b.x = trial.nx;
+            b.y = trial.ny;
+            b.vx = trial.nvx;
+            b.vy = trial.nvy;
+            b.t += rolled;
+            b.sampleGround();
+        }
+        b.z = b.h;
+        b.vz = b.hx * b.vx + b.hy * b.vy;
+        b.flying = true;
+        if (lean != null) lean.release();
+        reports.event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
+        b.pieceTime = rolled;
+        b.resume = true;
+    }
+}
