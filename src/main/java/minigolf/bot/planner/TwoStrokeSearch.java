@@ -1,9 +1,9 @@
 package minigolf.bot.planner;
 
 import java.util.ArrayList;
-import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
+import java.util.Set;
 import minigolf.bot.Shot;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
@@ -67,8 +67,8 @@ final class TwoStrokeSearch {
         if (!affordable()) return null;
         s.sim.phase("two-stroke search");
         List<Landing> landings = new ArrayList<>();
-        Map<Long, Boolean> cells = new HashMap<>();
-        cells.put(key(s.px, s.py), true);
+        Set<Long> cells = new HashSet<>();
+        cells.add(key(s.px, s.py));
         double vMax = s.sim.maxSpeed();
         double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
         for (int d = 0; d < DIRECTIONS; d++) {
@@ -79,7 +79,7 @@ final class TwoStrokeSearch {
                 ShotResult r = s.sim.simulate(s.px, s.py, shot);
                 if (r.outcome() == Outcome.HOLED) return shot;
                 if (r.outcome() != Outcome.STOPPED) continue;
-                if (cells.putIfAbsent(key(r.endX(), r.endY()), true) != null) continue;
+                if (!cells.add(key(r.endX(), r.endY()))) continue;
                 landings.add(new Landing(shot, r.endX(), r.endY(), promise(r.endX(), r.endY())));
             }
         }
