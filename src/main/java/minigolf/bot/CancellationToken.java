@@ -50,6 +50,11 @@ public final class CancellationToken {
         return limitNanos >= 0 && System.nanoTime() - deadline >= 0;
     }
 
+    /** Seconds until the time limit ends (at most 0 once it has), or +infinity when there is none. */
+    public double secondsLeft() {
+        return limitNanos >= 0 ? (deadline - System.nanoTime()) / 1e9 : Double.POSITIVE_INFINITY;
+    }
+
     /** The time limit in seconds, or NaN when there is none. */
     public double timeLimitSeconds() {
         return limitNanos >= 0 ? limitNanos / 1e9 : Double.NaN;

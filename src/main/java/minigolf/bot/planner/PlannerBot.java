@@ -42,7 +42,8 @@ import minigolf.physics.World;
  * The stages are classes of their own ({@link HoleInOne}: 1-3, {@link TwoStrokes}: 4,
  * {@link Layup}: 5) sharing one {@link Stroke} (the ball, the probes so far, the solvers); this
  * class holds what lasts between strokes (the maps, the stroke plan, the look-ahead's solutions,
- * the positions played from).
+ * the positions played from). {@code planner-aces} ends its two-stroke stages with a bounded brute-force
+ * search ({@link TwoStrokeSearch}) where the budget is large.
  */
 public final class PlannerBot extends SearchBot {
 
@@ -190,6 +191,10 @@ public final class PlannerBot extends SearchBot {
                     shot = mapLayups.deepLookAhead(MapTwoStrokes.DEEP);
                     if (shot != null) return shot;
                 }
+                // Last: many landings, each with a brute-force putt search (only where the budget is
+                // large); on later strokes too (tuning 777-27: 4 -> 3), each within its share of the time left.
+                shot = new TwoStrokeSearch(stroke, onePuttMap(stroke)).search();
+                if (shot != null) return shot;
             }
         }
         sim.phase("lay-up");

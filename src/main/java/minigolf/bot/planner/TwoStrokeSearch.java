@@ -1,0 +1,117 @@
+package minigolf.bot.planner;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import minigolf.bot.Shot;
+import minigolf.physics.Outcome;
+import minigolf.physics.ShotResult;
+
+/**
+ * {@code planner-aces}' last try for two strokes on the first stroke, when every cheaper stage
+ * found none (issue 13): a bounded brute-force search of its own. The two-stroke games the stages
+ * miss often hole from one small region only (a putt off cushions near the speed limit), which no
+ * lay-up aimed by the maps lands in; trying many landings is what finds them. A grid of first
+ * strokes all round ({@link #DIRECTIONS} x {@link #SPEEDS}; cushions make the bank shots), their
+ * rest points merged into {@link #CELL} cells so each landing area is tried once, the cells ordered
+ * by promise (marked on the {@link OnePuttMap}, the cheapest putt first; then nearest the hole on
+ * the distance field), and from each a {@link DenseSweep} for the putt. The first landing from which
+ * one putt holes is the shot; its putt is kept for the next stroke.
+ *
+ * <p>Bounded: at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of the budget to the
+ * strokes after it (so with the game's usual budget of 20,000 it does not run), and at most
+ * {@link #TIME_SHARE} of the time the token has left (and {@link #MAX_SECONDS}); every
+ * simulation checks the token, so a cancel stops it.
+ */
+final class TwoStrokeSearch {
+    static final int DIRECTIONS = 180;
+    /** First-stroke speeds: k / SPEEDS of the maximum, k from {@link #SLOWEST} to SPEEDS. */
+    static final int SPEEDS = 16;
+    static final int SLOWEST = 2;
+    static final double CELL = 0.25;
+    static final long MAX_SIMULATIONS = 300_000;
+    static final long RESERVE = 20_000;
+    /** Below this many simulations to spend the search does not start. */
+    static final long MIN_SIMULATIONS = 10_000;
+    static final double TIME_SHARE = 0.4;
+    static final double MAX_SECONDS = 30;
+
+    /** A landing: the first shot that rested in the cell, where exactly, and its promise. */
+    record Landing(Shot shot, double x, double y, double promise) {
+    }
+
+    private final Stroke s;
+    private final OnePuttMap map;
+    private final long limit;
+    private final long deadline;
+    /** Landings whose putt sweep ran, for tests and tools. */
+    int tried;
+
+    TwoStrokeSearch(Stroke s, OnePuttMap map) {
+        this.s = s;
+        this.map = map;
+        long start = s.sim.count();
+        this.limit = start + Math.min(MAX_SIMULATIONS, s.sim.remaining() - RESERVE);
+        double seconds = Math.min(MAX_SECONDS, TIME_SHARE * s.sim.token().secondsLeft());
+        this.deadline = System.nanoTime() + (long) (seconds * 1e9);
+    }
+
+    /** Whether the budget left leaves room for the search and the strokes after it. */
+    boolean affordable() {
+        return limit - s.sim.count() >= MIN_SIMULATIONS;
+    }
+
+    /** The first stroke of a two-stroke game (its putt kept in {@code s.solved}), a hole-in-one, or null. */
+    Shot search() {
+        if (!affordable()) return null;
+        s.sim.phase("two-stroke search");
+        List<Landing> landings = new ArrayList<>();
+        Set<Long> cells = new HashSet<>();
+        cells.add(key(s.px, s.py));
+        double vMax = s.sim.maxSpeed();
+        double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
+        for (int d = 0; d < DIRECTIONS; d++) {
+            double angle = holeAngle + d * 2 * Math.PI / DIRECTIONS;
+            for (int k = SPEEDS; k >= SLOWEST; k--) {
+                if (!inBounds()) return null;
+                Shot shot = s.sim.limit(Shot.polar(angle, vMax * k / SPEEDS));
+                ShotResult r = s.sim.simulate(s.px, s.py, shot);
+                if (r.outcome() == Outcome.HOLED) return shot;
+                if (r.outcome() != Outcome.STOPPED) continue;
+                if (!cells.add(key(r.endX(), r.endY()))) continue;
+                landings.add(new Landing(shot, r.endX(), r.endY(), promise(r.endX(), r.endY())));
+            }
+        }
+        landings.sort((a, b) -> Double.compare(a.promise(), b.promise()));
+        s.sim.phase("two-stroke search putts");
+        for (Landing l : landings) {
+            if (!inBounds()) return null;
+            Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, l.x(), l.y(), s.plan);
+            tried++;
+            Shot putt = new PuttSweep(next).holeInOne();
+            if (putt != null) {
+                s.solved.add(new Solved(s.world, l.x(), l.y(), putt));
+                return l.shot();
+            }
+        }
+        return null;
+    }
+
+    /** Lower is tried first: marked on the one-putt map (by its putt's cost), then by the path's length to the hole. */
+    private double promise(double x, double y) {
+        double cost = map == null ? Double.POSITIVE_INFINITY : map.cost(x, y);
+        if (Double.isFinite(cost)) return cost;
+        double d = s.field.at(x, y);
+        return 1e3 + (Double.isFinite(d) ? d : 1e3);
+    }
+
+    private boolean inBounds() {
+        return s.sim.count() < limit && System.nanoTime() - deadline < 0;
+    }
+
+    private static long key(double x, double y) {
+        long cx = (long) Math.floor(x / CELL), cy = (long) Math.floor(y / CELL);
+        return (cx << 32) ^ (cy & 0xffffffffL);
+    }
+}
