@@ -158,15 +158,9 @@ final class MapTwoStrokes {
     final class Runs implements TrajectoryListener {
         private final Shot shot;
         private final double v0;
-        private double lastX, lastY, length, lastV2;
-        /**
-         * The speed² a shot in this direction needs to stop here, worked out forwards from what
-         * this shot lost on the way (friction, slopes: the same on flat ground for any speed), each
-         * cushion dividing what comes after it by the share of the speed² it keeps ({@code kept}).
-         */
-        private double need, kept = 1;
-        /** A cushion since the last step: the speed² just before and just after it. */
-        private double before2 = Double.NaN, after2;
+        private double lastX, lastY, length;
+        /** The speed² a shot in this direction needs to stop at each point of the path. */
+        private final StoppingNeed need;
         private int hits;
         /** The current run: its points' path lengths, positions, speeds² needed, cushions. */
         private final List<double[]> run = new ArrayList<>();
@@ -176,7 +170,7 @@ final class MapTwoStrokes {
             this.v0 = shot.speed();
             lastX = s.px;
             lastY = s.py;
-            lastV2 = v0 * v0;
+            need = new StoppingNeed(v0);
         }
 
         @Override
@@ -184,20 +178,11 @@ final class MapTwoStrokes {
             length += Math.hypot(x - lastX, y - lastY);
             lastX = x;
             lastY = y;
-            double v2 = vx * vx + vy * vy;
-            if (Double.isNaN(before2)) {
-                need += (lastV2 - v2) / kept;
-            } else {
-                need += (lastV2 - before2) / kept;
-                kept *= Math.max(after2 / Math.max(before2, 1e-12), 1e-3);
-                need += (after2 - v2) / kept;
-                before2 = Double.NaN;
-            }
-            lastV2 = v2;
+            double needHere = need.step(vx * vx + vy * vy);
             boolean in = map.marked(x, y) && s.grid.hazardClearance(x, y) >= StrokePlan.REST_CLEARANCE
                     && s.grid.clearance(x, y) >= StrokePlan.REST_OBSTACLE_CLEARANCE;
             if (in) {
-                run.add(new double[] {length, x, y, need, hits});
+                run.add(new double[] {length, x, y, needHere, hits});
             } else {
                 close();
             }
@@ -207,8 +192,7 @@ final class MapTwoStrokes {
         public void onEvent(StrokeEvent event) {
             if (event.type() == StrokeEvent.Type.COLLISION) {
                 hits++;
-                if (Double.isNaN(before2)) before2 = event.speedBefore() * event.speedBefore();
-                after2 = event.speedAfter() * event.speedAfter();
+                need.cushion(event.speedBefore(), event.speedAfter());
                 close();
             }
         }

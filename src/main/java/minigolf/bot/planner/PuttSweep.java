@@ -100,28 +100,21 @@ final class PuttSweep {
      */
     private final class Nearest implements TrajectoryListener {
         double best, needThere;
-        private double lastX, lastY, lastV2, need, kept = 1;
-        private double before2 = Double.NaN, after2;
+        private double lastX, lastY;
+        private final StoppingNeed need;
 
         Nearest(Shot shot) {
             lastX = s.px;
             lastY = s.py;
-            lastV2 = shot.speed() * shot.speed();
+            need = new StoppingNeed(shot.speed());
             best = Math.hypot(s.px - s.holeX, s.py - s.holeY);
             best *= best;
         }
 
         @Override
         public void onStep(double t, double x, double y, double vx, double vy) {
-            double v2 = vx * vx + vy * vy;
-            if (Double.isNaN(before2)) {
-                need += (lastV2 - v2) / kept;
-            } else {
-                need += (lastV2 - before2) / kept;
-                kept *= Math.max(after2 / Math.max(before2, 1e-12), 1e-3);
-                need += (after2 - v2) / kept;
-                before2 = Double.NaN;
-            }
+            double v2 = vx * vx + vy * vy, previousV2 = need.lastV2();
+            double needHere = need.step(v2);
             // The nearest point on the step's segment; the need interpolated along it.
             double dx = x - lastX, dy = y - lastY, len2 = dx * dx + dy * dy;
             double f = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((s.holeX - lastX) * dx + (s.holeY - lastY) * dy) / len2));
@@ -129,18 +122,16 @@ final class PuttSweep {
             double d = qx * qx + qy * qy;
             if (d < best) {
                 best = d;
-                needThere = need - (1 - f) * (lastV2 - v2) / kept;
+                needThere = needHere - (1 - f) * (previousV2 - v2) / need.kept();
             }
             lastX = x;
             lastY = y;
-            lastV2 = v2;
         }
 
         @Override
         public void onEvent(StrokeEvent event) {
             if (event.type() == StrokeEvent.Type.COLLISION) {
-                if (Double.isNaN(before2)) before2 = event.speedBefore() * event.speedBefore();
-                after2 = event.speedAfter() * event.speedAfter();
+                need.cushion(event.speedBefore(), event.speedAfter());
             }
         }
     }
