@@ -328,7 +328,8 @@ public final class EditorApp {
     private void drawFrame(int fw, int fh) {
         if (message != null && glfwGetTime() > messageUntil) message = null;
         renderer.render(camera, fw, fh, time);
-        renderer.renderMinimap(fw - MINIMAP_MARGIN - minimapSize(fw, fh), MINIMAP_TOP, minimapSize(fw, fh), fw, fh);
+        int mini = minimapSize(fw, fh);
+        renderer.renderMinimap(fw - MINIMAP_MARGIN - mini, MINIMAP_TOP, mini, fw, fh);
         glViewport(0, 0, fw, fh);
         uiLayer.newFrame();
         drawMarkers(fw, fh);

@@ -37,13 +37,7 @@ class MapTwoStrokesTest {
         long used = s.sim.count() - before;
         // A bound, not an exact count: 438 measured once the engine's step control was merged (the bound was 420).
         assertTrue(used <= MapTwoStrokes.TRIES * 35, used + " simulations");
-        Simulator engine = new Simulator(w, SimulationSettings.DEFAULT);
-        ShotResult first = engine.simulate(s.px, s.py, layup.vx(), layup.vy());
-        assertEquals(Outcome.STOPPED, first.outcome());
-        Solved putt = s.solved.stream().filter(k -> k.x() == first.endX() && k.y() == first.endY()).findFirst()
-                .orElseThrow(() -> new AssertionError("no putt kept for the lay-up's rest point"));
-        ShotResult second = engine.simulate(first.endX(), first.endY(), putt.shot().vx(), putt.shot().vy());
-        assertEquals(Outcome.HOLED, second.outcome());
+        assertLayUpThenKeptPuttHoles(w, s, layup);
     }
 
     /**
@@ -66,6 +60,11 @@ class MapTwoStrokesTest {
         // At most the dense sweep's cost per lay-up (hills: three speeds all round, its fans and starts).
         long used = s.sim.count() - before;
         assertTrue(used <= MapTwoStrokes.DEEP * 1300, used + " simulations");
+        assertLayUpThenKeptPuttHoles(w, s, layup);
+    }
+
+    /** Replayed on the engine, the lay-up comes to rest and the putt the stage kept for that rest point holes. */
+    private static void assertLayUpThenKeptPuttHoles(World w, Stroke s, Shot layup) {
         Simulator engine = new Simulator(w, SimulationSettings.DEFAULT);
         ShotResult first = engine.simulate(s.px, s.py, layup.vx(), layup.vy());
         assertEquals(Outcome.STOPPED, first.outcome());
