@@ -6,10 +6,8 @@ import minigolf.bot.BotCancelledException;
 import minigolf.bot.BotRequest;
 import minigolf.bot.Bot;
 import minigolf.bot.BudgetExhaustedException;
-import minigolf.bot.CourseMaps;
 import minigolf.bot.Shot;
 import minigolf.bot.planner.PlannerBot;
-import minigolf.bot.planner.StrokePlan;
 import minigolf.physics.World;
 
 /**
@@ -24,7 +22,6 @@ import minigolf.physics.World;
  */
 public final class RobustBot implements Bot {
     private final PlannerBot planner = new PlannerBot();
-    private final CourseMaps maps = new CourseMaps();
     private World valueWorld;
     private NoiseModel valueNoise;
     private ValueMap values;
@@ -87,9 +84,8 @@ public final class RobustBot implements Bot {
     private ValueMap valuesFor(BotRequest request) {
         World world = request.world();
         if (world != valueWorld || !request.noise().equals(valueNoise)) {
-            maps.prepare(world, request.token());
-            values = new ValueMap(world, new StrokePlan(world, maps.grid(), request.token()), maps.toHole(),
-                    request.noise());
+            // The planner's own maps and stroke plan for this course: built once for both.
+            values = new ValueMap(world, planner.strokePlan(request), planner.courseMaps(request).toHole(), request.noise());
             valueWorld = world;
             valueNoise = request.noise();
         }

@@ -215,6 +215,20 @@ public final class PlannerBot extends SearchBot {
         return onePutt;
     }
 
+    /**
+     * The course's grid, distance field and stroke plan for this request's world, as the planner
+     * keeps them between strokes (built if not yet): {@code robust} scores its draws on them.
+     */
+    public CourseMaps courseMaps(BotRequest request) {
+        maps.prepare(request.world(), request.token());
+        return maps;
+    }
+
+    public StrokePlan strokePlan(BotRequest request) {
+        courseMaps(request);
+        return planFor(request.world(), request);
+    }
+
     private StrokePlan planFor(World world, BotRequest request) {
         if (planWorld != world) {
             plan = new StrokePlan(world, maps.grid(), request.token());
