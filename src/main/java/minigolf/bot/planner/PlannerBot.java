@@ -47,7 +47,8 @@ import minigolf.physics.World;
  */
 public final class PlannerBot extends SearchBot {
 
-    private final CourseMaps maps;
+    /** Built at the first request, when the budget decides the search ({@link #chooseSearch}). */
+    private CourseMaps maps;
     /** The positions played from this game: no stroke may lead back to one. */
     private final CycleGuard cycles = new CycleGuard();
     /** Shots the look-ahead found holing from a lay-up's rest point: reused when the ball is there. */
@@ -59,39 +60,67 @@ public final class PlannerBot extends SearchBot {
     private World probeSource;
     private World probeWorld;
 
-    /** Whether the first stroke runs {@link DenseSweep} before settling for two ({@code planner-aces}). */
-    private final boolean denseSweep;
+    /**
+     * From this budget on the planner searches fully (planner-aces' stages and the two-stroke
+     * search), which costs 2,000-7,000 simulations on a bench course and up to 300,000 where the
+     * two-stroke search runs: a small share of such a budget. Below it (the game's and
+     * {@code experiment}'s 20,000) it plays the quick plan; the bench suite's strokes and simulations
+     * are those of the quick plan there.
+     */
+    public static final long FULL_SEARCH_BUDGET = 500_000;
 
-    /** The game's default: no dense sweep (on our suites it finds no new ace and costs simulations). */
+    /** {@code planner-aces}: the full search whatever the budget. */
+    private final boolean alwaysFull;
+    /** Whether this game searches fully: the dense sweep, the one-putt map's two strokes, the two-stroke search. */
+    private boolean denseSweep;
+    /** Null: the friction-aware field with the full search, the plain one without ({@link #chooseSearch}). */
+    private final Boolean frictionAware;
+
+    /** The game's default: the quick plan, or the full search where the budget is large ({@link #FULL_SEARCH_BUDGET}). */
     public PlannerBot() {
         this(false);
     }
 
     /**
-     * {@code planner-aces} routes on the friction-aware field; the default planner on the plain one
-     * (on the tuning tile courses, sand patches, the aware field cost it a stroke on one course of 24
-     * and gained none; planner-aces' strokes were the same with either).
+     * With {@code alwaysFull} ({@code planner-aces}) the full search at any budget. The full search
+     * routes on the friction-aware field, the quick plan on the plain one (on the tuning tile
+     * courses, sand patches, the aware field cost the quick plan a stroke on one course of 24 and
+     * gained none; the full search's strokes were the same with either).
      */
-    public PlannerBot(boolean denseSweep) {
-        this(denseSweep, denseSweep && FRICTION_AWARE);
+    public PlannerBot(boolean alwaysFull) {
+        this.alwaysFull = alwaysFull;
+        this.frictionAware = null;
     }
 
     /** With {@code frictionAware} the distance field weighs each metre by the ground's friction ({@link CourseMaps}). */
-    public PlannerBot(boolean denseSweep, boolean frictionAware) {
-        this.denseSweep = denseSweep;
-        this.maps = new CourseMaps(frictionAware);
+    public PlannerBot(boolean alwaysFull, boolean frictionAware) {
+        this.alwaysFull = alwaysFull;
+        this.frictionAware = frictionAware;
     }
 
-    /** -Dminigolf.plainField=true: planner-aces on the plain field too, for comparison. */
+    /** -Dminigolf.plainField=true: the full search on the plain field too, for comparison. */
     static final boolean FRICTION_AWARE = !Boolean.getBoolean("minigolf.plainField");
+
+    /** At the game's first request: the full search or the quick plan, by the budget the game has. */
+    private void chooseSearch(BotRequest request) {
+        if (maps != null) return;
+        denseSweep = alwaysFull || request.simulator().remaining() >= FULL_SEARCH_BUDGET;
+        maps = new CourseMaps(frictionAware != null ? frictionAware : denseSweep && FRICTION_AWARE);
+    }
+
+    /** Whether this game searches fully (decided at its first request; false before it). */
+    public boolean searchesFully() {
+        return denseSweep;
+    }
 
     @Override
     public String name() {
-        return denseSweep ? "planner-aces" : "planner";
+        return alwaysFull ? "planner-aces" : "planner";
     }
 
     @Override
     protected CountingSimulator.ShotScore scoreFor(BotRequest request) {
+        chooseSearch(request);
         maps.prepare(request.world(), request.token());
         DistanceField field = maps.toHole();
         return r -> {
@@ -113,6 +142,7 @@ public final class PlannerBot extends SearchBot {
         World world = request.world();
         CountingSimulator sim = request.simulator();
         double px = request.ballX(), py = request.ballY();
+        chooseSearch(request);
         maps.prepare(world, request.token());
         cycles.visit(world, px, py, request.strokesTaken());
         for (Solved k : solved) {
@@ -220,6 +250,7 @@ public final class PlannerBot extends SearchBot {
      * keeps them between strokes (built if not yet): {@code robust} scores its draws on them.
      */
     public CourseMaps courseMaps(BotRequest request) {
+        chooseSearch(request);
         maps.prepare(request.world(), request.token());
         return maps;
     }
