@@ -193,7 +193,22 @@ public final class PlannerBot extends SearchBot {
                 }
                 // Last: many landings, each with a brute-force putt search (only where the budget is
                 // large); on later strokes too (tuning 777-27: 4 -> 3), each within its share of the time left.
-                shot = new TwoStrokeSearch(stroke, onePuttMap(stroke)).search();
+                TwoStrokeSearch search = new TwoStrokeSearch(stroke, onePuttMap(stroke));
+                shot = search.search();
+                if (shot != null) return shot;
+                // No two strokes: of the search's landings, one from which two are found (ThreeStrokes).
+                shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(search.landings());
+                if (shot != null) return shot;
+            }
+        }
+        if (denseSweep && request.strokesTaken() == 0 && Double.isFinite(pathLength) && pathLength > 1.3 * reach) {
+            // Far from the hole on the first stroke: a landing from which two strokes are found
+            // (ThreeStrokes), among the landings of the two-stroke search's grid of first strokes.
+            TwoStrokeSearch grid = new TwoStrokeSearch(stroke, onePuttMap(stroke));
+            if (grid.affordable()) {
+                Shot shot = grid.sweepLandings();
+                if (shot != null) return shot;
+                shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(grid.landings());
                 if (shot != null) return shot;
             }
         }
