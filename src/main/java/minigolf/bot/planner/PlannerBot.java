@@ -43,7 +43,8 @@ import minigolf.physics.World;
  * {@link Layup}: 5) sharing one {@link Stroke} (the ball, the probes so far, the solvers); this
  * class holds what lasts between strokes (the maps, the stroke plan, the look-ahead's solutions,
  * the positions played from). {@code planner-aces} ends its two-stroke stages with a bounded brute-force
- * search ({@link TwoStrokeSearch}) where the budget is large.
+ * search ({@link TwoStrokeSearch}) where the budget is large; failing that, and far from the hole on
+ * the first stroke, it plays a landing from which two strokes are found ({@link ThreeStrokes}).
  */
 public final class PlannerBot extends SearchBot {
 
@@ -201,16 +202,16 @@ public final class PlannerBot extends SearchBot {
                 if (shot != null) return shot;
             }
         }
-        if (denseSweep && request.strokesTaken() == 0 && Double.isFinite(pathLength) && pathLength > 1.3 * reach) {
-            // Far from the hole on the first stroke: a landing from which two strokes are found
-            // (ThreeStrokes), among the landings of the two-stroke search's grid of first strokes.
+        if (denseSweep && request.strokesTaken() == 0 && Double.isFinite(pathLength) && pathLength > 1.3 * reach
+                && new TwoStrokeSearch(stroke, null).affordable()) {
+            // Far from the hole on the first stroke, where the budget is large (the map is traced only then):
+            // a landing from which two strokes are found (ThreeStrokes), among the landings of the two-stroke
+            // search's grid of first strokes.
             TwoStrokeSearch grid = new TwoStrokeSearch(stroke, onePuttMap(stroke));
-            if (grid.affordable()) {
-                Shot shot = grid.sweepLandings();
-                if (shot != null) return shot;
-                shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(grid.landings());
-                if (shot != null) return shot;
-            }
+            Shot shot = grid.sweepLandings();
+            if (shot != null) return shot;
+            shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(grid.landings());
+            if (shot != null) return shot;
         }
         sim.phase("lay-up");
         Shot layup = new Layup(stroke).layup(reach, planned);
