@@ -198,7 +198,7 @@ public final class PlannerBot extends SearchBot {
                 shot = search.search();
                 if (shot != null) return shot;
                 // No two strokes: of the search's landings, one from which two are found (ThreeStrokes).
-                shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(search.landings());
+                shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(search.landings(), search.screened());
                 if (shot != null) return shot;
             }
         }

@@ -2,6 +2,7 @@ package minigolf.bot.planner;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import minigolf.bot.Shot;
 
 /**
@@ -16,7 +17,8 @@ import minigolf.bot.Shot;
  * one per 0.25 m cell; its own grid where that search did not run). Each landing is screened
  * cheaply: a sweep all round at the maximum speed ({@link #SCREEN_STEP} apart; on hills also at
  * 0.6 of it) traced through the {@link OnePuttMap} ({@link MapTwoStrokes}' lay-up targets: runs of
- * cells one putt holes from). The landings with the best targets then get {@link MapTwoStrokes}'
+ * cells one putt holes from); where {@link TwoStrokeSearch}'s putt sweep ran from the landing, its
+ * paths were traced so, and the landing costs no simulation here. The landings with the best targets then get {@link MapTwoStrokes}'
  * look-ahead (play the lay-up, Broyden the map's putt from its rest point); the first landing from
  * which it holes is the stroke, its lay-up and putt kept for the next two strokes.
  *
@@ -46,7 +48,7 @@ final class ThreeStrokes {
     private final long limit, screenLimit;
     private final long deadline, screenDeadline;
     private final double[] speeds;
-    /** Landings screened and looked ahead from, for tests and tools. */
+    /** Landings screened here (not counting those {@link TwoStrokeSearch} swept) and looked ahead from, for tests and tools. */
     int screened, lookedAhead;
 
     ThreeStrokes(Stroke s, OnePuttMap map) {
@@ -72,6 +74,14 @@ final class ThreeStrokes {
      * {@code s.solved}), a shot that holes in two (the lay-up's own sweep holed: kept too), or null.
      */
     Shot search(List<TwoStrokeSearch.Landing> landings) {
+        return search(landings, Map.of());
+    }
+
+    /**
+     * {@link #search(List)}, the landings in {@code swept} not screened again: their lay-up
+     * targets came from {@link TwoStrokeSearch}'s putt sweeps (every direction at the maximum speed and more).
+     */
+    Shot search(List<TwoStrokeSearch.Landing> landings, Map<TwoStrokeSearch.Landing, MapTwoStrokes> swept) {
         if (!affordable() || map == null) return null;
         s.sim.phase("three strokes screen");
         List<TwoStrokeSearch.Landing> order = new ArrayList<>(landings);
@@ -82,6 +92,12 @@ final class ThreeStrokes {
         int directions = (int) Math.round(2 * Math.PI / SCREEN_STEP);
         for (TwoStrokeSearch.Landing l : order) {
             if (!Double.isFinite(distance(l))) continue;
+            MapTwoStrokes known = swept.get(l);
+            if (known != null) {
+                double score = known.bestScore();
+                if (Double.isFinite(score)) ranked.add(new Screened(l, known, score));
+                continue;
+            }
             Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, l.x(), l.y(), s.plan);
             MapTwoStrokes layups = new MapTwoStrokes(next, map);
             double holeAngle = Math.atan2(s.holeY - l.y(), s.holeX - l.x());
