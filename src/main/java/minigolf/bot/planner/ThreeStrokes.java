@@ -18,9 +18,10 @@ import minigolf.bot.Shot;
  * cheaply: a sweep all round at the maximum speed ({@link #SCREEN_STEP} apart; on hills also at
  * 0.6 of it) traced through the {@link OnePuttMap} ({@link MapTwoStrokes}' lay-up targets: runs of
  * cells one putt holes from); where {@link TwoStrokeSearch}'s putt sweep ran from the landing, its
- * paths were traced so, and the landing costs no simulation here. The landings with the best targets then get {@link MapTwoStrokes}'
- * look-ahead (play the lay-up, Broyden the map's putt from its rest point); the first landing from
- * which it holes is the stroke, its lay-up and putt kept for the next two strokes.
+ * paths were traced so, and the landing costs no simulation here. The landings with the best targets
+ * then get {@link MapTwoStrokes}' look-ahead (play the lay-up, Broyden the map's putt from its rest
+ * point); the first landing from which it holes is the stroke, its lay-up and putt kept for the next
+ * two strokes.
  *
  * <p>Bounded: at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of the budget (so at the
  * game's usual 20,000 it does not run), and at most {@link #TIME_SHARE} of the time the token has
@@ -48,7 +49,7 @@ final class ThreeStrokes {
     private final long limit, screenLimit;
     private final long deadline, screenDeadline;
     private final double[] speeds;
-    /** Landings screened here (not counting those {@link TwoStrokeSearch} swept) and looked ahead from, for tests and tools. */
+    /** Landings screened here (not those {@link TwoStrokeSearch} swept) and looked ahead from, for tests and tools. */
     int screened, lookedAhead;
 
     ThreeStrokes(Stroke s, OnePuttMap map) {

@@ -76,6 +76,18 @@ class ThreeStrokesTest {
             r = engine.simulate(r.endX(), r.endY(), played.vx(), played.vy());
         }
         assertEquals(Outcome.HOLED, r.outcome());
+
+        // From the landing, TwoStrokeSearch's putt sweep (none holes: the game is 3) traces the lay-ups
+        // ThreeStrokes needs, so MapTwoStrokes' look-ahead from them sweeps no more (its own sweep: 360 shots).
+        ShotResult landing = engine.simulate(FAR.course().start().x(), FAR.course().start().y(),
+                s.sim.limit(first).vx(), s.sim.limit(first).vy());
+        Stroke from = new Stroke(new ArrayList<>(), s.sim, s.probe, s.maps, landing.endX(), landing.endY(), s.plan);
+        MapTwoStrokes layups = new MapTwoStrokes(from, map);
+        assertNull(new PuttSweep(from, layups).holeInOne());
+        assertTrue(layups.hasTargets() && Double.isFinite(layups.bestScore()));
+        long beforeLookAhead = s.sim.count();
+        assertNotNull(layups.search(), "a lay-up from which one putt holes");
+        assertTrue(s.sim.count() - beforeLookAhead < 360, (s.sim.count() - beforeLookAhead) + " simulations");
     }
 
     @Test
