@@ -65,6 +65,14 @@ final class MapTwoStrokes {
         swept = true;
     }
 
+    /** The best (lowest) score of the lay-up targets collected so far; +infinity when none. */
+    double bestScore() {
+        double best = Double.POSITIVE_INFINITY;
+        for (Target t : targets) best = Math.min(best, t.score());
+        for (Target t : exact) best = Math.min(best, t.score());
+        return best;
+    }
+
     Shot search() {
         s.sim.phase("one-putt map lay-ups");
         if (!swept) {

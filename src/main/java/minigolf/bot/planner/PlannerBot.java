@@ -43,7 +43,8 @@ import minigolf.physics.World;
  * {@link Layup}: 5) sharing one {@link Stroke} (the ball, the probes so far, the solvers); this
  * class holds what lasts between strokes (the maps, the stroke plan, the look-ahead's solutions,
  * the positions played from). {@code planner-aces} ends its two-stroke stages with a bounded brute-force
- * search ({@link TwoStrokeSearch}) where the budget is large.
+ * search ({@link TwoStrokeSearch}) where the budget is large; failing that, and far from the hole on
+ * the first stroke, it plays a landing from which two strokes are found ({@link ThreeStrokes}).
  */
 public final class PlannerBot extends SearchBot {
 
@@ -223,9 +224,24 @@ public final class PlannerBot extends SearchBot {
                 }
                 // Last: many landings, each with a brute-force putt search (only where the budget is
                 // large); on later strokes too (tuning 777-27: 4 -> 3), each within its share of the time left.
-                shot = new TwoStrokeSearch(stroke, onePuttMap(stroke)).search();
+                TwoStrokeSearch search = new TwoStrokeSearch(stroke, onePuttMap(stroke));
+                shot = search.search();
+                if (shot != null) return shot;
+                // No two strokes: of the search's landings, one from which two are found (ThreeStrokes).
+                shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(search.landings(), search.screened());
                 if (shot != null) return shot;
             }
+        }
+        if (denseSweep && request.strokesTaken() == 0 && Double.isFinite(pathLength) && pathLength > 1.3 * reach
+                && new TwoStrokeSearch(stroke, null).affordable()) {
+            // Far from the hole on the first stroke, where the budget is large (the map is traced only then):
+            // a landing from which two strokes are found (ThreeStrokes), among the landings of the two-stroke
+            // search's grid of first strokes.
+            TwoStrokeSearch grid = new TwoStrokeSearch(stroke, onePuttMap(stroke));
+            Shot shot = grid.sweepLandings();
+            if (shot != null) return shot;
+            shot = new ThreeStrokes(stroke, onePuttMap(stroke)).search(grid.landings());
+            if (shot != null) return shot;
         }
         sim.phase("lay-up");
         Shot layup = new Layup(stroke).layup(reach, planned);

@@ -36,9 +36,17 @@ final class PuttSweep {
 
     private final Stroke s;
     private final double[] speeds;
+    /** Collects lay-up targets along the coarse sweep's paths (null: none), for {@link ThreeStrokes}. */
+    private final MapTwoStrokes layups;
 
     PuttSweep(Stroke s) {
+        this(s, null);
+    }
+
+    /** With {@code layups}, the coarse sweep's paths also give {@link MapTwoStrokes} its lay-up targets. */
+    PuttSweep(Stroke s, MapTwoStrokes layups) {
         this.s = s;
+        this.layups = layups;
         this.speeds = Flatness.isFlat(s.world) ? FLAT_SPEEDS : HILL_SPEEDS;
     }
 
@@ -53,11 +61,14 @@ final class PuttSweep {
             for (double f : speeds) {
                 Shot shot = s.sim.limit(Shot.polar(angle, f * vMax));
                 Nearest n = new Nearest(shot);
-                ShotResult r = s.sim.simulate(s.px, s.py, shot, n);
+                MapTwoStrokes.Runs runs = layups == null ? null : layups.tracer(shot);
+                ShotResult r = s.sim.simulate(s.px, s.py, shot, runs == null ? n : Stroke.both(n, runs));
                 if (CountingSimulator.holed(r)) return shot;
+                if (runs != null) runs.end(r);
                 if (n.best < NEAR * NEAR) near.add(new Pass(shot, Math.sqrt(n.best), Math.sqrt(Math.max(n.needThere, 0))));
             }
         }
+        if (layups != null) layups.swept();
         near.sort((a, b) -> Double.compare(a.distance(), b.distance()));
         List<Pass> refined = new ArrayList<>();
         for (Pass p : near) {

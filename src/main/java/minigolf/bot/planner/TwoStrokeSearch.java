@@ -1,8 +1,10 @@
 package minigolf.bot.planner;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import minigolf.bot.Shot;
 import minigolf.physics.Outcome;
@@ -47,6 +49,11 @@ final class TwoStrokeSearch {
     private final long deadline;
     /** Landings whose putt sweep ran, for tests and tools. */
     int tried;
+    /** The first-stroke grid's landings ({@link #sweepLandings}), and whether the grid ran to its end. */
+    private final List<Landing> landings = new ArrayList<>();
+    private boolean swept;
+    /** The landings whose putt sweep ran to its end, with the lay-up targets its paths gave. */
+    private final Map<Landing, MapTwoStrokes> screened = new HashMap<>();
 
     TwoStrokeSearch(Stroke s, OnePuttMap map) {
         this.s = s;
@@ -65,8 +72,31 @@ final class TwoStrokeSearch {
     /** The first stroke of a two-stroke game (its putt kept in {@code s.solved}), a hole-in-one, or null. */
     Shot search() {
         if (!affordable()) return null;
+        Shot holed = sweepLandings();
+        if (holed != null || !swept) return holed;
+        s.sim.phase("two-stroke search putts");
+        for (Landing l : landings) {
+            if (!inBounds()) return null;
+            Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, l.x(), l.y(), s.plan);
+            tried++;
+            // The putt sweep's paths also give the lay-ups from this landing (ThreeStrokes screens no more here).
+            MapTwoStrokes layups = map == null ? null : new MapTwoStrokes(next, map);
+            Shot putt = new PuttSweep(next, layups).holeInOne();
+            if (putt != null) {
+                s.solved.add(new Solved(s.world, l.x(), l.y(), putt));
+                return l.shot();
+            }
+            if (layups != null && layups.hasTargets()) screened.put(l, layups);
+        }
+        return null;
+    }
+
+    /**
+     * The grid of first strokes: their landings (one per cell, by promise) in {@link #landings};
+     * a shot that holes, or null ({@link #swept} false when the bounds cut the grid short).
+     */
+    Shot sweepLandings() {
         s.sim.phase("two-stroke search");
-        List<Landing> landings = new ArrayList<>();
         Set<Long> cells = new HashSet<>();
         cells.add(key(s.px, s.py));
         double vMax = s.sim.maxSpeed();
@@ -84,18 +114,18 @@ final class TwoStrokeSearch {
             }
         }
         landings.sort((a, b) -> Double.compare(a.promise(), b.promise()));
-        s.sim.phase("two-stroke search putts");
-        for (Landing l : landings) {
-            if (!inBounds()) return null;
-            Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, l.x(), l.y(), s.plan);
-            tried++;
-            Shot putt = new PuttSweep(next).holeInOne();
-            if (putt != null) {
-                s.solved.add(new Solved(s.world, l.x(), l.y(), putt));
-                return l.shot();
-            }
-        }
+        swept = true;
         return null;
+    }
+
+    /** The grid's landings, the most promising first (empty before {@link #sweepLandings}). */
+    List<Landing> landings() {
+        return landings;
+    }
+
+    /** The landings whose putt sweep ran, with the lay-up targets from there its paths gave ({@link ThreeStrokes}). */
+    Map<Landing, MapTwoStrokes> screened() {
+        return screened;
     }
 
     /** Lower is tried first: marked on the one-putt map (by its putt's cost), then by the path's length to the hole. */
