@@ -16,8 +16,9 @@ import minigolf.physics.ShotResult;
 import minigolf.physics.World;
 
 /**
- * Our bot, the game's default (docs/bots.md); {@code planner-aces} adds {@link DenseSweep} on the
- * first stroke, two strokes chosen on the {@link OnePuttMap} ({@link MapTwoStrokes}), the wide
+ * Our bot, the game's default (docs/bots.md). Its full search, from a budget of
+ * {@link #FULL_SEARCH_BUDGET} and in {@code planner-aces} at any budget, adds {@link DenseSweep} on
+ * the first stroke, two strokes chosen on the {@link OnePuttMap} ({@link MapTwoStrokes}), the wide
  * lay-up sweep and the friction-aware distance field. Per stroke:
  * <ol>
  * <li>If the hole is within about a maximum-speed roll (along the water-avoiding distance):
@@ -42,7 +43,7 @@ import minigolf.physics.World;
  * The stages are classes of their own ({@link HoleInOne}: 1-3, {@link TwoStrokes}: 4,
  * {@link Layup}: 5) sharing one {@link Stroke} (the ball, the probes so far, the solvers); this
  * class holds what lasts between strokes (the maps, the stroke plan, the look-ahead's solutions,
- * the positions played from). {@code planner-aces} ends its two-stroke stages with a bounded brute-force
+ * the positions played from). The full search ends its two-stroke stages with a bounded brute-force
  * search ({@link TwoStrokeSearch}) where the budget is large; failing that, and far from the hole on
  * the first stroke, it plays a landing from which two strokes are found ({@link ThreeStrokes}).
  */
