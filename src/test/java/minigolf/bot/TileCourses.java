@@ -26,10 +26,8 @@ public final class TileCourses {
     /** {@code count} courses from {@code seed} (course i depends on the seed and i only). */
     public static List<World> generate(long seed, int count) {
         List<World> worlds = new ArrayList<>();
-        SplittableRandom seeds = new SplittableRandom(seed);
         for (int i = 0; i < count; i++) {
-            long courseSeed = seeds.nextLong();
-            String json = json(new SplittableRandom(courseSeed), "tile " + seed + "-" + i);
+            String json = json(seed, i);
             try {
                 worlds.add(World.parse(json, "tile-" + seed + "-" + i));
             } catch (CourseException e) {
@@ -37,6 +35,14 @@ public final class TileCourses {
             }
         }
         return worlds;
+    }
+
+    /** Course {@code index} of {@code seed}: its file's JSON. */
+    static String json(long seed, int index) {
+        SplittableRandom seeds = new SplittableRandom(seed);
+        long courseSeed = 0;
+        for (int i = 0; i <= index; i++) courseSeed = seeds.nextLong();
+        return json(new SplittableRandom(courseSeed), "tile " + seed + "-" + index);
     }
 
     static String json(SplittableRandom r, String name) {
