@@ -238,9 +238,15 @@ public final class CountingSimulator {
      * (a chip) with the 3-component one, exactly as the game plays them.
      */
     public static ShotResult play(Simulator simulator, double x, double y, Shot shot, TrajectoryListener listener) {
-        if (shot.isPutt()) return simulator.simulate(x, y, shot.vx(), shot.vy(), listener);
-        return listener == null ? simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz())
-                : simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz(), listener);
+        try {
+            if (shot.isPutt()) return simulator.simulate(x, y, shot.vx(), shot.vy(), listener);
+            return listener == null ? simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz())
+                    : simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz(), listener);
+        } catch (minigolf.physics.NonFiniteMotionException e) {
+            // The ball's motion overflowed (terrain too steep, or not finite between the loader's
+            // samples): out of play, as the game rules it (StrokeAnimator); the ball stays where it was.
+            return new ShotResult(Outcome.OUT, x, y, 0, 0);
+        }
     }
 
     /** The shot as it is played: never faster than the course allows. */

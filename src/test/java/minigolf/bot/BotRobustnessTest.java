@@ -143,6 +143,25 @@ class BotRobustnessTest {
         playChecked(bot, world, 200, 2);
     }
 
+    static List<Arguments> hardAndRandomCourses() {
+        List<Arguments> all = new ArrayList<>();
+        for (Arguments c : hardCourses()) all.add(Arguments.of(c.get()[0], c.get()[1]));
+        List<World> worlds = RandomCourses.generate(20261124L, 16);
+        for (int i = 0; i < worlds.size(); i++) all.add(Arguments.of("random course " + i, worlds.get(i)));
+        return all;
+    }
+
+    /**
+     * The same property for the planner's full search (a budget of 1,000,000: the dense sweep, the
+     * two-stroke search, the three-stroke plan), which the small budgets above never start: it
+     * keeps the 5 s limit and answers everywhere.
+     */
+    @ParameterizedTest(name = "planner's full search on {0}")
+    @MethodSource("hardAndRandomCourses")
+    void thePlannersFullSearchAnswersEverywhere(String name, World world) {
+        playChecked("planner", world, 1_000_000, 2);
+    }
+
     @ParameterizedTest
     @MethodSource("minigolf.bot.AllBotsTest#bots")
     void aTimeLimitThatHasRunOutStillGivesAShot(String bot) {

@@ -226,4 +226,21 @@ class CountingSimulatorTest {
         sim.beginShot(0, 0, r2 -> 0);
         assertNull(sim.knownResult(Shot.of(2, 0)));
     }
+
+    @Test
+    void aShotWhoseMotionOverflowsIsOutOfPlayAsInTheGame() {
+        // Random course 1 of the robustness test: this chip lands on terrain so steep that the
+        // engine's motion overflows (the planner's full search tries such chips).
+        World world = RandomCourses.generate(20261124L, 2).get(1);
+        Shot chip = new Shot(0.9012186651776283, -6.705496020666881, 2.4625450319448148);
+        Simulator engine = new Simulator(world, SimulationSettings.DEFAULT);
+        assertThrows(minigolf.physics.NonFiniteMotionException.class,
+                () -> engine.simulate(-7.39, -0.4, chip.vx(), chip.vy(), chip.vz()));
+        CountingSimulator sim = new CountingSimulator(world);
+        ShotResult r = sim.simulate(-7.39, -0.4, chip);
+        assertEquals(minigolf.physics.Outcome.OUT, r.outcome());
+        assertEquals(-7.39, r.endX());
+        assertEquals(-0.4, r.endY());
+        assertEquals(1, sim.count());
+    }
 }
