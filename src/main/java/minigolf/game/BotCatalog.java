@@ -28,6 +28,11 @@ import minigolf.physics.World;
 public final class BotCatalog {
     /** Simulations a bot may spend on one stroke in the game. */
     public static final long BUDGET_PER_STROKE = 20_000;
+    /**
+     * The budget of {@code planner-aces}, the strong and slow choice: enough for the planner's full
+     * search with its two- and three-stroke searches (docs/bots.md), still within the time limit.
+     */
+    public static final long FULL_SEARCH_BUDGET_PER_STROKE = 1_000_000;
     /** Wall time a bot may think about one stroke in the game; then it plays its best shot so far. */
     public static final double TIME_LIMIT_PER_STROKE = 20;
     private static final Map<String, Supplier<ShotPlanner>> PLANNERS = new LinkedHashMap<>();
@@ -80,10 +85,16 @@ public final class BotCatalog {
     }
 
     /**
-     * Adapts a bot: its simulations are counted against {@link #BUDGET_PER_STROKE}, its thinking
+     * Adapts a bot: its simulations are counted against {@link #budgetPerStroke}, its thinking
      * limited to {@link #TIME_LIMIT_PER_STROKE}, and both reported as progress.
      */
+    /** What a bot may spend on one stroke in the game: {@code planner-aces} the full search's budget, every other bot 20,000. */
+    public static long budgetPerStroke(String botName) {
+        return botName.equals("planner-aces") ? FULL_SEARCH_BUDGET_PER_STROKE : BUDGET_PER_STROKE;
+    }
+
     public static ShotPlanner fromBot(Bot bot) {
+        long budget = budgetPerStroke(bot.name());
         return new ShotPlanner() {
             public String name() {
                 return bot.name();
@@ -113,7 +124,7 @@ public final class BotCatalog {
                 };
                 // Hidden friction: the bot simulates the prior, re-fitted to its own strokes (counted in its budget).
                 World seen = conditions.hideFriction() ? FrictionPrior.scaled(world, 1) : world;
-                CountingSimulator sim = new CountingSimulator(seen, settings, BUDGET_PER_STROKE, token, progress);
+                CountingSimulator sim = new CountingSimulator(seen, settings, budget, token, progress);
                 CountingSimulator botSim = conditions.hideFriction() ? estimated(sim, conditions) : sim;
                 Shot shot = sim.limit(bot.nextShot(new BotRequest(botSim, x, y, strokes, seed, conditions.noise())));
                 return new double[]{shot.vx(), shot.vy(), shot.vz()}; // the game plays chips too

@@ -47,4 +47,13 @@ class BotCatalogTest {
         assertEquals(3, v.length, "(vx, vy, vz): the game plays chips too");
         assertEquals(Outcome.HOLED, new Simulator(world, SimulationSettings.DEFAULT).simulate(x, y, v[0], v[1], v[2]).outcome());
     }
+
+    @Test
+    void plannerAcesGetsTheFullSearchsBudgetInTheGame() {
+        // From 500,000 the planner searches fully (PlannerBot.FULL_SEARCH_BUDGET): planner-aces in the
+        // game gets that and more; every other bot, the planner included, keeps 20,000 a stroke.
+        assertEquals(1_000_000, BotCatalog.budgetPerStroke("planner-aces"));
+        assertTrue(BotCatalog.budgetPerStroke("planner-aces") >= minigolf.bot.planner.PlannerBot.FULL_SEARCH_BUDGET);
+        for (String name : List.of("planner", "robust", "graph", "astar")) assertEquals(20_000, BotCatalog.budgetPerStroke(name));
+    }
 }
