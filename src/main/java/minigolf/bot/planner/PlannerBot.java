@@ -74,7 +74,7 @@ public final class PlannerBot extends SearchBot {
     /** {@code planner-aces}: the full search whatever the budget. */
     private final boolean alwaysFull;
     /** Whether this game searches fully: the dense sweep, the one-putt map's two strokes, the two-stroke search. */
-    private boolean denseSweep;
+    private boolean fullSearch;
     /** Null: the friction-aware field with the full search, the plain one without ({@link #chooseSearch}). */
     private final Boolean frictionAware;
 
@@ -106,13 +106,13 @@ public final class PlannerBot extends SearchBot {
     /** At the game's first request: the full search or the quick plan, by the budget the game has. */
     private void chooseSearch(BotRequest request) {
         if (maps != null) return;
-        denseSweep = alwaysFull || request.simulator().remaining() >= FULL_SEARCH_BUDGET;
-        maps = new CourseMaps(frictionAware != null ? frictionAware : denseSweep && FRICTION_AWARE);
+        fullSearch = alwaysFull || request.simulator().remaining() >= FULL_SEARCH_BUDGET;
+        maps = new CourseMaps(frictionAware != null ? frictionAware : fullSearch && FRICTION_AWARE);
     }
 
     /** Whether this game searches fully (decided at its first request; false before it). */
     public boolean searchesFully() {
-        return denseSweep;
+        return fullSearch;
     }
 
     @Override
@@ -187,8 +187,8 @@ public final class PlannerBot extends SearchBot {
             sim.phase("direct");
             Shot shot = new HoleInOne(stroke).holeInOne();
             if (shot != null) return shot;
-            MapTwoStrokes mapLayups = denseSweep ? new MapTwoStrokes(stroke, onePuttMap(stroke)) : null;
-            if (denseSweep && request.strokesTaken() == 0) {
+            MapTwoStrokes mapLayups = fullSearch ? new MapTwoStrokes(stroke, onePuttMap(stroke)) : null;
+            if (fullSearch && request.strokesTaken() == 0) {
                 // The first stroke: search all round, densely, before settling for two (its
                 // paths also give the one-putt map's lay-ups their targets).
                 shot = new DenseSweep(stroke, mapLayups).holeInOne();
@@ -215,7 +215,7 @@ public final class PlannerBot extends SearchBot {
                 shot = twoStrokes.layupSweep();
                 if (shot != null) return shot;
             }
-            if (denseSweep) {
+            if (fullSearch) {
                 shot = twoStrokes.wideLayupSweep();
                 if (shot != null) return shot;
                 if (request.strokesTaken() == 0) {
@@ -233,8 +233,8 @@ public final class PlannerBot extends SearchBot {
                 if (shot != null) return shot;
             }
         }
-        if (denseSweep && request.strokesTaken() == 0 && Double.isFinite(pathLength) && pathLength > 1.3 * reach
-                && new TwoStrokeSearch(stroke, null).affordable()) {
+        if (fullSearch && request.strokesTaken() == 0 && Double.isFinite(pathLength) && pathLength > 1.3 * reach
+                && TwoStrokeSearch.bounds(sim).affordable()) {
             // Far from the hole on the first stroke, where the budget is large (the map is traced only then):
             // a landing from which two strokes are found (ThreeStrokes), among the landings of the two-stroke
             // search's grid of first strokes.

@@ -6,7 +6,7 @@ import java.util.Map;
 import minigolf.bot.Shot;
 
 /**
- * {@code planner-aces}' three-stroke plan (issue 13): when no two-stroke game is found, the stroke
+ * The full search's three-stroke plan (issue 13): when no two-stroke game is found, the stroke
  * is chosen among many landings by whether a two-stroke game is found from there, not by the
  * stroke plan or the distance field. On held-out tiles (20261124-36, 8675309-29) the exhaustive
  * search's three-stroke game starts with a stroke that rests no nearer the hole on the field (even
@@ -23,9 +23,9 @@ import minigolf.bot.Shot;
  * point); the first landing from which it holes is the stroke, its lay-up and putt kept for the next
  * two strokes.
  *
- * <p>Bounded: at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of the budget (so at the
- * game's usual 20,000 it does not run), and at most {@link #TIME_SHARE} of the time the token has
- * left (and {@link #MAX_SECONDS}).
+ * <p>Bounded ({@link SearchBounds}): at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of
+ * the budget (so at the game's usual 20,000 it does not run), and at most {@link SearchBounds#TIME_SHARE}
+ * of the time the token has left (and {@link #MAX_SECONDS}).
  */
 final class ThreeStrokes {
     static final double SCREEN_STEP = Math.toRadians(2);
@@ -34,8 +34,6 @@ final class ThreeStrokes {
     static final int LOOK_AHEADS = 40;
     static final long MAX_SIMULATIONS = 200_000;
     static final long RESERVE = TwoStrokeSearch.RESERVE;
-    static final long MIN_SIMULATIONS = 10_000;
-    static final double TIME_SHARE = 0.4;
     static final double MAX_SECONDS = 20;
     /** The screen's share of the simulations and the time; the rest is the look-ahead's. */
     static final double SCREEN_SHARE = 0.75;
@@ -46,8 +44,8 @@ final class ThreeStrokes {
 
     private final Stroke s;
     private final OnePuttMap map;
-    private final long limit, screenLimit;
-    private final long deadline, screenDeadline;
+    /** The whole search's bounds, and the screen's first share of them. */
+    private final SearchBounds bounds, screenBounds;
     private final double[] speeds;
     /** Landings screened here (not those {@link TwoStrokeSearch} swept) and looked ahead from, for tests and tools. */
     int screened, lookedAhead;
@@ -55,19 +53,14 @@ final class ThreeStrokes {
     ThreeStrokes(Stroke s, OnePuttMap map) {
         this.s = s;
         this.map = map;
-        long start = s.sim.count(), share = Math.min(MAX_SIMULATIONS, s.sim.remaining() - RESERVE);
-        this.limit = start + share;
-        this.screenLimit = start + (long) (SCREEN_SHARE * share);
-        double seconds = Math.min(MAX_SECONDS, TIME_SHARE * s.sim.token().secondsLeft());
-        long now = System.nanoTime();
-        this.deadline = now + (long) (seconds * 1e9);
-        this.screenDeadline = now + (long) (SCREEN_SHARE * seconds * 1e9);
+        this.bounds = new SearchBounds(s.sim, MAX_SIMULATIONS, RESERVE, MAX_SECONDS);
+        this.screenBounds = bounds.first(SCREEN_SHARE);
         this.speeds = Flatness.isFlat(s.world) ? new double[] {1} : HILL_SPEEDS;
     }
 
     /** Whether the budget left leaves room for the search and the strokes after it. */
     boolean affordable() {
-        return limit - s.sim.count() >= MIN_SIMULATIONS;
+        return bounds.affordable();
     }
 
     /**
@@ -128,7 +121,7 @@ final class ThreeStrokes {
         s.sim.phase("three strokes look-ahead");
         ranked.sort((a, b) -> Double.compare(a.score(), b.score()));
         for (Screened c : ranked) {
-            if (lookedAhead == LOOK_AHEADS || s.sim.count() >= limit || System.nanoTime() - deadline >= 0) break;
+            if (lookedAhead == LOOK_AHEADS || !bounds.inBounds()) break;
             lookedAhead++;
             Shot layup = c.layups().search();
             if (layup != null) {
@@ -144,6 +137,6 @@ final class ThreeStrokes {
     }
 
     private boolean inBounds() {
-        return s.sim.count() < screenLimit && System.nanoTime() - screenDeadline < 0;
+        return screenBounds.inBounds();
     }
 }

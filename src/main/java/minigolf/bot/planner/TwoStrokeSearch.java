@@ -6,24 +6,25 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 
 /**
- * {@code planner-aces}' last try for two strokes on the first stroke, when every cheaper stage
+ * The full search's last try for two strokes (on any stroke), when every cheaper stage
  * found none (issue 13): a bounded brute-force search of its own. The two-stroke games the stages
  * miss often hole from one small region only (a putt off cushions near the speed limit), which no
  * lay-up aimed by the maps lands in; trying many landings is what finds them. A grid of first
  * strokes all round ({@link #DIRECTIONS} x {@link #SPEEDS}; cushions make the bank shots), their
  * rest points merged into {@link #CELL} cells so each landing area is tried once, the cells ordered
  * by promise (marked on the {@link OnePuttMap}, the cheapest putt first; then nearest the hole on
- * the distance field), and from each a {@link DenseSweep} for the putt. The first landing from which
+ * the distance field), and from each a brute-force putt search ({@link PuttSweep}). The first landing from which
  * one putt holes is the shot; its putt is kept for the next stroke.
  *
- * <p>Bounded: at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of the budget to the
+ * <p>Bounded ({@link SearchBounds}): at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of the budget to the
  * strokes after it (so with the game's usual budget of 20,000 it does not run), and at most
- * {@link #TIME_SHARE} of the time the token has left (and {@link #MAX_SECONDS}); every
+ * {@link SearchBounds#TIME_SHARE} of the time the token has left (and {@link #MAX_SECONDS}); every
  * simulation checks the token, so a cancel stops it.
  */
 final class TwoStrokeSearch {
@@ -34,9 +35,6 @@ final class TwoStrokeSearch {
     static final double CELL = 0.25;
     static final long MAX_SIMULATIONS = 300_000;
     static final long RESERVE = 20_000;
-    /** Below this many simulations to spend the search does not start. */
-    static final long MIN_SIMULATIONS = 10_000;
-    static final double TIME_SHARE = 0.4;
     static final double MAX_SECONDS = 30;
 
     /** A landing: the first shot that rested in the cell, where exactly, and its promise. */
@@ -45,8 +43,7 @@ final class TwoStrokeSearch {
 
     private final Stroke s;
     private final OnePuttMap map;
-    private final long limit;
-    private final long deadline;
+    private final SearchBounds bounds;
     /** Landings whose putt sweep ran, for tests and tools. */
     int tried;
     /** The first-stroke grid's landings ({@link #sweepLandings}), and whether the grid ran to its end. */
@@ -58,15 +55,17 @@ final class TwoStrokeSearch {
     TwoStrokeSearch(Stroke s, OnePuttMap map) {
         this.s = s;
         this.map = map;
-        long start = s.sim.count();
-        this.limit = start + Math.min(MAX_SIMULATIONS, s.sim.remaining() - RESERVE);
-        double seconds = Math.min(MAX_SECONDS, TIME_SHARE * s.sim.token().secondsLeft());
-        this.deadline = System.nanoTime() + (long) (seconds * 1e9);
+        this.bounds = bounds(s.sim);
+    }
+
+    /** This search's bounds from where {@code sim} stands. */
+    static SearchBounds bounds(CountingSimulator sim) {
+        return new SearchBounds(sim, MAX_SIMULATIONS, RESERVE, MAX_SECONDS);
     }
 
     /** Whether the budget left leaves room for the search and the strokes after it. */
     boolean affordable() {
-        return limit - s.sim.count() >= MIN_SIMULATIONS;
+        return bounds.affordable();
     }
 
     /** The first stroke of a two-stroke game (its putt kept in {@code s.solved}), a hole-in-one, or null. */
@@ -137,7 +136,7 @@ final class TwoStrokeSearch {
     }
 
     private boolean inBounds() {
-        return s.sim.count() < limit && System.nanoTime() - deadline < 0;
+        return bounds.inBounds();
     }
 
     private static long key(double x, double y) {

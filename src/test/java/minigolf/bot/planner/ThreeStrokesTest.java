@@ -92,7 +92,7 @@ class ThreeStrokesTest {
 
     @Test
     void itSpendsNoMoreThanTheBudgetLeavesBeyondTheReserve() {
-        Stroke small = atStart(FAR, ThreeStrokes.RESERVE + ThreeStrokes.MIN_SIMULATIONS - 1);
+        Stroke small = atStart(FAR, ThreeStrokes.RESERVE + SearchBounds.MIN_SIMULATIONS - 1);
         ThreeStrokes none = new ThreeStrokes(small, null);
         assertFalse(none.affordable(), "the game's usual budget leaves it out");
         assertNull(none.search(new ArrayList<>()));
