@@ -14,7 +14,7 @@ import java.util.stream.Stream;
  * {@link #DEPTH} levels deep, at most {@link #MAX_VISITS} entries in all.
  */
 public final class ShapeImages {
-    static final int ANCESTORS = 5;
+    static final int ANCESTORS = 6;
     static final int DEPTH = 7;
     static final int MAX_VISITS = 50_000;
 
@@ -25,7 +25,7 @@ public final class ShapeImages {
     public static Optional<Path> locate(Path tracks) {
         Path dir = tracks.toAbsolutePath().normalize();
         int[] visits = {0};
-        for (int level = 0; level <= ANCESTORS && dir != null; level++, dir = dir.getParent()) {
+        for (int level = 0; level <= ANCESTORS && dir != null && dir.getParent() != null; level++, dir = dir.getParent()) {
             Optional<Path> found = search(dir, visits);
             if (found.isPresent()) return found;
             if (visits[0] >= MAX_VISITS) break;

@@ -79,7 +79,8 @@ public final class TrackImporter {
             try {
                 t = TrackFile.read(f);
             } catch (TrackFormatException e) {
-                failed.add(new Failure(source, e.getMessage()));
+                String m = e.getMessage(), prefix = f.getFileName() + ": ";
+                failed.add(new Failure(source, m.startsWith(prefix) ? m.substring(prefix.length()) : m));
                 continue;
             }
             String key = t.author() + "\n" + t.name() + "\n" + t.tiles().hashCode();
@@ -106,7 +107,7 @@ public final class TrackImporter {
             try {
                 c = TrackConverter.convert(t, masks, scale);
             } catch (TrackFormatException ex) {
-                failed.add(new Failure(from.get(0), ex.getMessage()));
+                failed.add(new Failure(from.get(0), ex.getMessage()));  // "<name>: ..."
                 continue;
             }
             String folder = uniqueFolder(t, names);

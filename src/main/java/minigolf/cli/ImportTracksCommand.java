@@ -66,7 +66,7 @@ final class ImportTracksCommand implements Callable<Integer> {
             throw new UserError("import-tracks: " + e.getMessage());
         }
         PrintWriter err = spec.commandLine().getErr();
-        for (TrackImporter.Failure f : r.failed()) err.println("minigolf: not imported: " + f.reason());
+        for (TrackImporter.Failure f : r.failed()) err.println("minigolf: not imported: " + f.source() + ": " + f.reason());
         err.flush();
         ObjectNode summary = Json.MAPPER.createObjectNode();
         summary.put("imported", r.imported().size());
