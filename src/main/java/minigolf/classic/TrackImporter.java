@@ -30,6 +30,8 @@ import minigolf.io.AtomicFile;
 public final class TrackImporter {
     public static final String INDEX = "index.json";
     public static final String COURSE = "course.json";
+    /** The folder under the output that holds one folder per track (a suite for {@code experiment}). */
+    public static final String COURSES = "courses";
     /** Most .track files read from one folder. */
     public static final int MAX_FILES = 20_000;
     static final int MAX_DEPTH = 8;
@@ -111,12 +113,15 @@ public final class TrackImporter {
                 continue;
             }
             String folder = uniqueFolder(t, names);
-            Path target = out.resolve(folder);
+            Path target = out.resolve(COURSES).resolve(folder);
             Files.createDirectories(target);
             clearOld(target);
             try {
-                // The course first: saving checks it loads (with the meshes it holds), so a course
-                // that would not load leaves nothing behind.
+                // The models first (plain writes: the course, written last and atomically, is what
+                // makes the folder a course), then the course, which saving checks loads.
+                for (Map.Entry<String, String> file : c.files().entrySet()) {
+                    Files.writeString(target.resolve(file.getKey()), file.getValue(), StandardCharsets.UTF_8);
+                }
                 CourseWriter.save(c.course(), target.resolve(COURSE));
             } catch (CourseException ex) {
                 clearOld(target);
@@ -125,10 +130,7 @@ public final class TrackImporter {
                 failed.add(new Failure(from.get(0), t.name() + ": " + ex.detail()));
                 continue;
             }
-            for (Map.Entry<String, String> file : c.files().entrySet()) {
-                AtomicFile.write(target.resolve(file.getKey()), file.getValue().getBytes(StandardCharsets.UTF_8));
-            }
-            imported.add(new Entry(t, folder + "/" + COURSE, List.copyOf(from), c.notes()));
+            imported.add(new Entry(t, COURSES + "/" + folder + "/" + COURSE, List.copyOf(from), c.notes()));
         }
         Result result = new Result(List.copyOf(imported), List.copyOf(failed), masks.source());
         AtomicFile.write(out.resolve(INDEX), index(result, scale).getBytes(StandardCharsets.UTF_8));
