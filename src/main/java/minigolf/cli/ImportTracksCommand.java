@@ -43,7 +43,7 @@ final class ImportTracksCommand implements Callable<Integer> {
     @Option(names = "--tile", paramLabel = "METRES", description = "The size of a tile in metres (default: ${DEFAULT-VALUE}; the ball is 13/15 of a tile across).")
     double tile = ClassicScale.DEFAULT_TILE;
 
-    @Option(names = "--no-images", description = "Use the built-in approximation of the shapes even if the images are found.")
+    @Option(names = "--no-images", description = "Use the built-in approximation of the shapes even if the images are found (default: off).")
     boolean noImages;
 
     @Override

@@ -27,51 +27,29 @@ public record Zone(Shape shape, double kineticFriction, double staticFriction, H
         }
 
         /** What the zone looks like (the rules are the other fields). */
-        public enum Kind implements Named {
-            WATER("water"), ACID("acid");
+        public enum Kind implements Named { WATER, ACID }
 
-            private final String jsonName;
+        public enum When implements Named { ENTER, REST }
 
-            Kind(String jsonName) {
-                this.jsonName = jsonName;
-            }
+        public enum ReturnTo implements Named { STROKE_START, COURSE_START }
 
-            public String jsonName() {
-                return jsonName;
-            }
-        }
-
-        public enum When implements Named {
-            ENTER("enter"), REST("rest");
-
-            private final String jsonName;
-
-            When(String jsonName) {
-                this.jsonName = jsonName;
-            }
-
-            public String jsonName() {
-                return jsonName;
-            }
-        }
-
-        public enum ReturnTo implements Named {
-            STROKE_START("strokeStart"), COURSE_START("courseStart");
-
-            private final String jsonName;
-
-            ReturnTo(String jsonName) {
-                this.jsonName = jsonName;
-            }
-
-            public String jsonName() {
-                return jsonName;
-            }
-        }
-
-        /** An enum written in the course file by name. */
+        /** An enum written in the course file by name: its constant's name in camel case ({@code strokeStart}). */
         public interface Named {
-            String jsonName();
+            String name();
+
+            default String jsonName() {
+                StringBuilder sb = new StringBuilder();
+                boolean upper = false;
+                for (char c : name().toCharArray()) {
+                    if (c == '_') {
+                        upper = true;
+                    } else {
+                        sb.append(upper ? c : Character.toLowerCase(c));
+                        upper = false;
+                    }
+                }
+                return sb.toString();
+            }
         }
     }
 }

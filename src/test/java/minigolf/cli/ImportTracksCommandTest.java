@@ -50,10 +50,29 @@ class ImportTracksCommandTest {
         assertEquals(4.5, one.get("averageStrokes").asDouble(), 1e-12);
         assertEquals(3, one.get("bestStrokes").asInt());
         assertEquals(2, one.get("playersWithBest").asInt());
-        assertEquals("Tester-One/course.json", one.get("course").asText());
-        assertEquals("Tester-Two__the_sequel/course.json", index.get("tracks").get(1).get("course").asText());
-        World w = World.load(out.resolve("Tester-One/course.json"));
+        assertEquals("courses/Tester-One/course.json", one.get("course").asText());
+        assertEquals("courses/Tester-Two__the_sequel/course.json", index.get("tracks").get(1).get("course").asText());
+        World w = World.load(out.resolve("courses/Tester-One/course.json"));
         assertEquals("One", w.course().name());
+    }
+
+    /** The imported courses are a suite for experiment (folders holding a course.json), and classic-report reads both. */
+    @Test
+    void experimentAndReportOnTheImport(@TempDir Path dir) throws Exception {
+        Path in = dir.resolve("tracks"), out = dir.resolve("out"), exp = dir.resolve("exp");
+        Files.createDirectories(in);
+        Files.writeString(in.resolve("a.track"), track("Alpha", MAP));
+        Files.writeString(in.resolve("b.track"), track("Beta", MAP));
+        assertEquals(0, CliRun.of("import-tracks", in.toString(), "--out", out.toString(), "--no-images").code());
+        CliRun e = CliRun.of("experiment", "--suite", out.resolve("courses").toString(), "--out", exp.toString(),
+                "--bots", "planner", "--seeds", "1", "--threads", "1", "--max-strokes", "3");
+        assertEquals(0, e.code(), e.err());
+        String results = Files.readString(exp.resolve("results.csv"));
+        assertTrue(results.contains("\nTester-Alpha,planner,1,") && results.contains("\nTester-Beta,planner,1,"), results);
+        CliRun r = CliRun.of("classic-report", out.toString(), "--results", exp.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().startsWith("Import: 2 of 2 files imported (2/2 = 100.0%), 2 of 2 tracks load"), r.out());
+        assertTrue(r.out().contains("| planner | 2 | 2 | "), r.out());
     }
 
     /** A malformed track: one line naming it, exit 2, nothing written for it; the others are imported. */
@@ -73,8 +92,8 @@ class ImportTracksCommandTest {
         assertEquals("minigolf: not imported: nohole.track: No hole: the map has no hole", lines[1]);
         assertEquals(1, r.json().get("imported").asInt());
         assertEquals(2, r.json().get("failed").asInt());
-        try (Stream<Path> s = Files.list(out)) {
-            assertEquals("[Tester-Good, index.json]", s.map(p -> p.getFileName().toString()).sorted().toList().toString());
+        try (Stream<Path> s = Files.list(out.resolve("courses"))) {
+            assertEquals("[Tester-Good]", s.map(p -> p.getFileName().toString()).sorted().toList().toString());
         }
         JsonNode failed = new ObjectMapper().readTree(out.resolve("index.json").toFile()).get("failed");
         assertEquals(2, failed.size());
