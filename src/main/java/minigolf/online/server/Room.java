@@ -378,9 +378,9 @@ final class Room {
     }
 
     private void seatsChanged() {
-        if (status == Status.PLAYING) updateTurn();
         broadcast(messages.seats());
         refreshView();
+        if (status == Status.PLAYING) updateTurn();
     }
 
     /** Whose turn it is (-1 outside play), with dropped players passed over. */
@@ -405,10 +405,19 @@ final class Room {
         long awayMs = (long) (svc.options().awayTimeoutSeconds() * 1000);
         long next = Long.MAX_VALUE;
         Game g = round.game();
+        boolean changed = false;
         for (Seat s : seats) {
             boolean passed = s.isAway() && (s.gone || now >= s.awaySinceMs + awayMs);
-            g.passOver(s.index, passed);
+            if (passed != g.isPassedOver(s.index)) {
+                changed = true;
+                g.passOver(s.index, passed);
+                if (passed) broadcast(messages.notice(s.name + "'s turns are passed over until " + (s.gone ? "the end" : "they are back")));
+            }
             if (s.isAway() && !passed) next = Math.min(next, s.awaySinceMs + awayMs);
+        }
+        if (changed) {
+            broadcast(messages.seats());
+            refreshView();
         }
         int current = g.currentPlayer();
         if (current < 0) return;
