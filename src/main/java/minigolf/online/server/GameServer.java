@@ -115,6 +115,14 @@ public final class GameServer implements AutoCloseable {
         return restored;
     }
 
+    Rooms rooms() {
+        return rooms;
+    }
+
+    GameStore store() {
+        return store;
+    }
+
     public String database() {
         return store.description();
     }

@@ -84,7 +84,11 @@ class DroppedPlayerTest {
 
     @Test
     void aServerRestartRestoresTheRoomFromItsDatabase() throws Exception {
-        String db = dir.resolve("s.db").toString();
+        restartRestoresTheRoom(dir.resolve("s.db").toString(), 1);
+    }
+
+    /** Two strokes, a server stopped and started on the same database, then the game goes on ({@code rooms} restored). */
+    static void restartRestoresTheRoom(String db, int rooms) throws Exception {
         String code, annsToken, bobsToken;
         double annX, bobX;
         try (GameServer server = TestServers.start(db); TestClient ann = TestClient.to(server); TestClient bob = TestClient.to(server)) {
@@ -99,7 +103,7 @@ class DroppedPlayerTest {
             bobX = ann.mirror.round().game().player(1).x();
         }
         try (GameServer again = TestServers.start(db); TestClient ann = TestClient.to(again); TestClient bob = TestClient.to(again)) {
-            assertEquals(1, again.restoredRooms());
+            assertTrue(again.restoredRooms() >= rooms, "restored " + again.restoredRooms());
             ann.send(new ClientMessage.Resume(code, annsToken));
             ann.await("room");
             assertEquals(2, ann.mirror.seq());
