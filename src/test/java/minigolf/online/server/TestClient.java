@@ -78,6 +78,26 @@ final class TestClient implements AutoCloseable {
         return await(m -> m.path("type").asText().equals("stroke") && m.path("seq").asLong() == seq + 1, "stroke " + (seq + 1));
     }
 
+    /** The client whose turn it is, once all of them have seen the same events; null once the round is over. */
+    static TestClient whoseTurn(TestClient... clients) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (System.nanoTime() < deadline) {
+            long seq = -1;
+            boolean same = true;
+            TestClient turn = null;
+            for (TestClient c : clients) {
+                c.drain();
+                if (seq >= 0 && c.mirror.seq() != seq) same = false;
+                seq = c.mirror.seq();
+                if (c.mirror.isMyTurn()) turn = c;
+            }
+            if (same && turn != null) return turn;
+            if (same && clients[0].mirror.round() != null && clients[0].mirror.round().isOver()) return null;
+            Thread.sleep(10);
+        }
+        throw new AssertionError("nobody's turn within 60 s");
+    }
+
     /** Messages waiting, applied (a drain before asserting that nothing else came). */
     List<ObjectNode> drain() {
         List<ObjectNode> out = new ArrayList<>();

@@ -87,12 +87,7 @@ class WebPageBrowserTest {
                 assertTrue(Files.size(phone) > 5000, "a screenshot of the page at a phone's width");
             }
             // Eve and Bob finish the hole (picking up at the limit): the leaderboard lists them.
-            while (!eve.mirror.round().isOver()) {
-                TestClient next = eve.mirror.isMyTurn() ? eve : bob;
-                next.awaitMyTurn();
-                next.putt(0.2, 0);
-                eve.awaitState(() -> eve.mirror.seq() == next.mirror.seq(), "the stroke");
-            }
+            for (TestClient next; (next = TestClient.whoseTurn(eve, bob)) != null; ) next.putt(0.2, 0);
             String board = browser(chromium, "--virtual-time-budget=3000", "--dump-dom",
                     "http://127.0.0.1:" + server.port() + "/course/flat");
             assertTrue(board.contains("Leaderboard: flat"), board);

@@ -49,7 +49,7 @@ class GameStoreTest {
     }
 
     private static void exercise(GameStore s, String prefix) throws Exception {
-        String room = (prefix + "ROOM0000").substring(0, 8);
+        String room = (prefix + "ROOMXXXX").substring(0, 7) + "0";
         long t = 1_700_000_000_000L;
         s.createRoom(new StoredRoom(room, "lake", true, 10, 2, "lobby", t, null,
                 List.of(new StoredSeat(0, "Ann", false, null, "ab".repeat(32), false)), List.of())).get();
@@ -78,7 +78,7 @@ class GameStoreTest {
         assertEquals("planner", back.seatList().get(1).level());
 
         // A second, better round by Ann: the board shows each player's best once, fewest strokes first.
-        String room2 = (prefix + "ROOM1111").substring(0, 8);
+        String room2 = (prefix + "ROOMXXXX").substring(0, 7) + "1";
         s.createRoom(new StoredRoom(room2, "lake", true, 10, 1, "playing", t, "{}", List.of(), List.of())).get();
         s.appendEvent(room2, 1, "{}", List.of(new Score("lake", "Ann", null, 3, 3, room2, 0, t + 200)), "finished", t + 200).get();
         List<Score> board = s.leaderboard("lake", 10).get();
