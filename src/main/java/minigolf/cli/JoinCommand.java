@@ -28,10 +28,10 @@ final class JoinCommand implements Callable<Integer> {
     String server;
 
     @Option(names = "--create", paramLabel = "COURSE_OR_ROUND", description = "Open a room on this course or round "
-            + "(a name the server offers, e.g. lake or meadowbrook-9).")
+            + "(a name the server offers, e.g. lake or meadowbrook-9; default: none, give this or --room).")
     String create;
 
-    @Option(names = "--room", paramLabel = "CODE", description = "Take a seat in this room.")
+    @Option(names = "--room", paramLabel = "CODE", description = "Take a seat in this room (default: none, give this or --create).")
     String room;
 
     @Option(names = "--seats", paramLabel = "N", description = "Seats in a new room, 1 to 4, server bots included "
@@ -39,10 +39,10 @@ final class JoinCommand implements Callable<Integer> {
     int seats = 2;
 
     @Option(names = "--server-bot", paramLabel = "LEVEL", description = "Fill one of the new room's seats with a bot "
-            + "the server plays (repeatable).")
+            + "the server plays (repeatable; default: none).")
     List<String> serverBots = new ArrayList<>();
 
-    @Option(names = "--private", description = "Leave the new room off the server's web page.")
+    @Option(names = "--private", description = "Leave the new room off the server's web page (default: off, the room is listed).")
     boolean unlisted;
 
     @Option(names = "--name", paramLabel = "NAME", required = true, description = "The player's name (1 to 24 characters).")
@@ -52,7 +52,7 @@ final class JoinCommand implements Callable<Integer> {
     String bot;
 
     @Option(names = "--seat-file", paramLabel = "FILE", description = "Keep the seat's token in FILE; when FILE holds a "
-            + "seat, resume it instead (a client restarted after a crash).")
+            + "seat, resume it instead (a client restarted after a crash; default: none).")
     Path seatFile;
 
     @Override
