@@ -1,7 +1,5 @@
 package minigolf.classic;
 
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -28,12 +26,8 @@ public final class ClassicReport {
     private ClassicReport() {
     }
 
-    /** A track of the index with its human statistics (NaN where the file has none). */
-    public record Track(String folder, String name, double humanAverage, int humanBest, String course) {
-    }
-
     /** The import: tracks in the index, files that failed (with why), courses that did not load (with why). */
-    public record Import(List<Track> tracks, List<String> failed, List<String> notLoaded) {
+    public record Import(List<ClassicIndex.Entry> tracks, List<String> failed, List<String> notLoaded) {
         public int files() {
             return tracks.size() + failed.size();
         }
@@ -49,28 +43,18 @@ public final class ClassicReport {
 
     /** Reads an import's index and (if {@code load}) loads every course as the game does. */
     public static Import readImport(Path imported, boolean load) throws IOException {
-        Path indexFile = imported.resolve(TrackImporter.INDEX);
-        JsonNode index = new ObjectMapper().readTree(indexFile.toFile());
-        if (index == null || !index.path("tracks").isArray()) throw new IOException(indexFile + ": not an import-tracks index");
-        List<Track> tracks = new ArrayList<>();
+        ClassicIndex.Index index = ClassicIndex.read(imported);
         List<String> notLoaded = new ArrayList<>();
-        for (JsonNode t : index.get("tracks")) {
-            String course = t.path("course").asText();
-            Path file = imported.resolve(course);
-            String folder = file.getParent().getFileName().toString();
-            tracks.add(new Track(folder, t.path("name").asText(), t.has("averageStrokes") ? t.get("averageStrokes").asDouble()
-                    : Double.NaN, t.path("bestStrokes").asInt(0), course));
-            if (load) {
+        if (load) {
+            for (ClassicIndex.Entry t : index.tracks()) {
                 try {
-                    World.load(file);
+                    World.load(t.course());
                 } catch (CourseException | RuntimeException e) {
-                    notLoaded.add(course + ": " + e.getMessage());
+                    notLoaded.add(e.getMessage());
                 }
             }
         }
-        List<String> failed = new ArrayList<>();
-        for (JsonNode f : index.path("failed")) failed.add(f.path("source").asText() + ": " + f.path("reason").asText());
-        return new Import(List.copyOf(tracks), List.copyOf(failed), List.copyOf(notLoaded));
+        return new Import(index.tracks(), index.failed(), List.copyOf(notLoaded));
     }
 
     /** Reads an experiment's runs: its results.csv, else its runs.csv (a run still going). */
@@ -95,8 +79,8 @@ public final class ClassicReport {
 
     /** Each bot's figures over the runs on tracks of the index (runs on other courses are left out). */
     public static List<BotFigures> figures(Import imp, List<RunRecord> runs) {
-        Map<String, Track> byFolder = new LinkedHashMap<>();
-        for (Track t : imp.tracks()) byFolder.put(t.folder(), t);
+        Map<String, ClassicIndex.Entry> byFolder = new LinkedHashMap<>();
+        for (ClassicIndex.Entry t : imp.tracks()) byFolder.put(t.folder(), t);
         Map<String, List<RunRecord>> byBot = new LinkedHashMap<>();
         for (RunRecord r : runs) {
             if (byFolder.containsKey(r.course())) byBot.computeIfAbsent(r.bot(), k -> new ArrayList<>()).add(r);
@@ -107,17 +91,17 @@ public final class ClassicReport {
             double strokes = 0, human = 0, slowest = 0;
             java.util.Set<String> tracks = new java.util.HashSet<>();
             for (RunRecord r : e.getValue()) {
-                Track t = byFolder.get(r.course());
+                ClassicIndex.Entry t = byFolder.get(r.course());
                 tracks.add(t.folder());
                 if (r.holed() && r.strokes() <= STROKE_TARGET) holedWithin++;
-                if (t.humanBest() > 0) {
+                if (t.bestStrokes() > 0) {
                     withBest++;
-                    if (r.holed() && r.strokes() <= t.humanBest()) atMostBest++;
+                    if (r.holed() && r.strokes() <= t.bestStrokes()) atMostBest++;
                 }
-                if (!Double.isNaN(t.humanAverage())) {
+                if (!Double.isNaN(t.averageStrokes())) {
                     withAverage++;
                     strokes += r.strokes();
-                    human += t.humanAverage();
+                    human += t.averageStrokes();
                 }
                 slowest = Math.max(slowest, r.wallMs() / 1000);
             }
@@ -132,7 +116,7 @@ public final class ClassicReport {
     public static String markdown(Import imp, List<BotFigures> bots) {
         StringBuilder sb = new StringBuilder();
         int loaded = imp.tracks().size() - imp.notLoaded().size();
-        sb.append(String.format(Locale.ROOT, "Import: %d of %d files imported (%s), %d of %d tracks load%n",
+        sb.append(String.format(Locale.ROOT, "Import: %d of %d tracks imported (%s; a file not imported counts as one track), %d of %d load%n",
                 imp.tracks().size(), imp.files(), percent(imp.tracks().size(), imp.files()), loaded, imp.tracks().size()));
         for (String f : imp.failed()) sb.append("- not imported: ").append(f).append('\n');
         for (String f : imp.notLoaded()) sb.append("- does not load: ").append(f).append('\n');

@@ -3,16 +3,21 @@ package minigolf.classic;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Path;
 import java.util.List;
 import minigolf.bot.experiment.RunRecord;
 import org.junit.jupiter.api.Test;
 
 class ClassicReportTest {
+    static ClassicIndex.Entry entry(String folder, double average, int best) {
+        return new ClassicIndex.Entry(folder, "A", List.of("basic"), 100, average, best, 1,
+                Path.of("courses", folder, "course.json"), folder);
+    }
+
     @Test
     void figuresCompareWithTheHumanScores() {
         ClassicReport.Import imp = new ClassicReport.Import(List.of(
-                new ClassicReport.Track("A-One", "One", 4.0, 2, "courses/A-One/course.json"),
-                new ClassicReport.Track("A-Two", "Two", 8.0, 3, "courses/A-Two/course.json")),
+                entry("A-One", 4.0, 2), entry("A-Two", 8.0, 3)),
                 List.of("bad.track: line 4 (T): ..."), List.of());
         List<RunRecord> runs = List.of(
                 new RunRecord("A-One", "planner", 1, true, 2, false, 100, 1500),
@@ -34,7 +39,7 @@ class ClassicReportTest {
         assertEquals(9.0, p.slowestSeconds(), 1e-12);
         assertEquals(1.5, f.get(1).ratio(), 1e-12);
         String md = ClassicReport.markdown(imp, f);
-        assertTrue(md.startsWith("Import: 2 of 3 files imported (2/3 = 66.7%), 2 of 2 tracks load\n- not imported: bad.track"), md);
+        assertTrue(md.startsWith("Import: 2 of 3 tracks imported (2/3 = 66.7%; a file not imported counts as one track), 2 of 2 load\n- not imported: bad.track"), md);
         assertTrue(md.contains("| planner | 2 | 3 | 2/3 = 66.7% | 1/3 = 33.3% | 12.33 | 6.67 | 1.85 | 9 s |"), md);
     }
 }
