@@ -15,8 +15,9 @@ import minigolf.bot.planner.PlannerBot;
  * {@code experiment} play the error without knowing of it, and the same request gives the same shot).
  *
  * <p>A player whose hole goes badly takes more care: from stroke {@link #CAREFUL_FROM} on (penalties
- * included) the error halves with every stroke, so every level holes out within the game's limit
- * of 10 strokes (the planner, exact, needs at most a few from anywhere on our courses).
+ * included) the error halves with every stroke, so the level soon plays like the planner and holes
+ * out within the game's limit of 10 strokes (a bound on the tail, not a guarantee; every game
+ * measured in docs/bots.md holed within it).
  */
 public final class LevelBot implements Bot {
     /** The stroke (0-based, penalties included) from which the error halves with every stroke. */
