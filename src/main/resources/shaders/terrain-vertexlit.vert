@@ -22,6 +22,7 @@ out vec3 vSunlit;    // sun diffuse + specular, scaled by the sun's visibility p
 out vec3 vShadowCoord;
 out float vHaze;
 out float vStripes;
+out vec3 vNormal;
 
 // The balls' shadows redraw these surfaces within a scissor at GL_LEQUAL (SceneRenderer): the depth must match exactly.
 invariant gl_Position;
@@ -35,11 +36,12 @@ void main() {
     float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;
     vUnlit = aColor.rgb * ambient;
     vSunlit = aColor.rgb * uSunColor * diffuse + uSunColor * specular * uSpecularStrength;
-    vHaze = clamp(1.0 - exp(-length(uEye - aPosition) * 0.004), 0.0, 0.6);
+    vHaze = hazeAmount(length(uEye - aPosition));
     vec4 p = uLightViewProjection * vec4(aPosition + n * uShadowNormalOffset, 1.0);
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;
     vWorld = aPosition;
     vStripes = aColor.a;
+    vNormal = n;
     gl_ClipDistance[0] = dot(uClipPlane, vec4(aPosition, 1.0));
     gl_Position = uViewProjection * vec4(aPosition, 1.0);
 }

@@ -388,6 +388,7 @@ public final class GameApp implements UiActions, UiView {
         renderer = null;
         renderer = new SceneRenderer(world.course(), world.terrain(),
                 settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, quality);
+        if (sounds != null) sounds.setAmbience(renderer.theme().ambience());
         if (coursePath != null) renderer.setCourseFolder(coursePath.toAbsolutePath().getParent());
         renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0); // FXAA only without MSAA
         int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
