@@ -23,8 +23,6 @@ out vec3 vUnlit;     // ambient part, never shadowed
 out vec3 vSunlit;    // sun diffuse + specular, scaled by the sun's visibility per pixel
 out vec3 vShadowCoord;
 out float vHaze;
-out vec3 vNormal;
-out float vMaterial;
 
 // The balls' shadows redraw these surfaces within a scissor at GL_LEQUAL (SceneRenderer): the depth must match exactly.
 invariant gl_Position;
@@ -38,8 +36,6 @@ void main() {
     vec3 v = normalize(uEye - world.xyz);
     vec3 l = normalize(uSunDirection);
     vec3 albedo = aColor.rgb * uTint;
-    vNormal = n;
-    vMaterial = aColor.a;
     vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * n.z);
     float diffuse = max(dot(n, l), 0.0);
     float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;

@@ -22,7 +22,6 @@ out vec3 vSunlit;    // sun diffuse + specular, scaled by the sun's visibility p
 out vec3 vShadowCoord;
 out float vHaze;
 out float vStripes;
-out vec3 vNormal;
 
 // The balls' shadows redraw these surfaces within a scissor at GL_LEQUAL (SceneRenderer): the depth must match exactly.
 invariant gl_Position;
@@ -41,7 +40,6 @@ void main() {
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;
     vWorld = aPosition;
     vStripes = aColor.a;
-    vNormal = n;
     gl_ClipDistance[0] = dot(uClipPlane, vec4(aPosition, 1.0));
     gl_Position = uViewProjection * vec4(aPosition, 1.0);
 }

@@ -2,14 +2,10 @@
 // vertices; only the shadows (shadow.glsl) are computed per pixel.
 #include "lighting.glsl"
 #include "shadow.glsl"
-#include "materials.glsl"
 #ifdef TERRAIN_STRIPES
 #include "stripes.glsl"
 in float vStripes;
-#else
-in float vMaterial;
 #endif
-in vec3 vNormal;
 
 in vec3 vWorld;
 in vec3 vUnlit;
@@ -22,13 +18,10 @@ out vec4 fragColor;
 void main() {
     float sunlight = mapVisibilityAt(vShadowCoord) * ballVisibility(vWorld);
     vec3 color = vUnlit + vSunlit * sunlight;
-    // The material's detail, one texture read: the lighting is linear in the albedo, so scaling the
-    // lit colour is scaling the albedo (but for the faint specular).
+    // No material detail here: on llvmpipe one texture-array read per pixel cost the terrain and the
+    // obstacles several times their frame (docs/rendering.md); the high tier draws it.
 #ifdef TERRAIN_STRIPES
-    float grass = vStripes > 1.5 ? 0.0 : vStripes;
-    color *= stripeFactor(vWorld.x, grass) * groundDetail(vWorld, vNormal, vStripes).rgb;
-#else
-    color *= obstacleDetail(vWorld, vNormal, vMaterial).rgb;
+    color *= stripeFactor(vWorld.x, vStripes > 1.5 ? 0.0 : vStripes);
 #endif
     fragColor = vec4(mix(color, uFogColor, vHaze), 1.0);
 }

@@ -56,12 +56,13 @@ public final class ObstacleMeshes {
      * {@link #CLASSIC}: the flat colours and exact square slabs of before (the editor, tests).
      */
     public record Style(float[] wallColor, float[] boxColor, Material wallMaterial, Material boxMaterial,
-                        boolean roundedWalls, TreeLook trees) {
-        public static final Style CLASSIC = new Style(WALL_COLOR, BOX_COLOR, Material.PLAIN, Material.PLAIN, false, TreeLook.CROWN);
+                        boolean roundedWalls, boolean posts, TreeLook trees) {
+        public static final Style CLASSIC = new Style(WALL_COLOR, BOX_COLOR, Material.PLAIN, Material.PLAIN, false, false,
+                TreeLook.CROWN);
 
-        /** Whether short trees are drawn as posts (see {@link #POST_HEIGHT}). */
-        boolean posts() {
-            return roundedWalls;
+        /** The same with square walls (the physics' slabs: a quarter of the rounded rails' triangles, for software rasterisers). */
+        public Style squareWalls() {
+            return new Style(wallColor, boxColor, wallMaterial, boxMaterial, false, posts, trees);
         }
 
         /** A world's rails and boxes. */
@@ -73,7 +74,7 @@ public final class ObstacleMeshes {
                 case SNOW -> TreeLook.SNOWY_PINE;
                 case GRASS -> TreeLook.CROWN;
             };
-            return new Style(m.railColor().toArray(), m.boxColor().toArray(), rail, rail, true, trees);
+            return new Style(m.railColor().toArray(), m.boxColor().toArray(), rail, rail, true, true, trees);
         }
     }
 

@@ -105,9 +105,11 @@ public final class SceneRenderer implements AutoCloseable {
             s = new SkyPass(!theme.scenery().sea() ? null : new SkyPass.Sea((float) theme.scenery().shoreDistance(),
                     new float[]{(float) course.bounds().minX(), (float) course.bounds().minY(), (float) course.bounds().maxX(),
                             (float) course.bounds().maxY()}, theme.materials().water().toArray(), theme.materials().sand().toArray()),
-                    MaterialTextures.groundLayer(theme));
+                    quality.vertexLit() ? -1 : MaterialTextures.groundLayer(theme));
             t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing());
-            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit(), ObstacleMeshes.Style.of(theme));
+            // Rounded rails cost a software rasteriser about four times the triangles: square ones there.
+            ObstacleMeshes.Style style = ObstacleMeshes.Style.of(theme);
+            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit(), quality.vertexLit() ? style.squareWalls() : style);
             o = new ObjectsPass(course, surface, quality.vertexLit());
             u = new SurroundingsPass(course, TerrainMesh.skirtBase(t.minHeight(), course.bounds()), theme,
                     SurroundingsPass.shareFor(quality));
