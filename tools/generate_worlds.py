@@ -92,13 +92,13 @@ def seaside():
     h.append(("01-harbour-wall", course("Harbour Wall", "0.1 + 0.03*exp(-(x+0.8)^2/0.8)", lane(-3.5, 3.5, 0.8),
                                         (-3.0, 0.3), (2.1, -0.5),
                                         wall([(1.6, -0.8), (1.6, 0.2)], 0.12) + [box(1.6, 0.2, 0.16, 0.16, 0.0, 0.18)],
-                                        world=SEA), 2))
+                                        world=SEA), 3))
     # 2. Dune Ridge: a grassy ridge across the lane with a low saddle near the top rail; over the
     # ridge needs pace, through the saddle needs aim.
     ridge = "0.1 + 0.15*exp(-(x-0.2)^2/0.12)*(1-0.85*exp(-(y-0.45)^2/0.05))"
-    h.append(("02-dune-ridge", course("Dune Ridge", ridge, lane(-3.5, 3.5, 0.9), (-3.0, -0.3), (2.8, -0.35),
-                                      [box(2.2, 0.25, 0.5, 0.12, 0.0, 0.2, 25), box(1.3, -0.3, 0.35, 0.35, 0.0, 0.2, 45, 0.9)],
-                                      world=SEA), 2))
+    h.append(("02-dune-ridge", course("Dune Ridge", ridge, lane(-3.5, 3.5, 0.9), (-3.0, -0.3), (2.85, -0.55),
+                                      [box(2.2, 0.25, 0.5, 0.12, 0.0, 0.2, 25), box(1.3, -0.3, 0.35, 0.35, 0.0, 0.2, 45, 0.9)]
+                                      + pocket(2.5, -0.9, 3.1, -0.15), world=SEA), 2))
     # 3. Tidal Pool: a pool fills the middle of a wide fairway, its banks sloping in. The long way
     # round the top is wide; the bottom shore is short and narrow.
     pool = "0.12 - 0.36*" + g(0.2, -0.1, 1.3, 0.4)
@@ -113,7 +113,7 @@ def seaside():
     # the straight putt a bank, the safe play a lay-up before it.
     h.append(("05-sea-breeze", course("Sea Breeze", "0.25 + 0.07*y + 0.015*sin(1.3*x)", lane(-5, 5, 0.85),
                                       (-4.4, 0.4), (4.2, 0.45),
-                                      wall([(0.6, -0.85), (0.6, 0.35)], 0.1) + wall([(3.2, 0.85), (3.2, -0.2)], 0.1), world=SEA), 3))
+                                      wall([(0.6, -0.85), (0.6, 0.35)], 0.1) + wall([(3.2, 0.85), (3.2, -0.2)], 0.1), world=SEA), 4))
     # 6. Lighthouse: a round tower stands between tee and cup; the cup is tucked behind it. Go
     # round either side (two putts) or bank off the side rail for the ace.
     # The cup hides in the keeper's yard behind the tower, open only towards the end rail.

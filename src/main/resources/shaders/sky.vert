@@ -24,10 +24,13 @@ uniform vec2 uGround;
 uniform vec3 uGroundColor;
 uniform vec2 uFade;          // horizontal distances over which the meadow fades into the sky
 #ifdef SEA
-// A seaside world: the ground ends at a beach round the course and the sea reaches to the horizon;
-// which of them a pixel shows is decided per pixel (sky.frag), their colours here.
+// A seaside world: the ground ends at a beach round the course and the sea reaches to the horizon.
+// Their colours are computed here; which of them a pixel shows is decided per pixel (sky.frag,
+// SEA_PIXEL) in the cells wholly below the horizon, per corner in the others (they lie far away).
 uniform vec3 uSeaColor;
 uniform vec3 uBeachColor;
+uniform vec4 uCourseRect;    // the course's bounds: min x, min y, max x, max y
+uniform float uShore;        // the shore's distance from the bounds (metres)
 out vec3 vSea;
 out vec3 vBeach;
 #endif
@@ -78,6 +81,10 @@ void main() {
         sea += uSunColor * pow(max(dot(r, sun), 0.0), 40.0) * 0.35;
         vSea = mix(haze(sea, p), vSky, f);
         vBeach = mix(haze(shade(uBeachColor, vec3(0.0, 0.0, 1.0), p, 0.03, 8.0), p), vSky, f);
+#ifndef SEA_PIXEL
+        vec2 outside = max(max(uCourseRect.xy - p.xy, p.xy - uCourseRect.zw), 0.0);
+        if (length(outside) > uShore) lit = haze(sea, p);
+#endif
 #endif
         vSky = mix(lit, vSky, f);
         vGlow *= f; // the fragment adds it: mix(lit, sky + glow, f) in all

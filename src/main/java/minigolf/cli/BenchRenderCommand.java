@@ -119,10 +119,13 @@ final class BenchRenderCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** Whether the file is a round (a JSON object with "holes") rather than a course. */
+    /**
+     * Whether the file is a round (a JSON object with "holes") rather than a course. Read as every
+     * file from others is (a regular UTF-8 file under the course limit; never /dev/zero or a FIFO).
+     */
     static boolean isRound(Path file) {
         try {
-            String text = java.nio.file.Files.readString(file);
+            String text = minigolf.io.TextFiles.read(file, minigolf.course.Limits.COURSE_FILE_BYTES);
             return text.contains("\"holes\"") && !text.contains("\"terrain\"");
         } catch (java.io.IOException | RuntimeException e) {
             return false; // the course loader reports what is wrong with it

@@ -30,6 +30,8 @@ public final class ObstaclesPass implements RenderPass {
     private int solidTriangles, decorationTriangles;
     private List<ObstacleMeshes.Piece> solidPieces = List.of(), decorationPieces = List.of();
     private final ObstacleMeshes.Style style;
+    /** Nothing is drawn below this height (the plinth's foot): the rails' footings reach 1 m into the ground. */
+    private final double floor;
 
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
         this(obstacles, ground, false);
@@ -42,9 +44,18 @@ public final class ObstaclesPass implements RenderPass {
 
     /** As above, walls and boxes in a world's style (colours, materials, rounded rails). */
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground, boolean vertexLit, ObstacleMeshes.Style style) {
+        this(obstacles, ground, vertexLit, style, Double.NEGATIVE_INFINITY);
+    }
+
+    /**
+     * As above, drawn down to {@code floor} only: the course's plinth stands on the ground there, and
+     * the footings below it (collision only) would show under the plinth from a high view.
+     */
+    public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground, boolean vertexLit, ObstacleMeshes.Style style, double floor) {
         this.shader = new LitShader(vertexLit ? "object-vertexlit" : "object");
         this.ground = ground;
         this.style = style;
+        this.floor = floor;
         try {
             setObstacles(obstacles);
         } catch (RuntimeException e) {
@@ -58,6 +69,10 @@ public final class ObstaclesPass implements RenderPass {
         obstacles = list == null ? List.of() : List.copyOf(list);
         ObstacleMeshes.Built built = ObstacleMeshes.build(obstacles, ground, this::materialsOf,
                 ObstacleMeshes.CrownStyle.COURSE, style);
+        if (floor > Double.NEGATIVE_INFINITY) {
+            float[] v = built.solid().vertices();
+            for (int i = 2; i < v.length; i += built.solid().stride()) v[i] = (float) Math.max(v[i], floor);
+        }
         freeMeshes();
         solidTriangles = built.solid().triangleCount();
         decorationTriangles = built.decoration().triangleCount();

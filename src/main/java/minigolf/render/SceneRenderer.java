@@ -109,7 +109,8 @@ public final class SceneRenderer implements AutoCloseable {
             t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing());
             // Rounded rails cost a software rasteriser about four times the triangles: square ones there.
             ObstacleMeshes.Style style = ObstacleMeshes.Style.of(theme);
-            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit(), quality.vertexLit() ? style.squareWalls() : style);
+            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit(), quality.vertexLit() ? style.squareWalls() : style,
+                    TerrainMesh.skirtBase(t.minHeight(), course.bounds()));
             o = new ObjectsPass(course, surface, quality.vertexLit());
             u = new SurroundingsPass(course, TerrainMesh.skirtBase(t.minHeight(), course.bounds()), theme,
                     SurroundingsPass.shareFor(quality));

@@ -65,10 +65,12 @@ public final class SkyPass implements RenderPass {
     SkyPass(Sea sea, int groundLayer) {
         this.sea = sea;
         this.groundLayer = groundLayer;
-        String s = sea != null ? "SEA" : "PLAIN_GROUND";
-        String g = groundLayer >= 0 ? "GROUND_DETAIL" : "PLAIN_GROUND";
-        programs = new ShaderProgram[]{ShaderProgram.load("sky", s, g), ShaderProgram.load("sky", "CLOUDS", s),
-                ShaderProgram.load("sky", "SUN_DISC", s, g), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC", s)};
+        String s = sea != null ? "SEA" : "NO_SEA";
+        // Per pixel (the shoreline, the ground's detail) only in the cells wholly below the horizon.
+        String p = sea != null ? "SEA_PIXEL" : "NO_SEA_PIXEL";
+        String g = groundLayer >= 0 ? "GROUND_DETAIL" : "NO_GROUND_DETAIL";
+        programs = new ShaderProgram[]{ShaderProgram.load("sky", s, p, g), ShaderProgram.load("sky", "CLOUDS", s),
+                ShaderProgram.load("sky", "SUN_DISC", s, p, g), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC", s)};
         glBindVertexArray(vao);
         FloatBuffer corners = MemoryUtil.memAllocFloat((GRID_X + 1) * (GRID_Y + 1) * 2);
         try {

@@ -229,8 +229,8 @@ public final class PropMeshes {
     /** A low, smooth mound: a snow drift (white) or a dune (sand below, marram grass on top). */
     public static void mound(MeshWriter w, double x, double y, double z, double size, long seed, float[] base, float[] top) {
         Random r = new Random(seed);
-        w.lump(x, y, z - size * 0.12, size * (0.5 + 0.3 * r.nextDouble()), size * (0.35 + 0.2 * r.nextDouble()),
-                size * 0.22, 0.12, seed, false, z - 0.05, base, top);
+        w.lump(x, y, z - size * 0.1, size * (0.5 + 0.3 * r.nextDouble()), size * (0.35 + 0.2 * r.nextDouble()),
+                size * 0.16, 0.1, seed, false, z - 0.02, base, top);
     }
 
     static float[] shade(float[] c, double k) {

@@ -41,7 +41,7 @@ public final class SceneryPlan {
             case LIGHTHOUSE -> new Rule(0, 0, 1, 1, 0);
             case HUT -> new Rule(0, 0, 1, 1, 2.3);
             case SNOWDRIFT -> new Rule(1.5, 25, 1.5, 4.0, 2.5);
-            case DUNE -> new Rule(3, 30, 2.5, 6.0, 3.0);
+            case DUNE -> new Rule(3, 30, 2.0, 4.0, 3.0);
         };
     }
 

@@ -38,13 +38,18 @@ class WorldRoundsTest {
                 assertTrue(h.course().startsWith("../worlds/" + world + "/"), h.course());
             }
             assertTrue(r.par() >= 40 && r.par() <= 54, world + " par " + r.par());
+            // The docs say the same par.
+            String docs = java.nio.file.Files.readString(RoundFilesTest.rounds().resolve("../../docs/worlds.md").normalize());
+            assertTrue(docs.contains("| `" + world + "` | " + r.name() + " | " + r.par() + " |"), world + ": docs/worlds.md's par");
+            String readme = java.nio.file.Files.readString(RoundFilesTest.rounds().resolve("../../README.md").normalize());
+            assertTrue(readme.contains("**" + r.name() + "** (par " + r.par() + ")"), world + ": README's par");
         }
     }
 
     @Test
     void aSampleOfHolesIsPlayableByTheProOpponentWithinPar() throws Exception {
         // The first hole of each world, 2 seeds: the full check (10 seeds, every hole) is par-check's.
-        ParCheck.Opponent pro = ParCheck.Opponent.parse("pro", "planner@0.03");
+        ParCheck.Opponent pro = ParCheck.Opponent.parse("pro", ParCheck.PRO_STAND_IN);
         ParCheck.Settings s = new ParCheck.Settings(2, 8, 40_000, 0, 0, 1);
         for (String world : new String[]{"seaside", "canyon", "winter"}) {
             Round r = load(world);
