@@ -187,20 +187,6 @@ final class BenchRenderCommand implements Callable<Integer> {
         return out;
     }
 
-    /** The working directory's git commit (short), or "unknown" outside a checkout. */
-    static String commit() {
-        try {
-            Process p = new ProcessBuilder("git", "rev-parse", "--short", "HEAD").redirectErrorStream(true).start();
-            String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).trim();
-            return p.waitFor() == 0 && out.matches("[0-9a-f]{4,40}") ? out : "unknown";
-        } catch (java.io.IOException | RuntimeException e) {
-            return "unknown";
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return "unknown";
-        }
-    }
-
     /** The 1, 5 and 15 minute load averages (Linux), or null. */
     static double[] loadAverage() {
         try {
@@ -218,7 +204,7 @@ final class BenchRenderCommand implements Callable<Integer> {
         String renderer = results.isEmpty() ? "?" : results.get(0).path("renderer").asText();
         t.append("`minigolf bench-render ").append(course).append(" --quality ").append(q.name()).append(" --size ")
                 .append(s.width()).append('x').append(s.height()).append(" --frames ").append(frames).append("`: ")
-                .append(renderer).append(", ").append(msaa).append("x MSAA, commit ").append(commit())
+                .append(renderer).append(", ").append(msaa).append("x MSAA, built from commit ").append(VersionInfo.commit())
                 .append(load == null ? "" : String.format(java.util.Locale.ROOT, ", load average %.2f / %.2f / %.2f (1/5/15 min) at the start", load[0], load[1], load[2]))
                 .append(".\n\n");
         t.append("| hole | course | par | ms a frame | CPU ms a frame | fps |\n|---|---|---:|---:|---:|---:|\n");
