@@ -29,10 +29,10 @@ final class ParCheckCommand implements Callable<Integer> {
 
     @Option(names = "--medium", paramLabel = "BOT[@SIGMA]",
             description = "The medium opponent: a bot and the velocity noise its strokes get, m/s (default: ${DEFAULT-VALUE}).")
-    String medium = ParCheck.MEDIUM_STAND_IN;
+    String medium = ParCheck.MEDIUM;
 
     @Option(names = "--pro", paramLabel = "BOT[@SIGMA]", description = "The pro opponent (default: ${DEFAULT-VALUE}).")
-    String pro = ParCheck.PRO_STAND_IN;
+    String pro = ParCheck.PRO;
 
     @Option(names = "--seeds", paramLabel = "N", description = "Games per hole and opponent, seeds 1..N (default: ${DEFAULT-VALUE}).")
     int seeds = 10;

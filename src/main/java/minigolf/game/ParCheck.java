@@ -30,26 +30,20 @@ public final class ParCheck {
     public static final double MEDIUM_ALLOWANCE = 1.5;
     /** The pro may ace on at most this share of the seeds of a hole not meant as an ace hole. */
     public static final double PRO_ACE_SHARE = 1.0 / 3;
-    /**
-     * Stand-ins for the game's medium and pro levels until they exist (docs/worlds.md): the planner
-     * with every stroke's velocity off by N(0, σ) per component. With σ = 0.05 m/s the engine makes
-     * 81% of putts from 1 m, 38% from 4 m and 23.5% from 7 m on flat ground (docs/bots.md, "Noise"),
-     * about the PGA Tour's 88% from 1.2 m, 40% from 3 m and 15% from 6 m; the medium player errs
-     * twice as much (38% from 1 m, 12% from 4 m).
-     */
-    public static final String PRO_STAND_IN = "planner@0.05", MEDIUM_STAND_IN = "planner@0.1";
+    /** The game's opponents by level (minigolf.bot.level.Level): they carry their own human-like error. */
+    public static final String PRO = "pro", MEDIUM = "medium";
 
     /**
-     * An opponent: a bot of {@link Bots} and the noise its strokes are played with, under a label
-     * ("medium", "pro"). {@code spec} reads {@code BOT} or {@code BOT@SIGMA} (σ of the played
-     * velocity per component, m/s).
+     * An opponent: a bot of {@link Bots} (a level such as {@code medium} or {@code pro}, or an
+     * algorithm) and extra noise its strokes are played with, under a label. {@code spec} reads
+     * {@code BOT} or {@code BOT@SIGMA} (σ of the played velocity per component, m/s).
      */
     public record Opponent(String label, String bot, double velocityNoise) {
         public static Opponent parse(String label, String spec) {
             String[] p = spec.split("@", 2);
             String bot = p[0].trim();
-            if (!Bots.names().contains(bot)) {
-                throw new IllegalArgumentException(label + ": no bot '" + bot + "' (known: " + String.join(", ", Bots.names()) + ")");
+            if (!Bots.allNames().contains(bot)) {
+                throw new IllegalArgumentException(label + ": no bot '" + bot + "' (known: " + String.join(", ", Bots.allNames()) + ")");
             }
             double sigma = 0;
             if (p.length == 2) {

@@ -263,6 +263,16 @@ public final class SceneRenderer implements AutoCloseable {
         objects.setAim(aim);
     }
 
+    /** Rings the current player's ball (null: no ring). */
+    public void setMarker(BallView ball) {
+        objects.setMarker(ball);
+    }
+
+    /** The trail behind the rolling ball ({@link BallTrail#path()}) in its colour; null draws none. */
+    public void setTrail(float[] path, float[] rgb) {
+        objects.setTrail(path, rgb);
+    }
+
     /**
      * Draws the minimap, a top-down view of the whole course (terrain, water, obstacles, hole, balls), into a
      * square of {@code sizePx} pixels whose TOP-LEFT corner is at (x, y) framebuffer pixels from the

@@ -11,6 +11,7 @@ class ParCheckTest {
     void opponentsAreABotAndAVelocityNoise() {
         assertEquals(new ParCheck.Opponent("pro", "planner", 0.03), ParCheck.Opponent.parse("pro", "planner@0.03"));
         assertEquals(new ParCheck.Opponent("m", "planner", 0), ParCheck.Opponent.parse("m", "planner"));
+        assertEquals(new ParCheck.Opponent("medium", "medium", 0), ParCheck.Opponent.parse("medium", ParCheck.MEDIUM), "a level");
         assertEquals("planner@0.03", ParCheck.Opponent.parse("pro", "planner@0.03").toString());
         IllegalArgumentException bot = assertThrows(IllegalArgumentException.class, () -> ParCheck.Opponent.parse("--pro", "hal@0.1"));
         assertTrue(bot.getMessage().startsWith("--pro: no bot 'hal' (known: ") && bot.getMessage().contains("planner"), bot.getMessage());

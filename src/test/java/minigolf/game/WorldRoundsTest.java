@@ -49,7 +49,7 @@ class WorldRoundsTest {
     @Test
     void aSampleOfHolesIsPlayableByTheProOpponentWithinPar() throws Exception {
         // The first hole of each world, 2 seeds: the full check (10 seeds, every hole) is par-check's.
-        ParCheck.Opponent pro = ParCheck.Opponent.parse("pro", ParCheck.PRO_STAND_IN);
+        ParCheck.Opponent pro = ParCheck.Opponent.parse("pro", ParCheck.PRO);
         ParCheck.Settings s = new ParCheck.Settings(2, 8, 40_000, 0, 0, 1);
         for (String world : new String[]{"seaside", "canyon", "winter"}) {
             Round r = load(world);
