@@ -4,13 +4,14 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import minigolf.course.Zone;
+import minigolf.theme.Themes;
 import org.junit.jupiter.api.Test;
 
-/** Hazard zones, ice and mud (the classic tracks' surfaces) have colours of their own. */
+/** Hazard zones and mud (the classic tracks' surfaces) have colours of their own; ice too. */
 class HazardColoursTest {
     static float[] colour(double mu, Zone.Hazard hazard) {
         float[] rgb = new float[3];
-        double stripes = TerrainMesh.unstripedColor(TerrainMesh.ColorMode.GREEN, mu, hazard, 1, 1, 0, 0, 1, rgb);
+        double stripes = TerrainMesh.unstripedColor(TerrainMesh.ColorMode.GREEN, Themes.MEADOWBROOK.materials(), mu, hazard, 1, 1, 0, 0, 1, rgb);
         assertEquals(hazard != null || mu < TerrainMesh.ICE_FRICTION || mu >= TerrainMesh.MUD_FRICTION ? 0 : 1, stripes, 1e-9);
         return rgb;
     }
@@ -24,7 +25,7 @@ class HazardColoursTest {
         float[] acid = colour(5, new Zone.Hazard(Zone.Hazard.Kind.ACID, Zone.Hazard.When.ENTER, Zone.Hazard.ReturnTo.COURSE_START, 0));
         assertTrue(acid[1] > acid[0] && acid[0] > acid[2]);
         float[] ice = colour(0.01, null);
-        assertTrue(ice[0] > 0.7 && ice[2] > ice[0]);
+        assertTrue(ice[2] > 0.6 && ice[2] > ice[0]);
         float[] mud = colour(1.2, null);
         assertTrue(mud[0] > mud[1] && mud[1] > mud[2] && mud[0] < 0.5);
         float[] grass = colour(0.1, null);
