@@ -20,6 +20,7 @@ public final class PropMeshes {
     static final float[] ROOF_SLATE = {0.28f, 0.30f, 0.40f};
     static final float[] WHITE = {0.94f, 0.94f, 0.92f};
     static final float[] RED = {0.78f, 0.16f, 0.14f};
+    static final float[] MARRAM = {0.52f, 0.60f, 0.32f};
     static final float[][] HUT_COLOURS = {{0.85f, 0.25f, 0.25f}, {0.25f, 0.50f, 0.80f}, {0.95f, 0.80f, 0.25f},
             {0.35f, 0.70f, 0.45f}, {0.90f, 0.55f, 0.70f}};
     static final float[][] FLOWER_COLOURS = {{0.95f, 0.85f, 0.20f}, {0.92f, 0.30f, 0.35f}, {0.95f, 0.95f, 0.95f},
@@ -226,11 +227,28 @@ public final class PropMeshes {
         w.flatTriangle(r0, l0, t0, c);
     }
 
-    /** A low, smooth mound: a snow drift (white) or a dune (sand below, marram grass on top). */
+    /** A low, smooth mound: a snow drift (white) or a dune's body (sand, its crest lighter). */
     public static void mound(MeshWriter w, double x, double y, double z, double size, long seed, float[] base, float[] top) {
         Random r = new Random(seed);
         w.lump(x, y, z - size * 0.1, size * (0.5 + 0.3 * r.nextDouble()), size * (0.35 + 0.2 * r.nextDouble()),
                 size * 0.16, 0.1, seed, false, z - 0.02, base, top);
+    }
+
+    /**
+     * A dune: a sand mound with tufts of marram grass on its crest. (A green cap on a sand ring read as
+     * a crater from above.)
+     */
+    public static void dune(MeshWriter w, double x, double y, double z, double size, long seed, float[] sand) {
+        Random r = new Random(seed);
+        double rz = size * 0.26, base = z - size * 0.06;
+        w.lump(x, y, base, size * (0.5 + 0.3 * r.nextDouble()), size * (0.35 + 0.2 * r.nextDouble()), rz, 0.12, seed, false,
+                z - 0.02, sand, shade(sand, 1.07));
+        double crest = base + rz * 0.9;
+        for (int k = 0; k < 5; k++) {
+            double a = 2 * Math.PI * r.nextDouble(), d = size * 0.18 * r.nextDouble();
+            double tx = x + d * Math.cos(a), ty = y + d * Math.sin(a), h = size * (0.06 + 0.04 * r.nextDouble());
+            w.frustum(tx, ty, crest - 0.05, crest + h, size * 0.035, 0, 5, false, MARRAM);
+        }
     }
 
     static float[] shade(float[] c, double k) {
