@@ -36,13 +36,28 @@ final class BallState {
     Outcome outcome;
     double endX, endY, endZ;
 
-    BallState(Terrain terrain, FrictionField friction, double x, double y, double vx, double vy) {
+    BallState(Terrain terrain, FrictionField friction) {
         this.terrain = terrain;
         this.friction = friction;
+    }
+
+    /** A new stroke: the ball at (x, y) with velocity (vx, vy) on the ground, everything else cleared. */
+    void reset(double x, double y, double vx, double vy) {
         this.x = x;
         this.y = y;
         this.vx = vx;
         this.vy = vy;
+        t = 0;
+        h = hx = hy = muK = 0;
+        steps = 0;
+        z = vz = 0;
+        flying = false;
+        px = py = pvx = pvy = pt = ph = phx = phy = pMuK = 0;
+        resume = false;
+        subPiece = false;
+        pieceTime = 0;
+        outcome = null;
+        endX = endY = endZ = 0;
     }
 
     /** Samples the terrain and friction under the ball into h, hx, hy, muK. */

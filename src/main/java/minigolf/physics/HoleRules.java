@@ -31,6 +31,12 @@ final class HoleRules {
         this.captureSpeed = hole.effectiveCaptureSpeed();
     }
 
+    /** Whether the hole comes within {@code reach} of (qx, qy). */
+    boolean within(double qx, double qy, double reach) {
+        double dx = qx - holeX, dy = qy - holeY, r = reach + holeRadius;
+        return dx * dx + dy * dy <= r * r;
+    }
+
     /** Whether (qx, qy) is within the hole's radius: a ball at rest there is holed. */
     boolean isInHole(double qx, double qy) {
         double dx = qx - holeX, dy = qy - holeY;

@@ -15,6 +15,8 @@ final class RollingPhase {
     private final StrokeReports reports;
     private final RollingStep rolling;
     private final RollingTrial trial;
+    /** The RK4 step's error control; null for the other integrators. */
+    private final StepControl control;
     private final StepLocator locate;
     private final RestRule rest;
     private final TakeOff takeOff;
@@ -28,22 +30,28 @@ final class RollingPhase {
     private final Terrain terrain;
     private final double gravity;
     private final double ballRadius;
+    /** The base step (the frame, 1/60 s by default); longer steps only where {@link #mayStepLong} allows. */
+    private final double dt;
     private final double maxTime;
     /** Whether the course has friction zones, whose edges cut steps. */
     private final boolean zoned;
     /** Whether RK4's error control chooses the steps' lengths. */
     private final boolean controlled;
+    /** Whether the ground is smooth (no crease, no cell edge): only there may steps be longer than dt. */
+    private final boolean smooth;
+    private final FrictionField friction;
     /** Whether the hole's capture rule is checked along every step. */
     private final boolean captureRule;
 
-    RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepLocator locate,
-                 RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy, CollisionScene scene,
-                 Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain, double gravity,
-                 double ballRadius, double maxTime, boolean zoned) {
+    RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepControl control,
+                 StepLocator locate, RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy,
+                 CollisionScene scene, Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain,
+                 FrictionField friction, PlayArea area, double gravity, double ballRadius, double dt, double maxTime) {
         this.ball = ball;
         this.reports = reports;
         this.rolling = rolling;
         this.trial = trial;
+        this.control = control;
         this.locate = locate;
         this.rest = rest;
         this.takeOff = takeOff;
@@ -56,9 +64,12 @@ final class RollingPhase {
         this.terrain = terrain;
         this.gravity = gravity;
         this.ballRadius = ballRadius;
+        this.dt = dt;
         this.maxTime = maxTime;
-        this.zoned = zoned;
-        this.controlled = trial.controlled();
+        this.friction = friction;
+        this.zoned = friction.hasZones();
+        this.controlled = control != null;
+        this.smooth = terrain.isSmooth() && !area.hasDeletedCells();
         this.captureRule = hole.captureRule;
     }
 
@@ -69,6 +80,8 @@ final class RollingPhase {
             reports.finish(Outcome.TIMEOUT, b.x, b.y, b.z);
             return 0;
         }
+        // The time limit ends the stroke exactly (a preview of its first seconds ends there).
+        if (tau > maxTime - b.t) tau = maxTime - b.t;
         double speed = Math.sqrt(b.vx * b.vx + b.vy * b.vy);
         // A ball leaning on an obstacle leaves it at rest, where the ground no longer pulls it
         // towards it, or where the obstacle is out of reach (its end).
@@ -85,7 +98,6 @@ final class RollingPhase {
             reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : Outcome.STOPPED, b.x, b.y, b.z);
             return 0;
         }
-        b.pieceTime = tau;
         rolling.acceleration(b.hx, b.hy, b.muK, b.vx, b.vy);
         double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
@@ -98,6 +110,8 @@ final class RollingPhase {
                 ghy = lean.gy;
             }
             double slope = Math.sqrt(ghx * ghx + ghy * ghy);
+            if (controlled && control.isLong(tau)) tau = longestStep(tau, speed, slope, b.muK, leaning, a1x, a1y);
+            b.pieceTime = tau;
             if (decelerationAlongV > 0) {
                 double stop = rest.stopWithin(tau, speed, decelerationAlongV, slope, b.vx, b.vy, ghx, ghy, b.muK);
                 if (stop >= 0) {
@@ -116,9 +130,17 @@ final class RollingPhase {
                 finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
                 return b.pieceTime;
             }
+        } else if (controlled && control.isLong(tau)) {
+            tau = dt; // starting from rest
         }
         double whole = tau;
-        if (controlled) tau = trial.controlledLength(tau, a1x, a1y);
+        if (controlled) {
+            tau = trial.controlledLength(tau, a1x, a1y);
+            if (control.isLong(tau) && !clearOfHazards(tau)) {
+                control.limit(dt);
+                tau = trial.controlledLength(dt, a1x, a1y);
+            }
+        }
         b.pieceTime = tau;
         finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
         if (tau < whole && !b.resume && b.outcome == null) {
@@ -126,6 +148,45 @@ final class RollingPhase {
             b.subPiece = true;
         }
         return b.pieceTime;
+    }
+
+    /**
+     * The longest step up to tau that may be taken from here (docs/physics.md, "Step control"):
+     * dt, or longer where nothing it could reach needs the step's own length. A long step stays on
+     * smooth ground, clear of obstacles, friction zones' edges and (under the capture rule) the
+     * hole; the ball leans on no obstacle, and is fast enough that it cannot stop within the step
+     * nor, on ground steeper than mu_k, come within the rest rule's horizon of a turn. Halved from
+     * tau until it qualifies.
+     */
+    private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
+                               double a1x, double a1y) {
+        if (!smooth || leaning) return dt;
+        // Braking at most g (|grad h| + mu_k): the speed that must be left after the step, plus a step of dt.
+        double braking = gravity * (slope + muK);
+        double spare = speed - RestRule.REST_SPEED - braking * (dt + (slope > muK ? RestRule.TURN_HORIZON : 0));
+        while (control.isLong(tau) && braking * tau >= spare) tau *= 0.5;
+        if (!control.isLong(tau)) return dt;
+        BallState b = ball;
+        double reach = speed * tau + Math.sqrt(a1x * a1x + a1y * a1y) * tau * tau;
+        double minX = b.x - reach, minY = b.y - reach, maxX = b.x + reach, maxY = b.y + reach;
+        if (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY)) return dt;
+        if (zoned && friction.mayChangeWithin(minX, minY, maxX, maxY)) return dt;
+        if (captureRule && hole.within(b.x, b.y, reach)) return dt;
+        return tau;
+    }
+
+    /**
+     * Whether a long step, integrated into the trial, keeps clear of what a step's end alone would
+     * not show: water or the bounds touched by its stages between its ends, and ground curving
+     * away fast enough to come within a quarter of the take-off threshold.
+     */
+    private boolean clearOfHazards(double tau) {
+        RollingStep r = rolling;
+        if (r.stageLowest < 0 || !locate.inPlay(r.stageMinX, r.stageMinY) || !locate.inPlay(r.stageMaxX, r.stageMaxY)) {
+            return false;
+        }
+        BallState b = ball;
+        return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
 
     /** Completes a step of length tau of the given kind, with events, and commits it. */

@@ -28,6 +28,11 @@ final class StepLocator {
         this.area = area;
     }
 
+    /** Whether (qx, qy) is in play: inside the bounds, not over a deleted cell. */
+    boolean inPlay(double qx, double qy) {
+        return area.contains(qx, qy);
+    }
+
     /** The hazard at (qx, qy): OUT outside the bounds, WATER below the water's surface, else null. */
     Outcome hazardAt(double qx, double qy) {
         if (!area.contains(qx, qy)) return Outcome.OUT;

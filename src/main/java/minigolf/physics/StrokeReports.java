@@ -9,12 +9,16 @@ import java.util.List;
  */
 final class StrokeReports {
     private final BallState ball;
-    private final TrajectoryListener listener;
+    private TrajectoryListener listener;
     /** Null unless the stroke records its events. */
-    private final EventLog log;
+    private EventLog log;
 
-    StrokeReports(BallState ball, TrajectoryListener listener, boolean recordEvents) {
+    StrokeReports(BallState ball) {
         this.ball = ball;
+    }
+
+    /** A new stroke: reports go to this listener (may be null), events to a new log if recorded. */
+    void start(TrajectoryListener listener, boolean recordEvents) {
         this.listener = listener;
         this.log = recordEvents ? new EventLog() : null;
     }

@@ -54,6 +54,17 @@ final class TakeOff {
     }
 
     /**
+     * Whether the ground along a step of length tau from (x, y) with velocity v curves away within
+     * a quarter of the take-off threshold ({@link #takesOff}'s measure): a step that long is not
+     * taken there (a short crest inside it could hide), the step control's steps of dt are.
+     */
+    boolean near(double x, double y, double vx, double vy, double h, double hx, double hy, double tau) {
+        double tangent = h + (hx * vx + hy * vy) * tau;
+        double ground = terrain.height(x + vx * tau, y + vy * tau);
+        return tangent - ground >= 0.125 * gravity * tau * tau;
+    }
+
+    /**
      * Whether a crest shorter than the step curves away too fast somewhere inside it: over the whole
      * step the ground may fall below the tangent plane by less than gravity's g tau^2 / 2 while a
      * short stretch of it curves away faster (the continuous criterion v^T H v &lt; -g holds there).

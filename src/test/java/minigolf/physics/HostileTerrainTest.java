@@ -17,9 +17,16 @@ import org.junit.jupiter.params.provider.ValueSource;
  * from random points all end long before the time limit, with short event lists.
  */
 class HostileTerrainTest {
-    /** Steps of 1/60 s: 100 s of simulated time, a sixth of the guard. */
+    /** Steps of up to 1/60 s on these terrains (none is smooth): 100 s of simulated time, a sixth of the guard. */
     private static final int MAX_STEPS = 6000;
-    private static final int MAX_EVENTS = 40;
+    /**
+     * Down the pits' 80-degree walls a fast ball leaves the ground and lands again within a
+     * millisecond, several times in a row (the ground there curves away faster than gravity, cell
+     * by cell): the longest list of the 3,500 shots has 43 events (25 before steps and frames
+     * were decoupled; the lists' distribution is otherwise the same), an endless chatter would
+     * have thousands.
+     */
+    private static final int MAX_EVENTS = 50;
 
     @ParameterizedTest
     @ValueSource(strings = {"ridge", "pits", "v-valley", "cone", "terraces"})
