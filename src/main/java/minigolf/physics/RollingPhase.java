@@ -218,7 +218,6 @@ final class RollingPhase {
         Outcome event = locate.hazardAt(tr.nx, tr.ny);
         if (event != null) {
             endTau = locate.hazard(tau, kind, a1x, a1y);
-            tr.run(endTau, kind, a1x, a1y);
             event = locate.hazardAt(tr.nx, tr.ny);
         }
         boolean leaves = false;

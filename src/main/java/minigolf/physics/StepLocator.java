@@ -10,6 +10,12 @@ import minigolf.terrain.Terrain;
 final class StepLocator {
     /** Bisection halvings when locating an event inside a step: dt / 2^50 is far below 1 mm. */
     static final int LOCATE_ITERATIONS = 50;
+    /**
+     * How far apart (m) the last safe point and the first point in a hazard may lie once located:
+     * a step of dt / 2^50 moves a ball at 5 m/s by 10^-16 m, so anything near this is a path
+     * that jumps.
+     */
+    static final double LOCATE_GAP = 1e-6;
 
     private final BallState ball;
     private final RollingTrial trial;
@@ -40,13 +46,31 @@ final class StepLocator {
         return null;
     }
 
-    /** The first sub-step length at which the ball is in a hazard, found by bisection. */
+    /**
+     * The first sub-step length at which the ball is in a hazard, found by bisection; on return
+     * the trial holds the step of that length. Its end must lie within {@link #LOCATE_GAP} of the
+     * last point found safe: otherwise the ball's path jumps there, on ground that changes faster
+     * than any step can follow (a height like 0.2 + 0.01 sin(1e15 x)), and the stroke cannot go on.
+     *
+     * @throws NonFiniteMotionException if the path jumps where the hazard begins
+     */
     double hazard(double tau, RollingStep.Kind kind, double a1x, double a1y) {
         double safe = 0, hazard = tau;
+        double safeX = ball.x, safeY = ball.y;
         for (int k = 0; k < LOCATE_ITERATIONS; k++) {
             double mid = 0.5 * (safe + hazard);
             trial.run(mid, kind, a1x, a1y);
-            if (hazardAt(trial.nx, trial.ny) != null) hazard = mid; else safe = mid;
+            if (hazardAt(trial.nx, trial.ny) != null) {
+                hazard = mid;
+            } else {
+                safe = mid;
+                safeX = trial.nx;
+                safeY = trial.ny;
+            }
+        }
+        trial.run(hazard, kind, a1x, a1y);
+        if (!(Math.hypot(trial.nx - safeX, trial.ny - safeY) <= LOCATE_GAP)) {
+            throw NonFiniteMotionException.unresolved(safeX, safeY);
         }
         return hazard;
     }

@@ -98,4 +98,35 @@ class HostileTerrainTest {
         }
         return max;
     }
+
+    /**
+     * Ground that changes faster than any step can follow (0.2 + 0.01 sin(1e15 x): slopes of
+     * 10^13 over a wavelength of 6e-15 m). The ball's path jumps metres within a step, so a
+     * hazard located by bisection lay far from where the ball was last safe: shots ended "out"
+     * up to 4.5 m past the bounds. Now a stroke either ends where the ball leaves the bounds (on
+     * their edge, to a micrometre) or is refused as a path that cannot be followed.
+     */
+    @Test
+    void groundFasterThanAnyStepIsRefusedInsteadOfEndingFarOutOfBounds() throws Exception {
+        String json = java.nio.file.Files.readString(Path.of("courses/flat.json"))
+                .replace("\"height\": \"0.1\"", "\"height\": \"0.2+0.01*sin(1e15*x)\"");
+        World world = World.parse(json, "fast.json");
+        minigolf.course.Bounds bounds = world.bounds();
+        Simulator simulator = new Simulator(world, SimulationSettings.DEFAULT);
+        SplittableRandom random = new SplittableRandom(15);
+        int refused = 0;
+        for (int shot = 0; shot < 50; shot++) {
+            double angle = random.nextDouble(2 * Math.PI), speed = random.nextDouble(0.1, 4);
+            try {
+                ShotResult r = simulator.simulate(-3, 0, speed * Math.cos(angle), speed * Math.sin(angle));
+                double outside = Math.max(Math.max(bounds.minX() - r.endX(), r.endX() - bounds.maxX()),
+                        Math.max(bounds.minY() - r.endY(), r.endY() - bounds.maxY()));
+                assertTrue(outside <= 1e-6, "shot " + shot + " ended " + outside + " m outside the bounds: " + r);
+            } catch (NonFiniteMotionException e) {
+                assertTrue(e.getMessage().contains("cannot be followed"), e.getMessage());
+                refused++;
+            }
+        }
+        assertTrue(refused > 0, "no shot was refused");
+    }
 }
