@@ -112,8 +112,12 @@ final class RollingPhase {
             double slope = Math.sqrt(ghx * ghx + ghy * ghy);
             if (controlled && control.isLong(tau)) tau = longestStep(tau, speed, slope, b.muK, leaning, a1x, a1y);
             b.pieceTime = tau;
+            // The stop looks a fixed time ahead and the slow step is that long, whatever length the
+            // control has chosen: a ball the control keeps at dt/8 must still stop, not creep in
+            // RK4 steps whose stages flip friction (docs/physics.md, "Step control").
+            double ahead = Math.min(controlled ? StepControl.STOP_AHEAD * dt : dt, maxTime - b.t);
             if (decelerationAlongV > 0) {
-                double stop = rest.stopWithin(tau, speed, decelerationAlongV, slope, b.vx, b.vy, ghx, ghy, b.muK);
+                double stop = rest.stopWithin(ahead, speed, decelerationAlongV, slope, b.vx, b.vy, ghx, ghy, b.muK);
                 if (stop >= 0) {
                     finishStep(stop, RollingStep.Kind.STOP, a1x, a1y, speed);
                     return b.pieceTime;
@@ -125,9 +129,10 @@ final class RollingPhase {
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
             // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
             // in a step. Such steps treat friction implicitly (RollingStep.Kind.SLOW).
-            double maxChange = gravity * (slope + b.muK) * tau * (controlled ? StepControl.SLOW_FRACTION : 1);
+            double maxChange = gravity * (slope + b.muK) * dt * (controlled ? StepControl.SLOW_FRACTION : 1);
             if (decelerationAlongV > 0 && speed <= maxChange) {
-                finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
+                b.pieceTime = ahead;
+                finishStep(ahead, RollingStep.Kind.SLOW, a1x, a1y, speed);
                 return b.pieceTime;
             }
         } else if (controlled && control.isLong(tau)) {
@@ -154,16 +159,16 @@ final class RollingPhase {
      * The longest step up to tau that may be taken from here (docs/physics.md, "Step control"):
      * dt, or longer where nothing it could reach needs the step's own length. A long step stays on
      * smooth ground, clear of obstacles, friction zones' edges and (under the capture rule) the
-     * hole; the ball leans on no obstacle, and is fast enough that it cannot stop within the step
-     * nor, on ground steeper than mu_k, come within the rest rule's horizon of a turn. Halved from
-     * tau until it qualifies.
+     * hole; the ball leans on no obstacle, and is fast enough that it can neither stop within the
+     * step nor come within the rest rule's horizon of a turn. Halved from tau until it qualifies.
      */
     private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
                                double a1x, double a1y) {
         if (!smooth || leaning) return dt;
-        // Braking at most g (|grad h| + mu_k): the speed that must be left after the step, plus a step of dt.
+        // Braking at most g (|grad h| + mu_k), it must be left with the speed the rest rule's turn
+        // horizon and a step of dt need (the ground may grow steeper than mu_k within the step).
         double braking = gravity * (slope + muK);
-        double spare = speed - RestRule.REST_SPEED - braking * (dt + (slope > muK ? RestRule.TURN_HORIZON : 0));
+        double spare = speed - RestRule.REST_SPEED - braking * (dt + RestRule.TURN_HORIZON);
         while (control.isLong(tau) && braking * tau >= spare) tau *= 0.5;
         if (!control.isLong(tau)) return dt;
         BallState b = ball;

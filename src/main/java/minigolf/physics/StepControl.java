@@ -41,6 +41,11 @@ final class StepControl {
      * and friction can change in a step; above it the controlled RK4 steps run.
      */
     static final double SLOW_FRACTION = 0.125;
+    /**
+     * With the control, the analytic stop looks this fraction of dt ahead, and a slow step is that
+     * long, whatever the step the control has chosen.
+     */
+    static final double STOP_AHEAD = 0.25;
 
     private final RollingStep rolling;
     private final double dt;

@@ -201,4 +201,17 @@ class ConvergenceTest {
         ShotResult game = TestWorlds.rk4(world).simulate(-4, -3, 0.2719865323628711, -0.7444444263380493);
         assertEquals(0, Math.hypot(game.endX() - tinySteps.endX(), game.endY() - tinySteps.endY()), 5e-3);
     }
+
+    @Test
+    void aBallTheControlKeepsAtShortStepsStopsInsteadOfCreeping() throws Exception {
+        // Up the lake's rim and back: near its stop the control had halved the steps to dt/8, and
+        // looking only that far ahead the stop was never found, so RK4's stages flipped friction
+        // and the ball crept at 0.5 mm/s for 407 s (195,257 steps). The stop looks dt/4 ahead.
+        World lake = World.load(java.nio.file.Path.of("courses/lake.json"));
+        ShotResult r = TestWorlds.rk4(lake).simulate(-3, 0, -1.3979863803917207, -0.12202122564737901);
+        assertEquals(Outcome.STOPPED, r.outcome());
+        assertTrue(r.time() < 1 && r.steps() < 100, r.time() + " s, " + r.steps() + " steps");
+        ReferenceResult reference = new ReferenceSimulator(lake).simulate(-3, 0, -1.3979863803917207, -0.12202122564737901);
+        assertEquals(0, Math.hypot(r.endX() - reference.endX(), r.endY() - reference.endY()), 1e-3);
+    }
 }

