@@ -170,14 +170,21 @@ final class RollingPhase {
         double braking = gravity * (slope + muK);
         double spare = speed - RestRule.REST_SPEED - braking * (dt + RestRule.TURN_HORIZON);
         while (control.isLong(tau) && braking * tau >= spare) tau *= 0.5;
-        if (!control.isLong(tau)) return dt;
+        if (!control.isLong(tau) || !(scene != null || zoned || captureRule)) return control.isLong(tau) ? tau : dt;
+        // From the shortest long step up, each as long as nothing is within its reach: near an
+        // obstacle a single small square is looked at.
         BallState b = ball;
-        double reach = speed * tau + Math.sqrt(a1x * a1x + a1y * a1y) * tau * tau;
-        double minX = b.x - reach, minY = b.y - reach, maxX = b.x + reach, maxY = b.y + reach;
-        if (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY)) return dt;
-        if (zoned && friction.mayChangeWithin(minX, minY, maxX, maxY)) return dt;
-        if (captureRule && hole.within(b.x, b.y, reach)) return dt;
-        return tau;
+        double acceleration = Math.sqrt(a1x * a1x + a1y * a1y);
+        double shortest = 2 * dt, chosen = dt;
+        for (double length = shortest; length <= tau * (1 + 1e-9); length *= 2) {
+            double reach = speed * length + acceleration * length * length;
+            double minX = b.x - reach, minY = b.y - reach, maxX = b.x + reach, maxY = b.y + reach;
+            if (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY)) break;
+            if (zoned && friction.mayChangeWithin(minX, minY, maxX, maxY)) break;
+            if (captureRule && hole.within(b.x, b.y, reach)) break;
+            chosen = length;
+        }
+        return chosen;
     }
 
     /**
@@ -220,7 +227,7 @@ final class RollingPhase {
         boolean stopping = kind == RollingStep.Kind.STOP
                 || (kind == RollingStep.Kind.SLOW && tr.nvx == 0 && tr.nvy == 0);
         double endTau = tau;
-        Outcome event = locate.hazardAt(tr.nx, tr.ny);
+        Outcome event = locate.hazardAtEnd(tr.nx, tr.ny);
         if (event != null) {
             endTau = locate.hazard(tau, kind, a1x, a1y);
             event = locate.hazardAt(tr.nx, tr.ny);
@@ -260,6 +267,7 @@ final class RollingPhase {
         b.t += endTau;
         b.steps++;
         b.pieceTime = endTau;
+        if (endTau > dt * (1 + 1e-9)) reports.path(b.px, b.py, b.pvx, b.pvy, b.pt, b.x, b.y, tr.nvx, tr.nvy, b.t);
         if (event != null) {
             b.z = terrain.height(b.x, b.y);
             reports.state();

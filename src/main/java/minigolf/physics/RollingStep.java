@@ -69,6 +69,13 @@ final class RollingStep {
         leaning = false;
     }
 
+    /** The shared last terrain sample: a long step's end is sampled by its last stage. */
+    private GroundCache cache;
+
+    void share(GroundCache ground) {
+        this.cache = ground;
+    }
+
     /** Sets the start state of the following sub-steps. */
     void from(double x, double y, double vx, double vy, double hx, double hy, double muK) {
         this.x = x;
@@ -190,6 +197,7 @@ final class RollingStep {
         nvx = vx + h * (B1 * a1x + B3 * a3x + B4 * a4x + B5 * a5x + B6 * a6x);
         nvy = vy + h * (B1 * a1y + B3 * a3y + B4 * a4y + B5 * a5y + B6 * a6y);
         accelerationAt(nx, ny, nvx, nvy);
+        if (cache != null) cache.keep(nx, ny, sample[0], sample[1], sample[2]);
         lowest = Math.min(lowest, sample[0]);
         double ex = h * (E1 * vx + E3 * v3x + E4 * v4x + E5 * v5x + E6 * v6x + E7 * nvx);
         double ey = h * (E1 * vy + E3 * v3y + E4 * v4y + E5 * v5y + E6 * v6y + E7 * nvy);

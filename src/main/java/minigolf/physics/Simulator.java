@@ -42,6 +42,12 @@ public final class Simulator {
         return run(x0, y0, vx, vy, vz, listener, true);
     }
 
+    /** A shot with a vertical component, heard by the listener; its events recorded in the result only if asked. */
+    public ShotResult simulate(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener,
+                               boolean recordEvents) {
+        return run(x0, y0, vx, vy, vz, listener, recordEvents);
+    }
+
     private ShotResult run(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener,
                            boolean recordEvents) {
         Stroke s = stroke;

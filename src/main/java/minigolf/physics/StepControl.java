@@ -79,9 +79,9 @@ final class StepControl {
         return length > dt * (1 + 1e-9);
     }
 
-    /** A new stroke: the first step may be whole. */
+    /** A new stroke: the first step may be as long as any (it is halved where it must). */
     void reset() {
-        allowed = dt;
+        allowed = longest;
         pause = 0;
     }
 

@@ -98,11 +98,13 @@ public final class Stroke {
         this.maxTime = settings.maxTime();
         this.maxSpeed = physics.maxSpeed();
         this.area = area;
-        this.ball = new BallState(terrain, friction);
-        this.reports = new StrokeReports(ball);
+        GroundCache ground = new GroundCache(terrain);
+        this.ball = new BallState(ground, friction);
+        this.reports = new StrokeReports(ball, terrain, dt);
         this.view = new FrameView(terrain);
 
         RollingStep steps = new RollingStep(terrain, friction, gravity, complete, settings.integrator(), dt);
+        steps.share(ground);
         StepControl control = settings.integrator() == Integrator.RK4 ? new StepControl(steps, dt) : null;
         RollingTrial trial = new RollingTrial(ball, steps, control);
         RestRule rest = new RestRule(world);
@@ -115,7 +117,7 @@ public final class Stroke {
         this.trial = trial;
         this.rest = rest;
         this.rolling = new RollingPhase(ball, reports, steps, trial, control,
-                new StepLocator(ball, trial, steps, terrain, friction, area), rest, new TakeOff(terrain, steps, gravity),
+                new StepLocator(ball, trial, steps, terrain, ground, friction, area), rest, new TakeOff(terrain, steps, gravity),
                 hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete), scene, lean, paths, contact,
                 terrain, friction, area, gravity, ballRadius, dt, settings.maxTime());
         this.flight = new FlightPhase(ball, reports, new FlightStep(terrain, gravity, physics.dragFactor()),
