@@ -131,6 +131,14 @@ class CommandLineTest {
         assertEquals(0, r.code(), r.err());
         assertEquals(200, r.json().get("shots").asInt());
         assertTrue(r.json().get("shotsPerSecond").asDouble() > 0);
+        // Shared by three threads, each with its own simulator, the shots end exactly the same.
+        CliRun three = run("bench-physics", course("lake.json"), "--shots", "300", "--threads", "3");
+        CliRun one = run("bench-physics", course("lake.json"), "--shots", "300");
+        assertEquals(0, three.code(), three.err());
+        assertEquals(3, three.json().get("threads").asInt());
+        assertEquals(one.json().get("checksum").asText(), three.json().get("checksum").asText());
+        assertEquals(one.json().get("meanSteps").asDouble(), three.json().get("meanSteps").asDouble());
+        assertTrue(three.json().get("bytesPerShot").asDouble() < 700, three.out());
         // CPU time never exceeds the wall time of the same thread.
         assertTrue(r.json().get("shotsPerCpuSecond").asDouble() >= 0.9 * r.json().get("shotsPerSecond").asDouble(), r.out());
     }
