@@ -225,6 +225,7 @@ public final class CountingSimulator {
         if (watchdog.busy) watchdog = new Watchdog(account.token);
         watchdog.busy = true;
         watchdog.inner = listener;
+        watchdog.steps = 0;
         ShotResult result;
         try {
             result = play(simulator, x, y, limited, watchdog);
@@ -283,7 +284,7 @@ public final class CountingSimulator {
         /** The bot's own listener for the shot running, or null. */
         TrajectoryListener inner;
         boolean busy;
-        private int steps;
+        int steps;
 
         Watchdog(CancellationToken token) {
             this.token = token;
