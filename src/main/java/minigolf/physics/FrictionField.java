@@ -19,6 +19,7 @@ public final class FrictionField {
     private final boolean uniform;
     /** Each zone's bounding box: minX, minY, maxX, maxY. */
     private final double[] boxes;
+    private final boolean hazards;
 
     public FrictionField(PhysicsSettings physics, List<Zone> zones, TerrainSpec terrain) {
         this.defaultKinetic = physics.kineticFriction();
@@ -29,6 +30,9 @@ public final class FrictionField {
         this.uniform = this.zones.length == 0 && grid == null;
         this.boxes = new double[4 * this.zones.length];
         for (int k = 0; k < this.zones.length; k++) box(this.zones[k].shape(), k);
+        boolean any = false;
+        for (Zone z : this.zones) any |= z.hazard() != null;
+        this.hazards = any;
     }
 
     private void box(Shape shape, int k) {
@@ -43,6 +47,11 @@ public final class FrictionField {
             b[4 * k + 1] = c.center().y() - c.radius();
             b[4 * k + 2] = c.center().x() + c.radius();
             b[4 * k + 3] = c.center().y() + c.radius();
+        } else if (shape instanceof Shape.Cells c) {
+            b[4 * k] = c.origin().x();
+            b[4 * k + 1] = c.origin().y();
+            b[4 * k + 2] = c.origin().x() + c.columns() * c.size();
+            b[4 * k + 3] = c.origin().y() + c.rows() * c.size();
         } else {
             double minX = Double.POSITIVE_INFINITY, minY = minX, maxX = -minX, maxY = -minX;
             for (Vec2 p : ((Shape.Polygon) shape).points()) {
@@ -75,6 +84,32 @@ public final class FrictionField {
             if (!inside) return true;
         }
         return false;
+    }
+
+    /** Whether some zone is a hazard (water or acid drawn as a zone). */
+    public boolean hasHazards() {
+        return hazards;
+    }
+
+    /**
+     * The hazard of the zone that decides the friction at (x, y), or null (a zone without one
+     * laid over a hazard is a bridge).
+     */
+    public Zone.Hazard hazardAt(double x, double y) {
+        if (!hazards) return null;
+        int zone = zoneAt(x, y);
+        return zone >= 0 ? zones[zone].hazard() : null;
+    }
+
+    /** Whether the ball entering (x, y) ends its stroke in a hazard zone. */
+    public boolean entersHazard(double x, double y) {
+        Zone.Hazard h = hazardAt(x, y);
+        return h != null && h.when() == Zone.Hazard.When.ENTER;
+    }
+
+    /** Whether a ball coming to rest at (x, y) ends its stroke in a hazard zone (any hazard: one it rests in it touches). */
+    public boolean restsInHazard(double x, double y) {
+        return hazardAt(x, y) != null;
     }
 
     /** Whether friction can jump somewhere (zone edges), so that strokes must split steps there. */

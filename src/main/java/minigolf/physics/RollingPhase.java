@@ -95,7 +95,8 @@ final class RollingPhase {
         boolean sentBack = speed == 0 && rest.rollsBack();
         if (sentBack) rest.forget();
         if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.hx, b.hy, b.muK)) {
-            reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : Outcome.STOPPED, b.x, b.y, b.z);
+            reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : b.restsInHazard() ? Outcome.WATER : Outcome.STOPPED,
+                    b.x, b.y, b.z);
             return 0;
         }
         rolling.acceleration(b.hx, b.hy, b.muK, b.vx, b.vy);
@@ -269,7 +270,9 @@ final class RollingPhase {
         b.pieceTime = endTau;
         if (endTau > dt * (1 + 1e-9)) reports.path(b.px, b.py, b.pvx, b.pvy, b.pt, b.x, b.y, tr.nvx, tr.nvy, b.t);
         if (event != null) {
-            b.z = terrain.height(b.x, b.y);
+            // In water the ball floats on its surface (z = 0), as a flying ball that lands there.
+            double h = terrain.height(b.x, b.y);
+            b.z = event == Outcome.WATER && h < 0 ? 0 : h;
             reports.state();
             reports.finish(event, b.x, b.y, b.z);
             return;

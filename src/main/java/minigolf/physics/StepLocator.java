@@ -53,6 +53,7 @@ final class StepLocator {
     Outcome hazardAtEnd(double qx, double qy) {
         if (!area.contains(qx, qy)) return Outcome.OUT;
         if (ground.at(qx, qy)[0] < 0) return Outcome.WATER;
+        if (friction.entersHazard(qx, qy)) return Outcome.WATER;
         return null;
     }
 
@@ -60,6 +61,7 @@ final class StepLocator {
     Outcome hazardAt(double qx, double qy) {
         if (!area.contains(qx, qy)) return Outcome.OUT;
         if (terrain.height(qx, qy) < 0) return Outcome.WATER;
+        if (friction.entersHazard(qx, qy)) return Outcome.WATER;
         return null;
     }
 
