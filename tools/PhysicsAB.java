@@ -14,7 +14,7 @@ import java.util.stream.Stream;
 
 /**
  * Times two builds of the engine against each other in one JVM, on the same random shots, by the
- * thread's CPU time and allocated bytes (docs/performance.md). Each build is loaded from its
+ * thread's CPU time and allocated bytes (docs/measurements.md, "Comparing two builds"). Each build is loaded from its
  * installed lib folder in a class loader of its own; rounds alternate A B B A, so a load that
  * changes during the run falls on both alike.
  *
