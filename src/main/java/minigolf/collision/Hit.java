@@ -9,4 +9,22 @@ public final class Hit {
     public double restitution;
     /** Index of the obstacle in the course's list. */
     public int obstacle;
+    /** The velocity of the obstacle's surface at the contact (m/s): 0 for a still obstacle, set for a moving one. */
+    public double ux, uy, uz;
+    /** Whether the obstacle hit moves (then {@link #ux}, {@link #uy}, {@link #uz} hold its velocity there). */
+    public boolean moving;
+
+    /** Copies another contact into this one. */
+    public void set(Hit other) {
+        fraction = other.fraction;
+        nx = other.nx;
+        ny = other.ny;
+        nz = other.nz;
+        restitution = other.restitution;
+        obstacle = other.obstacle;
+        ux = other.ux;
+        uy = other.uy;
+        uz = other.uz;
+        moving = other.moving;
+    }
 }

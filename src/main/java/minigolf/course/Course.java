@@ -7,12 +7,22 @@ import java.util.List;
  * its own fast representation from it (minigolf.physics.World).
  */
 public record Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
-                     Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles) {
+                     Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, List<PushZone> pushZones,
+                     List<Magnet> magnets, List<Teleport> teleports) {
     public static final int FORMAT = 1;
 
     public Course {
         zones = List.copyOf(zones);
         obstacles = List.copyOf(obstacles);
+        pushZones = List.copyOf(pushZones);
+        magnets = List.copyOf(magnets);
+        teleports = List.copyOf(teleports);
+    }
+
+    /** A course without push zones, magnets and teleports. */
+    public Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
+                  Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles) {
+        this(format, name, terrain, bounds, physics, start, hole, zones, obstacles, List.of(), List.of(), List.of());
     }
 
     /** A course without obstacles. */
@@ -22,10 +32,24 @@ public record Course(int format, String name, TerrainSpec terrain, Bounds bounds
     }
 
     public Course withPhysics(PhysicsSettings newPhysics) {
-        return new Course(format, name, terrain, bounds, newPhysics, start, hole, zones, obstacles);
+        return new Course(format, name, terrain, bounds, newPhysics, start, hole, zones, obstacles, pushZones, magnets,
+                teleports);
     }
 
     public Course withObstacles(List<Obstacle> newObstacles) {
-        return new Course(format, name, terrain, bounds, physics, start, hole, zones, newObstacles);
+        return new Course(format, name, terrain, bounds, physics, start, hole, zones, newObstacles, pushZones, magnets,
+                teleports);
+    }
+
+    /** The same course with other push zones, magnets and teleports. */
+    public Course withElements(List<PushZone> newPushZones, List<Magnet> newMagnets, List<Teleport> newTeleports) {
+        return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, newPushZones, newMagnets,
+                newTeleports);
+    }
+
+    /** Whether any obstacle moves (its motion is a function of the course clock). */
+    public boolean hasMovingObstacles() {
+        for (Obstacle o : obstacles) if (o instanceof Obstacle.Moving) return true;
+        return false;
     }
 }

@@ -48,8 +48,8 @@ public final class CourseEditor {
     /** Edits a course (an expression terrain is first sampled to a grid, see {@link CourseGrids}). */
     public static CourseEditor of(Course c, Path file) {
         TerrainSpec.HeightGrid grid = CourseGrids.toGrid(c);
-        EditableCourse ec = new EditableCourse(grid, c.bounds(), c.zones(), c.obstacles(),
-                new EditableCourse.Properties(c.name(), c.start(), c.hole(), c.physics()));
+        EditableCourse ec = new EditableCourse(grid, c.bounds(), c.zones(), c.obstacles(), c.pushZones(), c.magnets(),
+                c.teleports(), new EditableCourse.Properties(c.name(), c.start(), c.hole(), c.physics()));
         CourseEditor e = new CourseEditor(ec, file);
         // A sampled expression course is not yet a file: it counts as unsaved.
         if (!(c.terrain() instanceof TerrainSpec.HeightGrid)) e.file = null;

@@ -27,7 +27,8 @@ public record CourseEdits(double gravity, double kineticFriction, double staticF
         Course c = world.course();
         PhysicsSettings p = new PhysicsSettings(gravity, kineticFriction, staticFriction, maxSpeed, c.physics().model());
         Hole h = new Hole(new Vec2(holeX, holeY), holeRadius, c.hole().rule(), c.hole().captureSpeed());
-        Course edited = new Course(c.format(), c.name(), c.terrain(), c.bounds(), p, new Vec2(startX, startY), h, c.zones());
+        Course edited = new Course(c.format(), c.name(), c.terrain(), c.bounds(), p, new Vec2(startX, startY), h, c.zones(),
+                java.util.List.of(), c.pushZones(), c.magnets(), c.teleports());
         String json;
         try {
             json = CourseWriter.toJson(edited);

@@ -12,23 +12,34 @@ import minigolf.terrain.Terrain;
 final class BallState {
     private final Terrain terrain;
     private final FrictionField friction;
+    /** Push zones and magnets; null without them. */
+    private final ForceField forces;
+    private final double gravity;
+    private final boolean complete;
     private final double[] sample = new double[3];
 
     // The ball and the terrain sample at it (reused as the first stage of the next step).
     double x, y, vx, vy, t;
     double h, hx, hy, muK;
+    /**
+     * The force of push zones and magnets at the ball (m/s², 0 without them), and the pull gradient
+     * the rules of rest see (ForceField.pullGradient; the ground's gradient without forces).
+     */
+    double fx, fy, pullX, pullY;
     int steps;
     // The third dimension: z is the contact point's height (h while rolling), vz its rate of change in flight.
     double z, vz;
     boolean flying;
 
     // The state at the start of the last committed rolling step.
-    double px, py, pvx, pvy, pt, ph, phx, phy, pMuK;
+    double px, py, pvx, pvy, pt, ph, phx, phy, pMuK, pfx, pfy, pPullX, pPullY;
 
     /** Set by a piece of a step (a contact, a launch, a landing) when the rest of the step is to be integrated. */
     boolean resume;
     /** Set when the piece was one the error control shortened: no contact, so it does not count towards a wedge. */
     boolean subPiece;
+    /** Set when the ball meets a moving obstacle within the current step (a wedge there crushes it). */
+    boolean movingContact;
     /** The time the current piece took. */
     double pieceTime;
 
@@ -36,9 +47,13 @@ final class BallState {
     Outcome outcome;
     double endX, endY, endZ;
 
-    BallState(Terrain terrain, FrictionField friction, double x, double y, double vx, double vy) {
+    BallState(Terrain terrain, FrictionField friction, ForceField forces, double gravity, boolean complete,
+              double x, double y, double vx, double vy) {
         this.terrain = terrain;
         this.friction = friction;
+        this.forces = forces;
+        this.gravity = gravity;
+        this.complete = complete;
         this.x = x;
         this.y = y;
         this.vx = vx;
@@ -53,6 +68,17 @@ final class BallState {
         hy = sample[2];
         if (!Double.isFinite(h + hx + hy)) throw NonFiniteMotionException.terrain(x, y);
         muK = friction.kinetic(x, y);
+        if (forces == null) {
+            pullX = hx;
+            pullY = hy;
+            return;
+        }
+        forces.force(x, y, sample);
+        fx = sample[0];
+        fy = sample[1];
+        ForceField.pullGradient(hx, hy, fx, fy, gravity, complete, sample);
+        pullX = sample[0];
+        pullY = sample[1];
     }
 
     /** Vertical velocity: in flight its own, while rolling the rate at which the ground under the ball rises. */
@@ -71,6 +97,10 @@ final class BallState {
         phx = hx;
         phy = hy;
         pMuK = muK;
+        pfx = fx;
+        pfy = fy;
+        pPullX = pullX;
+        pPullY = pullY;
     }
 
     /** Goes back to the start of the last committed rolling step. */
@@ -83,6 +113,10 @@ final class BallState {
         hx = phx;
         hy = phy;
         muK = pMuK;
+        fx = pfx;
+        fy = pfy;
+        pullX = pPullX;
+        pullY = pPullY;
         t = pt;
     }
 

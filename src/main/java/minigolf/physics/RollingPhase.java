@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import minigolf.collision.CollisionScene;
 import minigolf.terrain.Terrain;
 
 /**
@@ -21,7 +20,7 @@ final class RollingPhase {
     private final HoleRules hole;
     private final EnergyGuard energy;
     /** The obstacles and the ball settled against one; null without obstacles. */
-    private final CollisionScene scene;
+    private final Solids scene;
     private final Leaning lean;
     private final PathSweep paths;
     private final ObstacleContact contact;
@@ -35,11 +34,20 @@ final class RollingPhase {
     private final boolean controlled;
     /** Whether the hole's capture rule is checked along every step. */
     private final boolean captureRule;
+    /** The teleports; null without them. */
+    private final Teleporter teleporter;
+    /** While a resting ball waits for a moving obstacle to reach it: the clock of the contact (else NaN). */
+    private double waitUntil = Double.NaN;
+    private final minigolf.collision.Hit waitHit = new minigolf.collision.Hit();
+    /** The course clock when the stroke began. */
+    private final double startClock;
 
     RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepLocator locate,
-                 RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy, CollisionScene scene,
+                 RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy, Solids scene,
                  Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain, double gravity,
-                 double ballRadius, double maxTime, boolean zoned) {
+                 double ballRadius, double maxTime, boolean zoned, Teleporter teleporter, double startClock) {
+        this.teleporter = teleporter;
+        this.startClock = startClock;
         this.ball = ball;
         this.reports = reports;
         this.rolling = rolling;
@@ -69,11 +77,24 @@ final class RollingPhase {
             reports.finish(Outcome.TIMEOUT, b.x, b.y, b.z);
             return 0;
         }
+        if (teleporter != null) {
+            // A ball that landed in a teleport's entry (or was put there) is sent on at once.
+            int k = teleporter.at();
+            if (k >= 0) {
+                if (lean != null) lean.release();
+                rest.forget();
+                teleporter.send(k);
+                reports.state();
+                b.pieceTime = 0;
+                b.resume = true;
+                return 0;
+            }
+        }
         double speed = Math.sqrt(b.vx * b.vx + b.vy * b.vy);
         // A ball leaning on an obstacle leaves it at rest, where the ground no longer pulls it
         // towards it, or where the obstacle is out of reach (its end).
         boolean leaning = lean != null && lean.active();
-        if (leaning && (speed == 0 || !lean.holds(b.x, b.y, b.hx, b.hy))) {
+        if (leaning && (speed == 0 || !lean.holds(b.x, b.y, b.pullX, b.pullY))) {
             lean.release();
             leaning = false;
         }
@@ -81,19 +102,23 @@ final class RollingPhase {
         // when an energy cut leaves it at v = 0 at its turn: it starts down again, once.
         boolean sentBack = speed == 0 && rest.rollsBack();
         if (sentBack) rest.forget();
-        if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.hx, b.hy, b.muK)) {
-            reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : Outcome.STOPPED, b.x, b.y, b.z);
+        if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.pullX, b.pullY, b.muK)) {
+            boolean holed = hole.isInHole(b.x, b.y);
+            if (!holed && scene != null && scene.hasMoving()) return waitForMoving(tau);
+            reports.finish(holed ? Outcome.HOLED : Outcome.STOPPED, b.x, b.y, b.z);
             return 0;
         }
+        waitUntil = Double.NaN;
         b.pieceTime = tau;
-        rolling.acceleration(b.hx, b.hy, b.muK, b.vx, b.vy);
+        rolling.acceleration(b.hx, b.hy, b.fx, b.fy, b.muK, b.vx, b.vy);
         double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
             double decelerationAlongV = -(a1x * b.vx + a1y * b.vy) / speed;
-            // Leaning, the rule sees the ground without the part of its slope the obstacle takes.
-            double ghx = b.hx, ghy = b.hy;
+            // The rule sees the pull gradient (the ground's, tilted by push zones and magnets);
+            // leaning, without the part the obstacle takes.
+            double ghx = b.pullX, ghy = b.pullY;
             if (leaning) {
-                lean.effective(b.hx, b.hy);
+                lean.effective(b.pullX, b.pullY);
                 ghx = lean.gx;
                 ghy = lean.gy;
             }
@@ -128,6 +153,39 @@ final class RollingPhase {
         return b.pieceTime;
     }
 
+    /**
+     * A ball the ground holds at rest, on a course with moving obstacles: it stays (the stroke
+     * ends) only if no moving obstacle will ever reach it; otherwise it waits, still, until one
+     * does (within a period: they repeat) and is hit (docs/course-format.md, "Moving obstacles").
+     */
+    private double waitForMoving(double tau) {
+        BallState b = ball;
+        double now = startClock + b.t;
+        if (Double.isNaN(waitUntil)) {
+            waitUntil = scene.stillContact(b.x, b.y, b.h + ballRadius, now, waitHit);
+        }
+        if (waitUntil == Double.POSITIVE_INFINITY) {
+            waitUntil = Double.NaN;
+            reports.finish(Outcome.STOPPED, b.x, b.y, b.z);
+            return 0;
+        }
+        double wait = waitUntil - now;
+        if (wait >= tau) {
+            b.t += tau;
+            b.pieceTime = tau;
+            reports.state();
+            return tau;
+        }
+        b.t = waitUntil - startClock;
+        waitUntil = Double.NaN;
+        paths.hit.set(waitHit);
+        contact.whileRolling();
+        reports.state();
+        b.pieceTime = Math.max(0, wait);
+        b.resume = true;
+        return b.pieceTime;
+    }
+
     /** Completes a step of length tau of the given kind, with events, and commits it. */
     private void finishStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         try {
@@ -135,6 +193,7 @@ final class RollingPhase {
             commitStep(tau, kind, a1x, a1y, speed0);
         } finally {
             rolling.frozenMuK = Double.NaN;
+            rolling.pushFrozen = false;
         }
     }
 
@@ -182,8 +241,24 @@ final class RollingPhase {
             collided = true;
             leaves = false;
         }
+        int teleport = -1;
+        if (teleporter != null) {
+            // The ball enters a teleport's entry before the step's end: the step ends there.
+            double entry = teleporter.locate(endTau, kind, a1x, a1y);
+            if (entry >= 0) {
+                endTau = entry;
+                teleport = teleporter.entered;
+                stopping = false;
+                event = null;
+                collided = false;
+                leaves = false;
+            } else if (collided) {
+                tr.nx = paths.contactX;
+                tr.ny = paths.contactY;
+            }
+        }
         double speed1 = stopping && event == null ? 0 : Math.sqrt(tr.nvx * tr.nvx + tr.nvy * tr.nvy);
-        boolean pathEndsHere = stopping || event != null || collided;
+        boolean pathEndsHere = stopping || event != null || collided || teleport >= 0;
         if (captureRule && hole.captures(tr.nx, tr.ny, speed0, speed1, endTau, pathEndsHere)) {
             return;
         }
@@ -203,6 +278,15 @@ final class RollingPhase {
         }
         b.sampleGround();
         b.z = b.h;
+        if (teleport >= 0) {
+            if (lean != null) lean.release();
+            rest.forget();
+            reports.state();
+            teleporter.send(teleport);
+            reports.state();
+            b.resume = true;
+            return;
+        }
         if (collided) {
             contact.whileRolling();
             reports.state();
@@ -223,7 +307,7 @@ final class RollingPhase {
     /** Whether the ball leaves the ground within the coming tau (docs/physics.md, "Taking off"). */
     private boolean takesOffWithin(double tau, double a1x, double a1y) {
         BallState b = ball;
-        takeOff.from(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, b.muK);
+        takeOff.from(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, b.muK, b.fx, b.fy);
         return takeOff.takesOff(tau, a1x, a1y);
     }
 

@@ -35,4 +35,18 @@ public final class Simulator {
     public ShotResult simulate(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener) {
         return new Stroke(world, settings, x0, y0, vx, vy, vz, listener, true).run();
     }
+
+    /**
+     * A shot played at course clock {@code clock} (s), where moving obstacles make the moment
+     * matter (docs/course-format.md, "Moving obstacles"); no events recorded.
+     */
+    public ShotResult simulateAt(double clock, double x0, double y0, double vx, double vy, double vz) {
+        return new Stroke(world, settings, x0, y0, vx, vy, vz, clock, null, false).run();
+    }
+
+    /** As {@link #simulateAt(double, double, double, double, double, double)}, its events recorded in the result. */
+    public ShotResult simulateAt(double clock, double x0, double y0, double vx, double vy, double vz,
+                                 TrajectoryListener listener) {
+        return new Stroke(world, settings, x0, y0, vx, vy, vz, clock, listener, true).run();
+    }
 }

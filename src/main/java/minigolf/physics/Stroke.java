@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import minigolf.collision.CollisionScene;
 import minigolf.course.PhysicsModel;
 import minigolf.course.PhysicsSettings;
 import minigolf.terrain.Terrain;
@@ -35,6 +34,8 @@ public final class Stroke {
     static final double HOP_HEIGHT = 0.001;
 
     private final double dt;
+    /** The course clock when the ball was hit (s). */
+    private final double startClock;
     private final BallState ball;
     private final StrokeReports reports;
     private final RollingPhase rolling;
@@ -60,6 +61,17 @@ public final class Stroke {
      */
     public Stroke(World world, SimulationSettings settings, double x0, double y0, double vx0, double vy0, double vz0,
                   TrajectoryListener listener, boolean recordEvents) {
+        this(world, settings, x0, y0, vx0, vy0, vz0, 0, listener, recordEvents);
+    }
+
+    /**
+     * As {@link #Stroke(World, SimulationSettings, double, double, double, double, double,
+     * TrajectoryListener, boolean)}, played at course clock {@code clock} (s): the moment the
+     * moving obstacles are at when the ball is hit (docs/course-format.md, "Moving obstacles");
+     * {@link #clock()} is the course clock as the stroke goes on.
+     */
+    public Stroke(World world, SimulationSettings settings, double x0, double y0, double vx0, double vy0, double vz0,
+                  double clock, TrajectoryListener listener, boolean recordEvents) {
         PhysicsSettings physics = world.physics();
         double speed = Math.sqrt(vx0 * vx0 + vy0 * vy0 + vz0 * vz0);
         if (!Double.isFinite(speed)) {
@@ -72,27 +84,33 @@ public final class Stroke {
         Terrain terrain = world.terrain();
         FrictionField friction = world.friction();
         PlayArea area = world.playArea();
-        CollisionScene scene = world.obstacles();
+        if (!Double.isFinite(clock)) throw new IllegalArgumentException("the course clock must be a finite number");
+        this.startClock = clock;
+        Solids scene = Solids.of(world);
         double gravity = physics.gravity();
         double hopSpeed = Math.sqrt(2 * gravity * HOP_HEIGHT);
         double ballRadius = physics.ballRadius();
         boolean complete = physics.model() == PhysicsModel.COMPLETE;
         this.dt = settings.dt();
-        this.ball = new BallState(terrain, friction, x0, y0, vx0, vy0);
+        ForceField forces = world.forces();
+        this.ball = new BallState(terrain, friction, forces, gravity, complete, x0, y0, vx0, vy0);
         this.reports = new StrokeReports(ball, listener, recordEvents);
 
-        RollingStep steps = new RollingStep(terrain, friction, gravity, complete, settings.integrator());
+        RollingStep steps = new RollingStep(terrain, friction, forces, gravity, complete, settings.integrator());
         StepControl control = settings.integrator() == Integrator.RK4 ? new StepControl(steps, dt) : null;
         RollingTrial trial = new RollingTrial(ball, steps, control);
-        RestRule rest = new RestRule(world);
-        PathSweep paths = new PathSweep(scene, terrain, ballRadius);
+        RestRule rest = new RestRule(world, scene);
+        PathSweep paths = new PathSweep(scene, terrain, ballRadius, ball, clock);
         Leaning lean = scene == null ? null : new Leaning(scene, terrain, steps, ballRadius, gravity, complete);
         HoleRules hole = new HoleRules(ball, reports, terrain, world.hole());
-        ObstacleContact contact = new ObstacleContact(ball, reports, paths.hit, rest, lean, hopSpeed);
+        ObstacleContact contact = new ObstacleContact(ball, reports, paths.hit, rest, lean, hopSpeed, physics.maxSpeed(),
+                gravity);
         this.rolling = new RollingPhase(ball, reports, steps, trial,
-                new StepLocator(ball, trial, steps, terrain, friction, area), rest, new TakeOff(terrain, steps, gravity),
-                hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete), scene, lean, paths, contact,
-                terrain, gravity, ballRadius, settings.maxTime(), friction.hasZones());
+                new StepLocator(ball, trial, steps, terrain, friction, forces, area), rest, new TakeOff(terrain, steps, gravity),
+                hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete, forces), scene, lean, paths, contact,
+                terrain, gravity, ballRadius, settings.maxTime(),
+                friction.hasZones() || (forces != null && forces.hasPushZones()),
+                world.teleports() == null ? null : new Teleporter(world.teleports(), ball, trial, reports), clock);
         this.flight = new FlightPhase(ball, reports, new FlightStep(terrain, gravity, physics.dragFactor()),
                 new GroundImpact(physics.groundRestitution(), hopSpeed), hole, rest, area, scene, paths, contact,
                 ballRadius, settings.maxTime());
@@ -130,6 +148,8 @@ public final class Stroke {
     public double vz() { return ball.verticalSpeed(); }
     public boolean isFlying() { return ball.flying; }
     public double time() { return ball.t; }
+    /** The course clock now: the clock when the ball was hit plus {@link #time()}. */
+    public double clock() { return startClock + ball.t; }
     public int steps() { return ball.steps; }
     /** The terrain height under the ball. */
     public double height() { return ball.h; }
@@ -140,6 +160,7 @@ public final class Stroke {
         if (b.outcome != null) return;
         double remaining = dt;
         int pieces = 0;
+        b.movingContact = false;
         while (pieces < MAX_PIECES) {
             b.resume = false;
             b.subPiece = false;
@@ -148,7 +169,13 @@ public final class Stroke {
             // A sub-step the error control asked for is no contact: it does not count towards a wedge.
             if (!b.subPiece) pieces++;
         }
-        // Wedged: more contacts in one step than we follow. The ball stops where it is for the rest of it.
+        // Wedged: more contacts in one step than we follow. Crushed by a moving obstacle (against
+        // another, or the ground), the ball is out of play; otherwise it stops where it is for the
+        // rest of the step.
+        if (b.movingContact) {
+            reports.finish(Outcome.OUT, b.x, b.y, b.z);
+            return;
+        }
         b.t += remaining;
         b.vx = 0;
         b.vy = 0;

@@ -80,7 +80,9 @@ public final class ObstacleMeshes {
         List<Piece> solidPieces = new java.util.ArrayList<>(), crownPieces = new java.util.ArrayList<>();
         for (Obstacle o : obstacles) {
             int solidStart = solid.vertexCount(), crownStart = crowns.vertexCount();
-            if (o instanceof Obstacle.Tree tree) {
+            if (!ObstacleGeometry.isStillSolid(o) || o instanceof Obstacle.Bumper) {
+                // Gates, bumpers and moving obstacles are drawn by the course elements' own meshes.
+            } else if (o instanceof Obstacle.Tree tree) {
                 double[] c = ObstacleGeometry.treeCylinder(tree, ground);
                 solid.append(Shapes.cylinder(c[0], c[1], c[3], c[4], c[2], TRUNK_SEGMENTS,
                         TRUNK_COLOR[0], TRUNK_COLOR[1], TRUNK_COLOR[2]));
