@@ -250,16 +250,7 @@ public final class CollisionScene {
                             : cylinder(s - triangleCount, x0, y0, z0, dx, dy, dz, best, scratch);
                     if (t < best) {
                         best = t;
-                        hit.fraction = t;
-                        hit.nx = scratch[0];
-                        hit.ny = scratch[1];
-                        hit.nz = scratch[2];
-                        hit.restitution = restitution[s];
-                        hit.obstacle = obstacleOf[s];
-                        hit.ux = 0;
-                        hit.uy = 0;
-                        hit.uz = 0;
-                        hit.moving = false;
+                        hit.still(t, scratch[0], scratch[1], scratch[2], restitution[s], obstacleOf[s]);
                     }
                 }
             }

@@ -138,18 +138,7 @@ public final class Gates {
                     found = true;
                 }
             }
-            if (found) {
-                hit.fraction = best;
-                hit.nx = scratch[0];
-                hit.ny = scratch[1];
-                hit.nz = scratch[2];
-                hit.restitution = restitution[g];
-                hit.obstacle = obstacleOf[g];
-                hit.ux = 0;
-                hit.uy = 0;
-                hit.uz = 0;
-                hit.moving = false;
-            }
+            if (found) hit.still(best, scratch[0], scratch[1], scratch[2], restitution[g], obstacleOf[g]);
         }
         return best < limit ? best : Double.POSITIVE_INFINITY;
     }

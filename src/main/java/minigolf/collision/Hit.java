@@ -14,6 +14,20 @@ public final class Hit {
     /** Whether the obstacle hit moves (then {@link #ux}, {@link #uy}, {@link #uz} hold its velocity there). */
     public boolean moving;
 
+    /** A contact with a still obstacle. */
+    public void still(double fraction, double nx, double ny, double nz, double restitution, int obstacle) {
+        this.fraction = fraction;
+        this.nx = nx;
+        this.ny = ny;
+        this.nz = nz;
+        this.restitution = restitution;
+        this.obstacle = obstacle;
+        ux = 0;
+        uy = 0;
+        uz = 0;
+        moving = false;
+    }
+
     /** Copies another contact into this one. */
     public void set(Hit other) {
         fraction = other.fraction;

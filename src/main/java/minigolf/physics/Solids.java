@@ -57,23 +57,15 @@ final class Solids {
      */
     boolean sweep(double x0, double y0, double z0, double t0, double x1, double y1, double z1, double t1, double skin,
                   Hit hit) {
-        double best = Double.POSITIVE_INFINITY;
-        if (scene != null && scene.sweep(x0, y0, z0, x1, y1, z1, hit, scratch)) best = hit.fraction;
-        if (gates != null) {
-            double f = gates.sweep(x0, y0, z0, x1, y1, z1, Math.min(best, 1.0 + 1e-12), other, scratch);
-            if (f < best) {
-                best = f;
-                hit.set(other);
-            }
-        }
+        boolean found = sweepStill(x0, y0, z0, x1, y1, z1, hit);
         if (moving != null) {
-            double f = sweeper.sweep(x0, y0, z0, t0, x1, y1, z1, t1, Math.min(best, 1.0 + 1e-12), skin, other);
-            if (f < best) {
-                best = f;
+            double f = sweeper.sweep(x0, y0, z0, t0, x1, y1, z1, t1, found ? hit.fraction : 1.0 + 1e-12, skin, other);
+            if (f < (found ? hit.fraction : Double.POSITIVE_INFINITY)) {
                 hit.set(other);
+                found = f <= 1;
             }
         }
-        return best <= 1;
+        return found;
     }
 
     /** The sweep from p0 to p1 against the still obstacles and the gates only. */
