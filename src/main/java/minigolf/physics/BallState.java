@@ -18,6 +18,11 @@ final class BallState {
     private final boolean complete;
     private final double[] sample = new double[3];
 
+    /** Where the stroke began (a ball a moving obstacle crushes or catches is put back there). */
+    final double startX, startY;
+    /** The ground's height where the stroke began. */
+    double startZ;
+
     // The ball and the terrain sample at it (reused as the first stage of the next step).
     double x, y, vx, vy, t;
     double h, hx, hy, muK;
@@ -40,6 +45,8 @@ final class BallState {
     boolean subPiece;
     /** Set when the ball meets a moving obstacle within the current step (a wedge there crushes it). */
     boolean movingContact;
+    /** Contacts with moving obstacles in this stroke (too many and the ball is caught: out). */
+    int movingContacts;
     /** The time the current piece took. */
     double pieceTime;
 
@@ -54,6 +61,8 @@ final class BallState {
         this.forces = forces;
         this.gravity = gravity;
         this.complete = complete;
+        this.startX = x;
+        this.startY = y;
         this.x = x;
         this.y = y;
         this.vx = vx;

@@ -9,6 +9,12 @@ import minigolf.collision.Hit;
  * one, where it cannot roll, and is out.
  */
 final class ObstacleContact {
+    /**
+     * A ball that moving obstacles touch more often than this in one stroke is caught (a ball riding
+     * a turning bar's corner round and round): out of play (docs/course-format.md, "Moving obstacles").
+     */
+    static final int MOST_MOVING_CONTACTS = 500;
+
     private final BallState ball;
     private final StrokeReports reports;
     private final Hit hit;
@@ -41,7 +47,7 @@ final class ObstacleContact {
         BallState b = ball;
         // A new heading: the rest rule's decision about a turn ahead was for the old one.
         rest.forget();
-        if (hit.moving) b.movingContact = true;
+        if (hit.moving && caught()) return;
         double wz = b.hx * b.vx + b.hy * b.vy;
         double before = Math.sqrt(b.vx * b.vx + b.vy * b.vy + wz * wz);
         bounce.off(b.vx, b.vy, wz, hit.nx, hit.ny, hit.nz, hit.restitution, hit.ux, hit.uy, hit.uz);
@@ -78,6 +84,15 @@ final class ObstacleContact {
         reports.event(StrokeEvent.Type.COLLISION, before, Math.sqrt(b.vx * b.vx + b.vy * b.vy + wz * wz));
     }
 
+    /** Counts a moving obstacle's contact; ends the stroke out when the ball is caught. */
+    private boolean caught() {
+        BallState b = ball;
+        b.movingContact = true;
+        if (++b.movingContacts <= MOST_MOVING_CONTACTS) return false;
+        reports.removedFromPlay();
+        return true;
+    }
+
     /**
      * After a moving obstacle's contact, a rolling ball leaves it (relative to its surface, along the
      * normal) at least fast enough to get {@link Leaning#REACH} away before its friction and the
@@ -112,7 +127,7 @@ final class ObstacleContact {
      */
     void inFlight() {
         BallState b = ball;
-        if (hit.moving) b.movingContact = true;
+        if (hit.moving && caught()) return;
         double before = Math.sqrt(b.vx * b.vx + b.vy * b.vy + b.vz * b.vz);
         double vn = b.vx * hit.nx + b.vy * hit.ny + b.vz * hit.nz;
         bounce.off(b.vx, b.vy, b.vz, hit.nx, hit.ny, hit.nz, hit.restitution, hit.ux, hit.uy, hit.uz);

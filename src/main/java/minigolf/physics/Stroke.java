@@ -117,6 +117,7 @@ public final class Stroke {
 
         ball.sampleGround();
         ball.z = ball.h;
+        ball.startZ = ball.h;
         if (!area.contains(ball.x, ball.y)) {
             reports.finish(Outcome.OUT, ball.x, ball.y, ball.z);
         } else if (ball.h < 0) {
@@ -173,7 +174,7 @@ public final class Stroke {
         // another, or the ground), the ball is out of play; otherwise it stops where it is for the
         // rest of the step.
         if (b.movingContact) {
-            reports.finish(Outcome.OUT, b.x, b.y, b.z);
+            reports.removedFromPlay();
             return;
         }
         b.t += remaining;
