@@ -135,6 +135,11 @@ final class CourseScene implements AutoCloseable {
         if (moving) turnToHole = false;
     }
 
+    /** The course clock the moving obstacles are drawn at. */
+    void setClock(double clock) {
+        if (renderer != null) renderer.setClock(clock);
+    }
+
     /** Draws the scene with these balls and aim, then the minimap at the top right. */
     void draw(int fw, int fh, float time, List<BallView> balls, AimView aim) {
         cupDrop.advanceTo(time);

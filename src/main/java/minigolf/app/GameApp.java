@@ -137,6 +137,7 @@ public final class GameApp implements WindowApp {
         GameScreen s = current();
         scene.show(s.course(), s.course() == play.world() ? play.coursePath() : null, settings, fw, fh);
         s.directCamera(scene, scene.sinceLastFrame(time), (float) fw / Math.max(1, fh));
+        scene.setClock(s.clock());
         scene.draw(fw, fh, time, s.balls(), s.aim());
         glViewport(0, 0, fw, fh);
         uiLayer.newFrame();

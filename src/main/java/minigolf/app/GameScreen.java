@@ -55,6 +55,14 @@ abstract class GameScreen implements Screen {
         return views;
     }
 
+    /** The course clock the 3D view shows (moving obstacles): the rolling stroke's, else the game's. */
+    double clock() {
+        Game game = app.play().game();
+        StrokeAnimator animator = app.play().animator();
+        if (animator != null) return animator.clock();
+        return game == null ? app.play().idleClock() : game.clock();
+    }
+
     /** The aim drawn (arrow and guide), or null. */
     AimView aim() {
         return null;
