@@ -66,7 +66,8 @@ final class PlaySession {
     private BotTurn botTurn;
     /** A bot's shot waiting for its planned moment (the course clock runs on until then), and how long yet. */
     private double[] botShot;
-    private double botWait;
+    /** The course clock the waiting bot's shot is to be hit at. */
+    private double botMoment;
     /** Where the view's clock starts when no game is played (the moving obstacles turn behind the menus). */
     private final long idleStart = System.nanoTime();
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
@@ -256,10 +257,10 @@ final class PlaySession {
         Player p = game.players().get(seat);
         if (botShot != null) {
             // The bot's shot waits for its planned moment: the clock runs on to it exactly, then it is hit.
-            double run = Math.min(botWait, elapsed * timeScale);
-            game.advanceClock(run);
-            botWait -= run;
-            if (botWait <= 0) {
+            if (game.clock() + elapsed * timeScale < botMoment) {
+                game.advanceClock(elapsed * timeScale);
+            } else {
+                game.advanceClockTo(botMoment);
                 double[] shot = botShot;
                 botShot = null;
                 hit(shot[0], shot[1], shot[2]);
@@ -284,7 +285,7 @@ final class PlaySession {
                 botTurn = null;
                 if (done.shot() != null && done.waitSeconds() > 0) {
                     botShot = done.shot();
-                    botWait = done.waitSeconds();
+                    botMoment = game.clock() + done.waitSeconds();
                 } else if (done.shot() != null) {
                     hit(done.shot()[0], done.shot()[1], done.shot()[2]);
                 } else {
@@ -306,7 +307,7 @@ final class PlaySession {
 
     /** Seconds until a bot's planned shot is hit, or NaN when none waits. */
     double botWaitLeft() {
-        return botShot == null ? Double.NaN : botWait;
+        return botShot == null || game == null ? Double.NaN : Math.max(0, botMoment - game.clock());
     }
 
     /** Stops the bot thinking now (its Cancel button); the bots of this hole are asked afresh. */

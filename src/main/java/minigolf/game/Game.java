@@ -124,6 +124,13 @@ public final class Game {
         clock += seconds;
     }
 
+    /** Runs the course clock on to exactly {@code moment} (a bot's planned moment), never back. */
+    public void advanceClockTo(double moment) {
+        if (stroke != null) throw new IllegalStateException("a stroke is rolling: its own time moves the clock");
+        if (!(moment >= clock) || !Double.isFinite(moment)) throw new IllegalArgumentException("the clock cannot go back to " + moment);
+        clock = moment;
+    }
+
     /** Whether the course has moving obstacles (then the clock matters). */
     public boolean hasMovingObstacles() {
         return world.moving() != null;

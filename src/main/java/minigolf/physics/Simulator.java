@@ -44,6 +44,11 @@ public final class Simulator {
         return new Stroke(world, settings, x0, y0, vx, vy, vz, clock, null, false).run();
     }
 
+    /** A putt played at course clock {@code clock}, its states to the listener (events not recorded). */
+    public ShotResult simulatePuttAt(double clock, double x0, double y0, double vx, double vy, TrajectoryListener listener) {
+        return new Stroke(world, settings, x0, y0, vx, vy, 0, clock, listener, false).run();
+    }
+
     /** As {@link #simulateAt(double, double, double, double, double, double)}, its events recorded in the result. */
     public ShotResult simulateAt(double clock, double x0, double y0, double vx, double vy, double vz,
                                  TrajectoryListener listener) {
