@@ -38,6 +38,14 @@ public final class MotionTools {
         return new Motion.Slide(path, s.period(), s.phase(), s.closed());
     }
 
+    /** The same motion with another period and phase (s). */
+    public static Motion withTiming(Motion m, double period, double phase) {
+        if (m instanceof Motion.Rotate r) return new Motion.Rotate(r.pivot(), r.axis(), period, phase);
+        if (m instanceof Motion.Swing s) return new Motion.Swing(s.pivot(), s.axis(), s.amplitudeDeg(), period, phase);
+        Motion.Slide s = (Motion.Slide) m;
+        return new Motion.Slide(s.path(), period, phase, s.closed());
+    }
+
     private static Vec3 shift(Vec3 p, double dx, double dy) {
         return new Vec3(p.x() + dx, p.y() + dy, p.z());
     }

@@ -105,5 +105,8 @@ final class Teleporter {
         b.sampleGround();
         b.z = b.h;
         reports.event(StrokeEvent.Type.TELEPORT, Double.NaN, Double.NaN);
+        // An exit inside an entry (the loader refuses it; a course built in code may not) would send
+        // the ball round for ever: it is lost, out of play.
+        if (field.entryAt(b.x, b.y) >= 0) reports.removedFromPlay();
     }
 }

@@ -49,4 +49,18 @@ class TeleportTest {
         ShotResult r = ElementWorlds.simulator(corner).simulate(0, 0, 4.8, 1.2, 0, null);
         assertEquals(StrokeEvent.Type.TELEPORT, r.events().get(0).type());
     }
+
+    @Test
+    void anExitInsideAnEntryFromACourseBuiltInCodeTakesTheBallOutOfPlayInsteadOfLooping() {
+        // The loader refuses such a course; one built in code (the editor's unsaved course) must not hang.
+        World plain = ElementWorlds.flat("");
+        minigolf.course.Teleport loop = new minigolf.course.Teleport(
+                new minigolf.course.Shape.Circle(new minigolf.course.Vec2(1, 0), 0.3),
+                List.of(new minigolf.course.Teleport.Exit(new minigolf.course.Vec2(1.1, 0), null)));
+        World w = new World(plain.course().withElements(List.of(), List.of(), List.of(loop)), plain.terrain());
+        ShotResult r = ElementWorlds.simulator(w).simulate(0, 0, 2, 0, 0, null);
+        assertEquals(Outcome.OUT, r.outcome());
+        assertEquals(0, r.endX());
+        assertEquals(0, r.endY());
+    }
 }
