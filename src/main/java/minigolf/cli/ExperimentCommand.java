@@ -41,7 +41,7 @@ final class ExperimentCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--suite", required = true, paramLabel = "DIR", description = "Folder of course files (*.json).")
+    @Option(names = "--suite", required = true, paramLabel = "DIR", description = "Folder of course files (*.json) and of course folders holding a course.json (as import-tracks writes under courses/).")
     Path suite;
 
     @Option(names = "--bots", paramLabel = "a,b,c|all", description = "Bots to compare (default: ${DEFAULT-VALUE}).")
@@ -230,7 +230,7 @@ final class ExperimentCommand implements Callable<Integer> {
             String name = part.trim();
             if (name.isEmpty()) continue;
             if (Bots.create(name) == null) {
-                throw new UserError("--bots: unknown bot '" + name + "'; known: " + String.join(", ", Bots.names()) + ", all");
+                throw new UserError("--bots: unknown bot '" + name + "'; known: " + String.join(", ", Bots.allNames()) + ", all");
             }
             if (!names.contains(name)) names.add(name);
         }
@@ -238,19 +238,25 @@ final class ExperimentCommand implements Callable<Integer> {
         return names;
     }
 
+    /** The course file of a course folder in a suite. */
+    static final String FOLDER_COURSE = "course.json";
+
     /** Loads the suite's course files (sorted by name) and the SHA-256 of each file's bytes. */
     static void loadSuite(Path dir, List<Experiment.SuiteCourse> courses, List<Manifest.CourseFile> files) {
         if (!Files.isDirectory(dir)) throw new UserError("--suite: " + dir + ": no such folder");
         List<Path> paths;
         try (Stream<Path> listing = Files.list(dir)) {
-            paths = listing.filter(p -> p.getFileName().toString().endsWith(".json")).sorted().toList();
+            // Course files, and folders holding a course.json with its models (as import-tracks writes them).
+            paths = listing.map(p -> Files.isDirectory(p) ? p.resolve(FOLDER_COURSE) : p)
+                    .filter(p -> p.getFileName().toString().endsWith(".json") && Files.isRegularFile(p)).sorted().toList();
         } catch (IOException e) {
             throw new UserError("--suite: " + dir + ": cannot list: " + e.getMessage());
         }
         if (paths.isEmpty()) throw new UserError("--suite: " + dir + ": no course files (*.json)");
         for (Path f : paths) {
             String file = f.getFileName().toString();
-            String name = file.substring(0, file.length() - 5);
+            String name = file.equals(FOLDER_COURSE) && !f.getParent().equals(dir) ? f.getParent().getFileName().toString()
+                    : file.substring(0, file.length() - 5);
             byte[] bytes;
             try {
                 bytes = Files.readAllBytes(f);

@@ -66,6 +66,7 @@ public final class CourseValidator {
             checkNotDeleted(course.hole().position(), "hole.position", g, sourceName);
         }
         checkTeleports(course, sourceName);
+        checkNoHazard(course.start(), "start", course, sourceName);
     }
 
     /**
@@ -97,6 +98,21 @@ public final class CourseValidator {
                 throw new CourseException(sourceName, path, point(p) + " is inside the entry of teleports[" + j
                         + "] (the ball would be sent on at once)");
             }
+        }
+    }
+
+    /**
+     * The start may not lie in a hazard zone the ball ends in on entering: the first stroke would
+     * end before it began (one it ends in only at rest, as shallow water, is allowed).
+     */
+    private static void checkNoHazard(Vec2 p, String path, Course course, String sourceName) throws CourseException {
+        Zone decisive = null;
+        for (Zone z : course.zones()) {
+            if (z.shape().contains(p.x(), p.y())) decisive = z; // later zones win
+        }
+        if (decisive != null && decisive.hazard() != null && decisive.hazard().when() == Zone.Hazard.When.ENTER) {
+            throw new CourseException(sourceName, path, point(p) + " is in a " + decisive.hazard().kind().jsonName()
+                    + " zone");
         }
     }
 

@@ -55,6 +55,10 @@ public final class Limits {
     public static final double SLIDE_SPEED = 20;
     /** How far a turning or swinging obstacle's body may reach from its pivot (m), so its edge moves at most ~300 m/s. */
     public static final double MOTION_REACH = 10;
+    /** Cells of one cells shape (a classic track's 735 x 375 pixels is 275,625). */
+    public static final int CELLS = 1 << 20;
+    /** Row spans of one cells shape. */
+    public static final int CELL_SPANS = 200_000;
     /** Vertices (v lines) of one .obj model. */
     public static final int MODEL_VERTICES = ObjParser.MAX_VERTICES;
     /** Triangles of one .obj model (after polygons are split). */

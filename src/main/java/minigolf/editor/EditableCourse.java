@@ -34,6 +34,8 @@ public final class EditableCourse {
     final List<PushZone> pushZones = new ArrayList<>();
     final List<Magnet> magnets = new ArrayList<>();
     final List<Teleport> teleports = new ArrayList<>();
+    /** The themed world the course is set in (kept as loaded; the editor does not change it). */
+    String world = minigolf.theme.Themes.DEFAULT_ID;
 
     /** The course's fields that are not per node or per obstacle. */
     public record Properties(String name, Vec2 start, Hole hole, PhysicsSettings physics) {
@@ -101,7 +103,7 @@ public final class EditableCourse {
     public Course toCourse() {
         Properties p = properties;
         return new Course(Course.FORMAT, p.name(), grid(), bounds, p.physics(), p.start(), p.hole(), zones, obstacles,
-                pushZones, magnets, teleports);
+                pushZones, magnets, teleports, world);
     }
 
     public int columns() {

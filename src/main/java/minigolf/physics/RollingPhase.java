@@ -105,7 +105,7 @@ final class RollingPhase {
         if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.pullX, b.pullY, b.muK)) {
             boolean holed = hole.isInHole(b.x, b.y);
             if (!holed && scene != null && scene.hasMoving()) return waitForMoving(tau);
-            reports.finish(holed ? Outcome.HOLED : Outcome.STOPPED, b.x, b.y, b.z);
+            reports.finish(holed ? Outcome.HOLED : b.restsInHazard() ? Outcome.WATER : Outcome.STOPPED, b.x, b.y, b.z);
             return 0;
         }
         waitUntil = Double.NaN;
