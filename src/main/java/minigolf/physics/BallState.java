@@ -1,7 +1,5 @@
 package minigolf.physics;
 
-import minigolf.terrain.Terrain;
-
 /**
  * The integrator's mutable state, which every piece of a {@link Stroke} reads and rewrites: the
  * ball (position, velocity, time and the terrain sample under it), the start of the last rolling
@@ -10,7 +8,7 @@ import minigolf.terrain.Terrain;
  * fields, as the pieces use them on the hot path; one object per stroke, never shared.
  */
 final class BallState {
-    private final Terrain terrain;
+    private final GroundCache ground;
     private final FrictionField friction;
     /** Push zones and magnets; null without them. */
     private final ForceField forces;
@@ -19,7 +17,7 @@ final class BallState {
     private final double[] sample = new double[3];
 
     /** Where the stroke began (a ball a moving obstacle crushes or catches is put back there). */
-    final double startX, startY;
+    double startX, startY;
     /** The ground's height where the stroke began. */
     double startZ;
 
@@ -54,19 +52,38 @@ final class BallState {
     Outcome outcome;
     double endX, endY, endZ;
 
-    BallState(Terrain terrain, FrictionField friction, ForceField forces, double gravity, boolean complete,
-              double x, double y, double vx, double vy) {
-        this.terrain = terrain;
+    BallState(GroundCache ground, FrictionField friction, ForceField forces, double gravity, boolean complete) {
+        this.ground = ground;
         this.friction = friction;
         this.forces = forces;
         this.gravity = gravity;
         this.complete = complete;
-        this.startX = x;
-        this.startY = y;
+    }
+
+    /** A new stroke: the ball at (x, y) with velocity (vx, vy) on the ground, everything else cleared. */
+    void reset(double x, double y, double vx, double vy) {
         this.x = x;
         this.y = y;
         this.vx = vx;
         this.vy = vy;
+        startX = x;
+        startY = y;
+        startZ = 0;
+        t = 0;
+        h = hx = hy = muK = 0;
+        fx = fy = pullX = pullY = 0;
+        steps = 0;
+        z = vz = 0;
+        flying = false;
+        px = py = pvx = pvy = pt = ph = phx = phy = pMuK = 0;
+        pfx = pfy = pPullX = pPullY = 0;
+        resume = false;
+        subPiece = false;
+        movingContact = false;
+        movingContacts = 0;
+        pieceTime = 0;
+        outcome = null;
+        endX = endY = endZ = 0;
     }
 
     /** Whether a ball coming to rest here ends the stroke in a hazard zone. */
@@ -79,12 +96,12 @@ final class BallState {
         return friction.entersHazard(x, y);
     }
 
-    /** Samples the terrain and friction under the ball into h, hx, hy, muK. */
+    /** Samples the terrain, friction and forces under the ball into h, hx, hy, muK, fx, fy, pullX, pullY. */
     void sampleGround() {
-        terrain.sample(x, y, sample);
-        h = sample[0];
-        hx = sample[1];
-        hy = sample[2];
+        double[] g = ground.at(x, y);
+        h = g[0];
+        hx = g[1];
+        hy = g[2];
         if (!Double.isFinite(h + hx + hy)) throw NonFiniteMotionException.terrain(x, y);
         muK = friction.kinetic(x, y);
         if (forces == null) {

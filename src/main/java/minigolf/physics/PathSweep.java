@@ -26,7 +26,7 @@ final class PathSweep {
     private final double ballRadius;
     /** The stroke's ball (its time is the step's start) and the course clock when the stroke began. */
     private final BallState ball;
-    private final double startClock;
+    private double startClock;
     /** The last contact: normal, restitution, fraction of the chord it was found on. */
     final Hit hit = new Hit();
     /** The last contact: the fraction of the step, and the sphere's centre there. */
@@ -38,12 +38,16 @@ final class PathSweep {
     // The course clock at the step's start, and its length: the moving obstacles' times.
     private double clock0, tau;
 
-    PathSweep(Solids solids, Terrain terrain, double ballRadius, BallState ball, double startClock) {
+    PathSweep(Solids solids, Terrain terrain, double ballRadius, BallState ball) {
         this.solids = solids;
         this.ball = ball;
-        this.startClock = startClock;
         this.terrain = terrain;
         this.ballRadius = ballRadius;
+    }
+
+    /** A new stroke played at course clock {@code clock}. */
+    void start(double clock) {
+        startClock = clock;
     }
 
     /**

@@ -28,6 +28,17 @@ final class Teleporter {
         this.used = new int[field.size()];
     }
 
+    /** A new stroke: every teleport's exits from the first again. */
+    void reset() {
+        java.util.Arrays.fill(used, 0);
+        entered = -1;
+    }
+
+    /** Whether a teleport's entry reaches into the rectangle of centre positions. */
+    boolean near(double minX, double minY, double maxX, double maxY) {
+        return field.near(minX, minY, maxX, maxY);
+    }
+
     /** The teleport whose entry the ball is in, or -1. */
     int at() {
         return field.entryAt(ball.x, ball.y);

@@ -26,7 +26,9 @@ class PushZoneTest {
 
     @Test
     void aPushIsTheSameAsATilt() {
-        // The classic model: flat ground with push f rolls exactly as the plane h = -f.x/g does.
+        // The classic model: flat ground with push f rolls exactly as the plane h = -f.x/g does. The
+        // plane takes long steps where nothing is near (docs/physics.md, "Step control"), the pushed
+        // course not (a push zone covers it): they agree to a micrometre, not to the last bit.
         World pushed = ElementWorlds.flat(String.format(EVERYWHERE, 0.6, -0.3));
         World tilted = ElementWorlds.course("1-" + (0.6 / G) + "*x+" + (0.3 / G) + "*y", "");
         Random random = new Random(24);
@@ -36,8 +38,8 @@ class PushZoneTest {
             ShotResult a = ElementWorlds.simulator(pushed).simulate(0, 0, vx, vy);
             ShotResult b = ElementWorlds.simulator(tilted).simulate(0, 0, vx, vy);
             assertEquals(b.outcome(), a.outcome());
-            assertEquals(b.endX(), a.endX(), 1e-9, "shot " + i);
-            assertEquals(b.endY(), a.endY(), 1e-9, "shot " + i);
+            assertEquals(b.endX(), a.endX(), 1e-6, "shot " + i);
+            assertEquals(b.endY(), a.endY(), 1e-6, "shot " + i);
         }
     }
 
