@@ -14,13 +14,14 @@ import java.util.Locale;
 import java.util.stream.Stream;
 
 /**
- * The planner's full search (budget 1,000,000, at most 10 strokes) on generated tile courses, two
- * builds in one JVM (class loaders of their own), course by course A then B (B then A on odd
- * courses), timed by the thread's CPU time (docs/measurements.md, "Comparing two builds"). Each build is given as its
- * main classes, test classes (TileCourses) and lib folder.
+ * A bot (by default {@code planner-aces}, the planner's full search; budget 1,000,000, at most 10
+ * strokes) on generated tile courses, two builds in one JVM (class loaders of their own), course
+ * by course A then B (B then A on odd courses), timed by the thread's CPU time
+ * (docs/measurements.md, "Comparing two builds"). Each build is given as its main classes, test
+ * classes (TileCourses) and lib folder.
  *
  * <pre>
- * java tools/PlannerAB.java A_MAIN:A_TEST:A_LIB B_MAIN:B_TEST:B_LIB SEED COUNT
+ * java tools/PlannerAB.java A_MAIN:A_TEST:A_LIB B_MAIN:B_TEST:B_LIB SEED COUNT [BOT]
  * </pre>
  * Prints per course: strokes, simulations and CPU seconds of each, then the medians and the
  * strokes that differ.
@@ -75,11 +76,11 @@ public final class PlannerAB {
         }
 
         /** {strokes, simulations, CPU seconds, holed (1/0)}. */
-        double[] play(Object world) throws Throwable {
+        double[] play(Object world, String bot) throws Throwable {
             ThreadMXBean threads = ManagementFactory.getThreadMXBean();
             long cpu = threads.getCurrentThreadCpuTime();
             // A time limit far beyond any course's: the result must not depend on the machine's load.
-            Object r = play.invoke(create.invoke("planner"), world, settings, 10, 1_000_000L, 1L, token.invoke(3600.0), progress);
+            Object r = play.invoke(create.invoke(bot), world, settings, 10, 1_000_000L, 1L, token.invoke(3600.0), progress);
             double seconds = (threads.getCurrentThreadCpuTime() - cpu) / 1e9;
             return new double[] {(int) strokes.invoke(r), (long) simulations.invoke(r), seconds, (boolean) holed.invoke(r) ? 1 : 0};
         }
@@ -89,6 +90,7 @@ public final class PlannerAB {
         Build a = new Build(args[0]), b = new Build(args[1]);
         long seed = Long.parseLong(args[2]);
         int count = Integer.parseInt(args[3]);
+        String bot = args.length > 4 ? args[4] : "planner-aces";
         List<?> wa = (List<?>) a.generate.invoke(seed, count), wb = (List<?>) b.generate.invoke(seed, count);
         double[] ta = new double[count], tb = new double[count];
         int same = 0;
@@ -98,11 +100,11 @@ public final class PlannerAB {
         for (int i = 0; i < count; i++) {
             double[] ra, rb;
             if (i % 2 == 0) {
-                ra = a.play(wa.get(i));
-                rb = b.play(wb.get(i));
+                ra = a.play(wa.get(i), bot);
+                rb = b.play(wb.get(i), bot);
             } else {
-                rb = b.play(wb.get(i));
-                ra = a.play(wa.get(i));
+                rb = b.play(wb.get(i), bot);
+                ra = a.play(wa.get(i), bot);
             }
             ta[i] = ra[2];
             tb[i] = rb[2];
