@@ -96,7 +96,7 @@ public final class ElementMeshes {
         } else {
             ObstacleMeshes.Built built = ObstacleMeshes.build(List.of(body), ground, m -> MaterialLibrary.empty());
             // A model keeps its own colours; a moving wall or box is cream.
-            parts.add(body instanceof Obstacle.Model ? built.solid() : recolour(built.solid(), MOVING));
+            parts.add(body instanceof Obstacle.Model ? pnc(built.solid()) : recolour(pnc(built.solid()), MOVING));
         }
         return merge(parts);
     }
@@ -168,7 +168,7 @@ public final class ElementMeshes {
         // A thin panel standing on the ground, its top the gate's (straight between the ends), as the ball meets it.
         Obstacle.Wall panel = new Obstacle.Wall(g.from(), g.to(), 2 * half, g.height(), 0);
         ObstacleMeshes.Built built = ObstacleMeshes.build(List.of(panel), ground, m -> MaterialLibrary.empty());
-        solid.add(recolour(built.solid(), GATE_PANEL));
+        solid.add(recolour(pnc(built.solid()), GATE_PANEL));
         // Chevrons on the ground through the gate, pointing to its pass side; a red bar on the pass side
         // shows where a ball coming back is stopped.
         int arrows = Math.max(1, (int) Math.floor(length / 0.25));
@@ -332,6 +332,21 @@ public final class ElementMeshes {
             b[3] = Math.max(b[3], p.y());
         }
         return b;
+    }
+
+    /**
+     * The mesh in position/normal/colour ({@link MeshData#PNC}), the layout this pass draws: the
+     * obstacles' meshes carry a material id as a fourth colour component ({@link ObstacleMeshes#LAYOUT}),
+     * which is dropped.
+     */
+    static MeshData pnc(MeshData d) {
+        int stride = d.stride();
+        if (stride == 9) return d;
+        float[] from = d.vertices();
+        int count = from.length / stride;
+        float[] v = new float[count * 9];
+        for (int k = 0; k < count; k++) System.arraycopy(from, k * stride, v, k * 9, 9);
+        return new MeshData(MeshData.PNC, v, d.indices());
     }
 
     private static MeshData recolour(MeshData d, float[] c) {
