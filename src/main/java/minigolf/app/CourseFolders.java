@@ -85,18 +85,25 @@ final class CourseFolders {
         Set<Path> shipped = shippedFolders();
         List<CourseEntry> out = new ArrayList<>();
         Set<Path> seen = new LinkedHashSet<>();
-        for (Path dir : shipped) add(dir, false, out, seen);
-        add(store.directory().resolve("courses"), true, out, seen);
+        for (Path dir : shipped) add(dir, false, out, seen, null);
+        // The practice holes, one course element each (docs/course-format.md, "Practice holes").
+        for (Path dir : shipped) add(dir.resolve(PRACTICE), false, out, seen, PRACTICE);
+        add(store.directory().resolve("courses"), true, out, seen, null);
         return out;
     }
 
-    private static void add(Path dir, boolean own, List<CourseEntry> out, Set<Path> seen) {
+    /** The shipped courses' folder of practice holes. */
+    static final String PRACTICE = "practice";
+
+    /** Adds the courses of {@code dir}; a file name seen already (under the same {@code folder}) is offered once. */
+    private static void add(Path dir, boolean own, List<CourseEntry> out, Set<Path> seen, String folder) {
         if (!Files.isDirectory(dir)) return;
         try (Stream<Path> files = Files.list(dir)) {
             for (Path f : files.filter(p -> p.toString().endsWith(".json")).sorted().toList()) {
                 try {
                     String name = CourseLoader.load(f).name();
-                    if (seen.add(f.getFileName())) out.add(new CourseEntry(name, f, own));
+                    Path key = folder == null ? f.getFileName() : Path.of(folder).resolve(f.getFileName());
+                    if (seen.add(key)) out.add(new CourseEntry(name, f, own));
                 } catch (CourseException e) {
                     // not a loadable course: not offered
                 }
