@@ -1,7 +1,13 @@
 package minigolf.app;
 
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import minigolf.game.HighScores;
+import minigolf.game.Round;
 import minigolf.ui.Gui;
 import minigolf.ui.GuiWindowFlags;
 import minigolf.ui.Panels;
@@ -9,13 +15,19 @@ import minigolf.ui.Panels;
 import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
 
 /**
- * Choosing what to play: the rounds, then the single holes for practice, each with a preview
- * rendered by the game's renderer (one a frame, so the screen stays responsive). The folders are
+ * Choosing what to play: the rounds (holes, par, the best round anyone played), then the single
+ * holes for practice, each with a preview rendered by the game's renderer (one a frame, so the
+ * screen stays responsive), its par where it is a hole of a round, and the best score on it. The folders are
  * read again each time the screen opens: a course the editor saved a moment ago is listed.
  */
 final class CourseSelectScreen extends GameScreen {
     private List<CourseFolders.CourseEntry> courses;
     private List<CourseFolders.RoundEntry> rounds;
+    /** Each course file that is a hole of a round: the round and the hole's number (0-based) and par. */
+    private Map<Path, List<RoundHole>> holes;
+
+    private record RoundHole(Round round, int hole) {
+    }
 
     CourseSelectScreen(GameApp app) {
         super(app);
@@ -25,6 +37,7 @@ final class CourseSelectScreen extends GameScreen {
     public void show() {
         courses = null;
         rounds = null;
+        holes = null;
     }
 
     /** The single courses offered (read from the folders the first time after the screen opened). */
@@ -49,9 +62,11 @@ final class CourseSelectScreen extends GameScreen {
         Gui.setNextWindowSize(Math.min(w - 40, 760), Math.min(h - 40, 560));
         Gui.begin("Select course", GuiWindowFlags.NoCollapse | GuiWindowFlags.NoMove | GuiWindowFlags.NoResize);
         Panels.heading("Rounds");
+        HighScores scores = app.files().highScores();
         for (CourseFolders.RoundEntry r : rounds()) {
-            String label = String.format(Locale.ROOT, "%s  (%d holes, par %d)##%s", r.round().name(), r.round().size(),
-                    r.round().par(), r.file());
+            HighScores.Best best = scores == null ? null : scores.bestRound(r.round().name());
+            String label = String.format(Locale.ROOT, "%s  -  %d holes, par %d  -  %s##%s", r.round().name(), r.round().size(),
+                    r.round().par(), best == null ? "not played yet" : "best " + best.score() + " (" + best.name() + ")", r.file());
             if (Gui.button(label, 420, 0)) {
                 app.play().chooseRound(r.round());
                 app.setScreen(app.screens().newGame());
@@ -81,10 +96,39 @@ final class CourseSelectScreen extends GameScreen {
                 if (i > 0) Gui.sameLine(i * (cell + Gui.itemSpacingX()));
                 Gui.text(c.name() + (c.own() ? " (yours)" : ""));
             }
+            for (int i = 0; i < three.size(); i++) {
+                if (i > 0) Gui.sameLine(i * (cell + Gui.itemSpacingX()));
+                Gui.textDisabled(parAndBest(three.get(i), scores));
+            }
         }
         Gui.separator();
         if (Gui.button("Back")) app.setScreen(app.screens().mainMenu());
         Gui.end();
+    }
+
+    /** "par 3  -  best 2 (Ann)": the par where the course is a hole of a round, the best anyone scored on it (in a round or alone). */
+    private String parAndBest(CourseFolders.CourseEntry c, HighScores scores) {
+        List<RoundHole> in = holesByFile().getOrDefault(c.file().toAbsolutePath().normalize(), List.of());
+        String par = in.isEmpty() ? "no par" : "par " + in.get(0).round().hole(in.get(0).hole()).par();
+        HighScores.Best best = scores == null ? null : scores.bestOnHole(HighScores.practiceKey(c.name()), 0);
+        for (RoundHole h : in) {
+            HighScores.Best b = scores == null ? null : scores.bestOnHole(h.round().name(), h.hole());
+            if (b != null && (best == null || b.score() < best.score())) best = b;
+        }
+        return par + "  -  " + (best == null ? "not played yet" : "best " + best.score() + " (" + best.name() + ")");
+    }
+
+    private Map<Path, List<RoundHole>> holesByFile() {
+        if (holes != null) return holes;
+        holes = new HashMap<>();
+        for (CourseFolders.RoundEntry r : rounds()) {
+            Path folder = r.file().toAbsolutePath().getParent();
+            for (int i = 0; i < r.round().size(); i++) {
+                Path course = folder.resolve(r.round().hole(i).course()).normalize();
+                holes.computeIfAbsent(course, k -> new ArrayList<>()).add(new RoundHole(r.round(), i));
+            }
+        }
+        return holes;
     }
 
     private void select(CourseFolders.CourseEntry c) {
@@ -92,7 +136,7 @@ final class CourseSelectScreen extends GameScreen {
             app.play().selectCourse(c.file());
             app.setScreen(app.screens().mainMenu());
         } catch (minigolf.course.CourseException e) {
-            app.say(e.getMessage());
+            app.say("That course could not be loaded: " + e.problem());
         }
     }
 

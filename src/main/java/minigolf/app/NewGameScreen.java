@@ -21,6 +21,7 @@ final class NewGameScreen extends GameScreen {
     private final GuiInt[] kinds = new GuiInt[Game.MAX_PLAYERS];
     private final GuiInt[] bots = new GuiInt[Game.MAX_PLAYERS];
     private String formError;
+    private boolean filled;
 
     NewGameScreen(GameApp app) {
         super(app);
@@ -31,9 +32,23 @@ final class NewGameScreen extends GameScreen {
         }
     }
 
+    /** The first time, fills the names from the settings (those typed the last time the game ran). */
     @Override
     public void show() {
         formError = null;
+        if (filled) return;
+        filled = true;
+        List<String> kept = app.settings().playerNames();
+        for (int i = 0; i < Math.min(kept.size(), names.length); i++) names[i].set(kept.get(i));
+    }
+
+    /** Types {@code text} into seat {@code seat}'s name field (tests). */
+    void typeName(int seat, String text) {
+        names[seat].set(text);
+    }
+
+    String name(int seat) {
+        return names[seat].get();
     }
 
     @Override
@@ -66,6 +81,11 @@ final class NewGameScreen extends GameScreen {
         Gui.end();
     }
 
+    /** What "Tee off" does: the players from the form, their names kept for next time, the game started. */
+    void teeOff() {
+        teeOff(BotCatalog.names());
+    }
+
     private void teeOff(List<String> botNames) {
         try {
             List<Player> players = new ArrayList<>();
@@ -78,6 +98,9 @@ final class NewGameScreen extends GameScreen {
                 }
             }
             formError = null;
+            List<String> typed = new ArrayList<>();
+            for (GuiString n : names) typed.add(n.get().trim().isEmpty() ? "Player " + (typed.size() + 1) : n.get().trim());
+            app.rememberPlayerNames(typed);
             app.startGame(players);
         } catch (IllegalArgumentException e) {
             formError = e.getMessage();

@@ -38,17 +38,24 @@ final class PlayerFiles {
     PlayerFiles(SettingsStore store, Consumer<String> say) {
         this.store = store;
         this.say = say;
-        String[] problem = new String[1];
         store.removeStaleTemporaries();
-        loadedSettings = store.loadOrDefaults(problem);
-        settingsProblem = problem[0];
-        if (problem[0] != null) System.err.println("minigolf: settings ignored, the defaults are used: " + problem[0]);
+        UserSettings settings;
+        String problem = null;
+        try {
+            settings = store.load();
+        } catch (SaveGameException e) {
+            settings = UserSettings.DEFAULTS;
+            problem = e.detail(); // the player's view names no file; the terminal's line does
+            System.err.println("minigolf: settings ignored, the defaults are used: " + e.getMessage());
+        }
+        loadedSettings = settings;
+        settingsProblem = problem;
         AudioSettings volumes;
         try {
             volumes = AudioSettings.load(AudioSettings.file(store.directory()));
         } catch (SaveGameException e) {
             volumes = AudioSettings.DEFAULTS;
-            say.accept("volumes ignored: " + e.getMessage());
+            say.accept("Your sound volumes could not be read (" + e.problem() + "); the defaults are used");
         }
         audio = volumes;
         HighScores scores;
@@ -56,7 +63,7 @@ final class PlayerFiles {
             scores = HighScores.load(HighScores.file(store.directory()));
         } catch (SaveGameException e) {
             scores = null;
-            say.accept("high scores ignored: " + e.getMessage());
+            say.accept("The high scores could not be read (" + e.problem() + "); they are not kept this time");
         }
         highScores = scores;
     }
@@ -71,7 +78,7 @@ final class PlayerFiles {
         return loadedSettings;
     }
 
-    /** Why the settings file was ignored at start, or null. */
+    /** Why the settings file was ignored at start (without the file's name), or null. */
     String settingsProblem() {
         return settingsProblem;
     }
@@ -80,7 +87,7 @@ final class PlayerFiles {
         try {
             store.save(s);
         } catch (SaveGameException e) {
-            say.accept("settings not saved: " + e.getMessage());
+            say.accept("Your settings could not be saved: " + e.problem());
         }
     }
 
@@ -93,7 +100,7 @@ final class PlayerFiles {
         try {
             v.save(AudioSettings.file(store.directory()));
         } catch (SaveGameException e) {
-            say.accept("volumes not saved: " + e.getMessage());
+            say.accept("Your sound volumes could not be saved: " + e.problem());
         }
     }
 
@@ -110,7 +117,22 @@ final class PlayerFiles {
         try {
             highScores.save(HighScores.file(store.directory()));
         } catch (SaveGameException e) {
-            say.accept("scores not saved: " + e.getMessage());
+            say.accept("The scores could not be saved: " + e.problem());
+            return;
+        }
+        if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+    }
+
+    /** A finished single-course game's scores: personal bests on that course (its practice "round"); saved at once. */
+    void recordPractice(Game game) {
+        if (highScores == null) return;
+        int[] scores = game.scorecard().lines().stream().mapToInt(minigolf.game.ScoreLine::score).toArray();
+        List<HighScores.Achievement> news = highScores.recordHole(HighScores.practiceKey(game.world().course().name()), 0,
+                game.players(), scores);
+        try {
+            highScores.save(HighScores.file(store.directory()));
+        } catch (SaveGameException e) {
+            say.accept("The scores could not be saved: " + e.problem());
             return;
         }
         if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
@@ -124,9 +146,12 @@ final class PlayerFiles {
                     + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".json");
             if (round != null) SavedRounds.save(round, file);
             else SavedGames.save(game, file);
-            say.accept("saved to " + file);
-        } catch (IOException | SaveGameException e) {
-            say.accept("not saved: " + e.getMessage());
+            say.accept(round != null ? "Round saved: Load saved game in the main menu goes on with it"
+                    : "Game saved: Load saved game in the main menu goes on with it");
+        } catch (SaveGameException e) {
+            say.accept("The game could not be saved: " + e.problem());
+        } catch (IOException e) {
+            say.accept("The game could not be saved: " + e.getMessage());
         }
     }
 

@@ -33,6 +33,15 @@ public final class HighScores {
     public record Entry(String name, int score, LocalDate date) {
     }
 
+    /** The best score someone has, and who (the course list shows it). */
+    public record Best(String name, int score) {
+    }
+
+    /** The key single-course games are kept under: a one-hole "round" of the course's name. */
+    public static String practiceKey(String courseName) {
+        return "practice: " + courseName;
+    }
+
     /** What a finished round or hole achieved, for the player's message. */
     public record Achievement(String name, String what) {
     }
@@ -166,6 +175,24 @@ public final class HighScores {
     public Integer personalBest(String round, int hole, String name) {
         RoundScores r = rounds.get(round);
         return r == null ? null : r.bestHoles.getOrDefault(name, Map.of()).get(hole);
+    }
+
+    /** The best complete round anyone played (the table's first line), or null. */
+    public Best bestRound(String round) {
+        RoundScores r = rounds.get(round);
+        return r == null || r.table.isEmpty() ? null : new Best(r.table.get(0).name(), r.table.get(0).score());
+    }
+
+    /** The best score anyone has on a hole of the round (0-based; the first who reached it on equal scores), or null. */
+    public Best bestOnHole(String round, int hole) {
+        RoundScores r = rounds.get(round);
+        if (r == null) return null;
+        Best best = null;
+        for (Map.Entry<String, Map<Integer, Integer>> e : r.bestHoles.entrySet()) {
+            Integer s = e.getValue().get(hole);
+            if (s != null && (best == null || s < best.score())) best = new Best(e.getKey(), s);
+        }
+        return best;
     }
 
     /** Records a finished hole's scores (by seat); returns the new personal bests and holes in one. */

@@ -441,7 +441,8 @@ public final class Gui {
     /** A button; a zero width or height fits the label. */
     public static boolean button(String label, float width, float height) {
         String shown = displayLabel(label);
-        float w = width > 0 ? width : buttonWidth(shown);
+        // Never narrower than its label: Nuklear clips a label that does not fit ("10" showed as "1").
+        float w = width > 0 ? Math.max(width, buttonWidth(shown)) : buttonWidth(shown);
         place(w, height > 0 ? height : frameH);
         return nk_button_label(ctx, shown);
     }
