@@ -352,11 +352,13 @@ public final class GameApp implements WindowApp {
     public void applySettings(UserSettings newSettings) {
         UserSettings old = settings;
         settings = newSettings;
-        window.setVsync(settings.vsync() && options.frames() <= 0);
-        if (settings.fullscreen() != window.isFullscreen()) window.toggleFullscreen();
-        if (!window.isFullscreen() && settings.windowWidth() > 0
-                && (settings.windowWidth() != old.windowWidth() || settings.windowHeight() != old.windowHeight())) {
-            glfwSetWindowSize(window.handle(), settings.windowWidth(), settings.windowHeight());
+        if (window != null) { // before the window opens (tests), only the settings change
+            window.setVsync(settings.vsync() && options.frames() <= 0);
+            if (settings.fullscreen() != window.isFullscreen()) window.toggleFullscreen();
+            if (!window.isFullscreen() && settings.windowWidth() > 0
+                    && (settings.windowWidth() != old.windowWidth() || settings.windowHeight() != old.windowHeight())) {
+                glfwSetWindowSize(window.handle(), settings.windowWidth(), settings.windowHeight());
+            }
         }
         scene.applySettings(old, settings);
         files.saveSettings(settings);

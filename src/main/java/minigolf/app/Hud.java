@@ -91,7 +91,8 @@ final class Hud {
             Gui.begin("##bot", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
             Game game = play.game();
             String who = game != null && game.currentPlayer() >= 0 ? game.players().get(game.currentPlayer()).name() : "The bot";
-            Gui.text(who + " is thinking: " + bot.message());
+            // The bot's phase and simulations are for practice mode; a player sees that it is thinking.
+            Gui.text(who + " is thinking" + (app.settings().practice() ? ": " + bot.message() : "..."));
             Gui.progressBar((float) bot.progress(), 320, 0);
             Gui.sameLine();
             if (Gui.button("Cancel")) play.cancelBot();

@@ -13,9 +13,13 @@ import minigolf.ui.Panels;
 
 import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
 
-/** Setting up a game: how many players, each one's name, person or bot; "Tee off" starts the chosen course or round. */
+/**
+ * Setting up a game: how many players, each one's name, person or computer opponent, and an
+ * opponent's level (Easy, Medium, Hard, Pro; Medium first); "Tee off" starts the chosen course or
+ * round. In practice mode every bot is offered by its algorithm's name too.
+ */
 final class NewGameScreen extends GameScreen {
-    private static final String[] KINDS = {"Human", "Bot"};
+    private static final String[] KINDS = {"Person", "Computer"};
     private final int[] playerCount = {2};
     private final GuiString[] names = new GuiString[Game.MAX_PLAYERS];
     private final GuiInt[] kinds = new GuiInt[Game.MAX_PLAYERS];
@@ -57,7 +61,8 @@ final class NewGameScreen extends GameScreen {
         var round = app.play().chosenRound();
         Gui.begin("New game: " + (round != null ? round.name() : app.play().world().course().name()) + "###newgame", Panels.PANEL);
         Gui.sliderInt("Players", playerCount, 1, Game.MAX_PLAYERS);
-        List<String> botNames = BotCatalog.names();
+        List<String> botNames = opponents();
+        String[] labels = botNames.stream().map(BotCatalog::label).toArray(String[]::new);
         for (int i = 0; i < playerCount[0]; i++) {
             Gui.pushID(i);
             Gui.setNextItemWidth(200);
@@ -81,9 +86,20 @@ final class NewGameScreen extends GameScreen {
         Gui.end();
     }
 
+    /** The opponents offered: the levels; in practice mode every bot after them. */
+    List<String> opponents() {
+        return app.settings().practice() ? BotCatalog.names() : BotCatalog.levels();
+    }
+
+    /** Makes seat {@code seat} a computer opponent of the level or bot {@code name} (tests). */
+    void chooseOpponent(int seat, String name) {
+        kinds[seat].set(1);
+        bots[seat].set(opponents().indexOf(name));
+    }
+
     /** What "Tee off" does: the players from the form, their names kept for next time, the game started. */
     void teeOff() {
-        teeOff(BotCatalog.names());
+        teeOff(opponents());
     }
 
     private void teeOff(List<String> botNames) {
@@ -92,7 +108,10 @@ final class NewGameScreen extends GameScreen {
             for (int i = 0; i < playerCount[0]; i++) {
                 String n = names[i].get().trim();
                 if (kinds[i].get() == 1 && !botNames.isEmpty()) {
-                    players.add(Player.bot(n, botNames.get(Math.min(bots[i].get(), botNames.size() - 1))));
+                    String bot = botNames.get(Math.min(bots[i].get(), botNames.size() - 1));
+                    // A computer seat still called "Player 2" is named after its level: "Bot (Medium)".
+                    if (n.equals("Player " + (i + 1))) n = "Bot (" + BotCatalog.label(bot) + ")";
+                    players.add(Player.bot(n, bot));
                 } else {
                     players.add(new Player(n, PlayerKind.HUMAN, null));
                 }

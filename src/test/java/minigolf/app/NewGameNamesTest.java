@@ -52,4 +52,23 @@ class NewGameNamesTest {
         assertEquals("Robo to play (computer)", Hud.turnLine(Player.bot("Robo", "planner")));
         assertEquals("Ann to play", Hud.turnLine(Player.human("Ann")));
     }
+
+    @Test
+    void opponentsAreOfferedByLevelMediumFirstAndAlgorithmsOnlyInPracticeMode() {
+        GameApp app = app();
+        NewGameScreen form = app.screens().newGame();
+        app.setScreen(form);
+        assertEquals(List.of("easy", "medium", "hard", "pro"), form.opponents(), "a player's choice: the levels");
+        assertEquals(List.of("Easy", "Medium", "Hard", "Pro"),
+                form.opponents().stream().map(minigolf.game.BotCatalog::label).toList());
+        form.typeName(0, "Ann");
+        form.chooseOpponent(1, "medium");
+        form.teeOff();
+        Player bot = app.game().players().get(1);
+        assertEquals("medium", bot.bot(), "Medium, the default opponent");
+        assertEquals("Bot (Medium)", bot.name(), "a computer seat left as Player 2 is named after its level");
+        // Practice mode: every bot by its algorithm's name too (the levels first).
+        app.applySettings(app.settings().withPractice(true));
+        assertTrue(form.opponents().containsAll(List.of("easy", "pro", "planner", "astar")), form.opponents().toString());
+    }
 }
