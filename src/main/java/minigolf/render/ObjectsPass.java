@@ -198,6 +198,7 @@ public final class ObjectsPass implements RenderPass {
         begin(frame);
         draw(cupRim, model.identity(), 0.15f, 16f);
         draw(cup, model.identity(), 0.0f, 8f);
+        program.set("uFlagPole", (float) holeX, (float) holeY);
         draw(flag, model.identity(), 0.3f, 32f);
         if (arrow != null) draw(arrow, model.identity(), 0.2f, 16f);
         if (marker != null) draw(marker, model.identity(), 0.3f, 16f);
