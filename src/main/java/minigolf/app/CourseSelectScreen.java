@@ -53,7 +53,16 @@ final class CourseSelectScreen extends GameScreen {
 
     @Override
     public void update(double elapsed) {
-        app.thumbnails().renderNext(courses(), 200, 120);
+        // The rounds' previews (their first hole) first, then the single courses'; one a frame.
+        List<CourseFolders.CourseEntry> previews = new ArrayList<>();
+        for (CourseFolders.RoundEntry r : rounds()) previews.add(new CourseFolders.CourseEntry(r.round().name(), firstHole(r), false));
+        previews.addAll(courses());
+        app.thumbnails().renderNext(previews, 200, 120);
+    }
+
+    /** The file of a round's first hole (its preview stands for the round). */
+    private static Path firstHole(CourseFolders.RoundEntry r) {
+        return r.file().toAbsolutePath().getParent().resolve(r.round().hole(0).course()).normalize();
     }
 
     @Override
@@ -67,7 +76,11 @@ final class CourseSelectScreen extends GameScreen {
             HighScores.Best best = scores == null ? null : scores.bestRound(r.round().name());
             String label = String.format(Locale.ROOT, "%s  -  %d holes, par %d  -  %s##%s", r.round().name(), r.round().size(),
                     r.round().par(), best == null ? "not played yet" : "best " + best.score() + " (" + best.name() + ")", r.file());
-            if (Gui.button(label, 420, 0)) {
+            int tex = app.thumbnails().texture(firstHole(r));
+            boolean chosen = tex != 0 ? Gui.imageButton(tex, 100, 60) : Gui.button("...##" + r.file(), 108, 68);
+            Gui.sameLine();
+            chosen |= Gui.button(label, 520, 68);
+            if (chosen) {
                 app.play().chooseRound(r.round());
                 app.setScreen(app.screens().newGame());
             }

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The README's game screenshots, through the real game loop (minigolf play --frames ... --screenshot):
+# the start of a three-player hot-seat hole, a computer opponent's turn, and the final card of an
+# 18-hole round between two computer opponents. Needs a display (or Xvfb, as below) and
+# `gradle installDist`. A scratch config folder keeps your settings, names and scores out of them.
+# Usage: tools/readme-screenshots.sh [OUT_DIR]   (default docs/screenshots)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out="${1:-docs/screenshots}"
+mkdir -p "$out"
+config="$(mktemp -d)"
+trap 'rm -rf "$config"' EXIT
+export JAVA_OPTS="-Dminigolf.configDir=$config -Dminigolf.noSound=true ${JAVA_OPTS:-}"
+mg=build/install/minigolf/bin/minigolf
+run() {
+    if [ -n "${DISPLAY:-}" ]; then "$mg" "$@"; else xvfb-run -a -s "-screen 0 1600x1000x24" "$mg" "$@"; fi
+}
+# 1. Hot seat: three balls side by side at the tee of the windmill hole, Ann's ringed, name tags.
+run play courses/holes/03-windmill.json --players Ann,Bob,Cy --frames 90 --screenshot "$out/hot-seat.png" > /dev/null
+# 2. A computer opponent's turn: Medium thinks about its first stroke on the dogleg (its route drawn,
+#    the progress bar and Cancel); Ann has teed off with a scripted putt.
+run play courses/holes/02-dogleg.json --players Ann,Bot:medium --shots 2.2:0.1 --frames 150 \
+    --screenshot "$out/bot-turn.png" > /dev/null
+# 3. The final card of Meadowbrook's 18 holes, Hard against Medium (the run ends at the card).
+run play --round courses/rounds/meadowbrook-18.json --players Bot:hard,Bot:medium --frames 200000 --time-scale 40 \
+    --screenshot "$out/final-card-18.png"
