@@ -6,6 +6,7 @@ import minigolf.game.UserSettings;
 import minigolf.ui.Gui;
 import minigolf.ui.GuiBool;
 import minigolf.ui.GuiInt;
+import minigolf.ui.GuiString;
 import minigolf.ui.Panels;
 import minigolf.ui.Screen;
 
@@ -24,6 +25,7 @@ final class SettingsScreen extends GameScreen {
     private final GuiBool vsync = new GuiBool(true);
     private final GuiBool realistic = new GuiBool(false);
     private final GuiBool hideFriction = new GuiBool(false);
+    private final GuiString classicFolder = new GuiString(512);
     private final GuiInt frameLimit = new GuiInt(60);
     private final GuiInt strokeLimit = new GuiInt(Game.DEFAULT_STROKE_LIMIT);
     private final float[] mouseSpeed = {1f};
@@ -52,6 +54,7 @@ final class SettingsScreen extends GameScreen {
         vsync.set(s.vsync());
         realistic.set(s.noisePosition() > 0 || s.noiseVelocity() > 0);
         hideFriction.set(s.hideFrictionFromBots());
+        classicFolder.set(s.classicFolder());
         frameLimit.set(s.frameLimit());
         strokeLimit.set(s.strokeLimit());
         mouseSpeed[0] = (float) s.mouseSpeed();
@@ -86,6 +89,9 @@ final class SettingsScreen extends GameScreen {
         Gui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
         Gui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
         Gui.checkbox("Practice mode: type a shot's velocity, see the ball's physics (V)", practice);
+        Gui.setNextItemWidth(300);
+        Gui.inputText("Classic tracks folder", classicFolder);
+        if (Gui.isItemHovered()) Gui.setTooltip("What minigolf import-tracks wrote; empty: <config>/classic");
         Panels.heading("Display");
         String[] sizeLabels = new String[sizes.length];
         for (int i = 0; i < sizes.length; i++) {
@@ -129,7 +135,7 @@ final class SettingsScreen extends GameScreen {
         try {
             UserSettings s = app.settings().withPractice(practice.get()).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
                     .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
-                    .withHideFrictionFromBots(hideFriction.get())
+                    .withHideFrictionFromBots(hideFriction.get()).withClassicFolder(classicFolder.get().strip())
                     .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get())
                     .withFullscreen(fullscreen.get()).withGraphics(UserSettings.GRAPHICS.get(graphics.get()))
                     .withWindowSize(sizes[windowSize.get()][0], sizes[windowSize.get()][1]);
