@@ -200,8 +200,9 @@ final class CourseSelectScreen extends GameScreen {
             return;
         }
         if (index.tracks().isEmpty()) {
-            Gui.textWrapped("None imported: minigolf import-tracks DIR reads the classic game's .track files into "
-                    + CourseFolders.classicFolder(app.files().store(), app.settings()) + " (docs/classic-tracks.md).");
+            // No folder named here: a player's view shows no file paths (where they go: docs/classic-tracks.md).
+            Gui.textWrapped("None imported yet: the command minigolf import-tracks reads the classic game's track files"
+                    + " (see docs/classic-tracks.md).");
             return;
         }
         Gui.setNextItemWidth(220);
@@ -249,7 +250,7 @@ final class CourseSelectScreen extends GameScreen {
             app.play().selectCourse(e.course(), scoreKey(e));
             app.setScreen(app.screens().mainMenu());
         } catch (minigolf.course.CourseException ex) {
-            app.say(ex.getMessage());
+            app.say("That track could not be loaded: " + ex.problem());
         }
     }
 

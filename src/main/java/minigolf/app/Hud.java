@@ -69,7 +69,10 @@ final class Hud {
             double max = play.world().physics().maxSpeed();
             Gui.progressBar((float) (aimSpeed / max), 260, 0, String.format(Locale.ROOT, "power %.0f%%", 100 * aimSpeed / max));
         }
-        if (g != null && !g.isOver()) Gui.text(Loft.describe(loftDegrees) + "   (wheel while aiming, Up/Down)");
+        // The stroke being set up, on a person's turn only (a bot chooses its own).
+        if (g != null && !g.isOver() && g.currentPlayer() >= 0 && !g.players().get(g.currentPlayer()).isBot()) {
+            Gui.text(Loft.describe(loftDegrees) + "  -  mouse wheel or Up / Down to " + (loftDegrees == 0 ? "chip" : "change"));
+        }
         // The physics readout is for practice (expert) mode: a player's HUD shows no coordinates.
         boolean practice = app.settings().practice();
         if (g != null && practice) Gui.checkbox("details", details);

@@ -51,6 +51,11 @@ final class NewGameScreen extends GameScreen {
         names[seat].set(text);
     }
 
+    /** Sets the "Players" slider (tests, the README's screenshot). */
+    void players(int count) {
+        playerCount[0] = Math.max(1, Math.min(Game.MAX_PLAYERS, count));
+    }
+
     String name(int seat) {
         return names[seat].get();
     }
@@ -70,12 +75,19 @@ final class NewGameScreen extends GameScreen {
             Gui.sameLine();
             Gui.setNextItemWidth(100);
             Gui.combo("##kind", kinds[i], KINDS);
-            if (kinds[i].get() == 1) {
+            if (kinds[i].get() == 1 && app.settings().practice()) {
                 Gui.sameLine();
                 Gui.setNextItemWidth(120);
-                Gui.combo("##bot", bots[i], botNames.stream().map(BotCatalog::label).toArray(String[]::new));
+                Gui.combo("##bot", bots[i], labels);
+            } else if (kinds[i].get() == 1) {
+                // Four levels side by side: a player sees every choice without opening a list.
+                for (int l = 0; l < labels.length; l++) {
+                    Gui.sameLine();
+                    if (Gui.radioButton(labels[l], bots[i].get() == l)) bots[i].set(l);
+                }
             }
             Gui.popID();
+            followKind(i, labels);
         }
         int limit = app.settings().strokeLimit();
         Gui.text("Stroke limit: " + limit + " (pick up and score " + (limit + 1) + "; change it in Settings)");
@@ -84,6 +96,19 @@ final class NewGameScreen extends GameScreen {
         Gui.sameLine();
         if (Gui.button("Back")) app.setScreen(app.screens().mainMenu());
         Gui.end();
+    }
+
+    /**
+     * A seat's name that was never typed follows its kind: "Player 3" becomes "Bot (Hard)" when the
+     * seat is made a computer opponent of level Hard, and follows the level; back to "Player 3" for a person.
+     */
+    private void followKind(int seat, String[] labels) {
+        String n = names[seat].get().trim(), own = "Player " + (seat + 1);
+        boolean automatic = n.equals(own);
+        for (String l : labels) automatic |= n.equals("Bot (" + l + ")");
+        if (!automatic) return;
+        boolean computer = kinds[seat].get() == 1 && labels.length > 0;
+        names[seat].set(computer ? "Bot (" + labels[Math.min(bots[seat].get(), labels.length - 1)] + ")" : own);
     }
 
     /** The opponents offered: the levels; in practice mode every bot after them. */
@@ -95,6 +120,7 @@ final class NewGameScreen extends GameScreen {
     void chooseOpponent(int seat, String name) {
         kinds[seat].set(1);
         bots[seat].set(opponents().indexOf(name));
+        followKind(seat, opponents().stream().map(BotCatalog::label).toArray(String[]::new));
     }
 
     /** What "Tee off" does: the players from the form, their names kept for next time, the game started. */

@@ -7,7 +7,9 @@ import java.time.LocalDate;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
 import minigolf.game.AudioSettings;
@@ -121,7 +123,7 @@ final class PlayerFiles {
             say.accept("The scores could not be saved: " + e.problem());
             return;
         }
-        if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+        if (!news(news).isEmpty()) say.accept(news(news));
     }
 
     /** A finished single-course game's scores: personal bests on that course (its practice "round"); saved at once. */
@@ -136,7 +138,7 @@ final class PlayerFiles {
             say.accept("The scores could not be saved: " + e.problem());
             return;
         }
-        if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+        if (!news(news).isEmpty()) say.accept(news(news));
     }
 
     /**
@@ -160,10 +162,25 @@ final class PlayerFiles {
         try {
             highScores.save(HighScores.file(store.directory()));
         } catch (SaveGameException e) {
-            say.accept("scores not saved: " + e.getMessage());
+            say.accept("The scores could not be saved: " + e.problem());
             return;
         }
-        if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+        if (!news(news).isEmpty()) say.accept(news(news));
+    }
+
+    /**
+     * What the high scores say, a player at a time: "Ann: personal best on hole 3 (2, was 3), high
+     * score #1  ·  Bob: first round 57". A hole in one is left out: the stroke's own message said it.
+     */
+    static String news(List<HighScores.Achievement> news) {
+        Map<String, List<String>> byPlayer = new LinkedHashMap<>();
+        for (HighScores.Achievement a : news) {
+            if (a.what().equals(HighScores.HOLE_IN_ONE)) continue;
+            byPlayer.computeIfAbsent(a.name(), k -> new ArrayList<>()).add(a.what());
+        }
+        List<String> out = new ArrayList<>();
+        byPlayer.forEach((name, what) -> out.add(name + ": " + String.join(", ", what)));
+        return String.join("  ·  ", out);
     }
 
     /** The best score any of {@code names} has on classic track {@code key}, or null. */

@@ -42,6 +42,9 @@ public final class HighScores {
         return "practice: " + courseName;
     }
 
+    /** The achievement of a hole played in one stroke. */
+    public static final String HOLE_IN_ONE = "hole in one!";
+
     /** What a finished round or hole achieved, for the player's message. */
     public record Achievement(String name, String what) {
     }
@@ -203,7 +206,7 @@ public final class HighScores {
             String n = players.get(s).name();
             Map<Integer, Integer> best = r.bestHoles.computeIfAbsent(n, k -> new LinkedHashMap<>());
             Integer old = best.get(hole);
-            if (scores[s] == 1) out.add(new Achievement(n, "hole in one!"));
+            if (scores[s] == 1) out.add(new Achievement(n, HOLE_IN_ONE));
             if (old == null || scores[s] < old) {
                 best.put(hole, scores[s]);
                 if (old != null) out.add(new Achievement(n, "personal best on hole " + (hole + 1) + " (" + scores[s] + ", was " + old + ")"));
@@ -222,7 +225,7 @@ public final class HighScores {
             Integer old = r.bestRound.get(n);
             if (old == null || total < old) {
                 r.bestRound.put(n, total);
-                out.add(new Achievement(n, old == null ? "first round: " + total : "personal best round: " + total + " (was " + old + ")"));
+                out.add(new Achievement(n, old == null ? "first round " + total : "personal best round " + total + " (was " + old + ")"));
             }
             Entry e = new Entry(n, total, date);
             r.table.add(e);

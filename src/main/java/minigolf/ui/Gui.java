@@ -152,6 +152,12 @@ public final class Gui {
         return frameH;
     }
 
+    /** The width and height of a label's plate ({@link GuiDrawList#addLabel}) round {@code text}. */
+    public static float[] labelPlate(String text) {
+        float pad = GuiDrawList.labelPad(font.height());
+        return new float[]{font.width(text) + 2 + 2 * pad, font.height() + 2 * pad};
+    }
+
     static float textWidth(String s) {
         return font.width(s);
     }

@@ -62,7 +62,10 @@ class NewGameNamesTest {
         assertEquals(List.of("Easy", "Medium", "Hard", "Pro"),
                 form.opponents().stream().map(minigolf.game.BotCatalog::label).toList());
         form.typeName(0, "Ann");
+        form.chooseOpponent(1, "hard");
+        assertEquals("Bot (Hard)", form.name(1), "an untyped name follows the seat's level");
         form.chooseOpponent(1, "medium");
+        assertEquals("Bot (Medium)", form.name(1));
         form.teeOff();
         Player bot = app.game().players().get(1);
         assertEquals("medium", bot.bot(), "Medium, the default opponent");
