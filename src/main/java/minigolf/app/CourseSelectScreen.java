@@ -168,7 +168,7 @@ final class CourseSelectScreen extends GameScreen {
     }
 
     /** "par 3  -  best 2 (Ann)": the par where the course is a hole of a round, the best anyone scored on it (in a round or alone). */
-    private String parAndBest(CourseFolders.CourseEntry c, HighScores scores) {
+    String parAndBest(CourseFolders.CourseEntry c, HighScores scores) {
         List<RoundHole> in = holesByFile().getOrDefault(c.file().toAbsolutePath().normalize(), List.of());
         String par = in.isEmpty() ? "no par" : "par " + in.get(0).round().hole(in.get(0).hole()).par();
         HighScores.Best best = scores == null ? null : scores.bestOnHole(HighScores.practiceKey(c.name()), 0);

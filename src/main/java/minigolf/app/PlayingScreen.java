@@ -93,7 +93,12 @@ class PlayingScreen extends GameScreen {
     public void render(float w, float h) {
         nameTags();
         app.hud().render(w, h, aimSpeed(), loft);
-        if (app.settings().practice() && canAim() && app.play().botTurn() == null) shotPanel(w, h);
+        if (showsShotPanel()) shotPanel(w, h);
+    }
+
+    /** The typed-velocity Shot panel is lab furniture: practice mode only, on a person's turn. */
+    boolean showsShotPanel() {
+        return app.settings().practice() && canAim() && app.play().botTurn() == null;
     }
 
     /** The aim being dragged: speed in m/s, or negative when not aiming. */
