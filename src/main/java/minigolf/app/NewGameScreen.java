@@ -20,11 +20,13 @@ import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
  */
 final class NewGameScreen extends GameScreen {
     private static final String[] KINDS = {"Person", "Computer"};
+    private static final float NAME_WIDTH = 200, KIND_WIDTH = 100, BOT_LIST_WIDTH = 120;
     private final int[] playerCount = {2};
     private final GuiString[] names = new GuiString[Game.MAX_PLAYERS];
     private final GuiInt[] kinds = new GuiInt[Game.MAX_PLAYERS];
     private final GuiInt[] bots = new GuiInt[Game.MAX_PLAYERS];
     private String formError;
+    private float[] lastRect;
     private boolean filled;
 
     NewGameScreen(GameApp app) {
@@ -56,6 +58,11 @@ final class NewGameScreen extends GameScreen {
         playerCount[0] = Math.max(1, Math.min(Game.MAX_PLAYERS, count));
     }
 
+    /** Where the form stood in the last frame: x, y, width, height (tests). */
+    float[] lastRect() {
+        return lastRect;
+    }
+
     String name(int seat) {
         return names[seat].get();
     }
@@ -64,20 +71,27 @@ final class NewGameScreen extends GameScreen {
     public void render(float w, float h) {
         Panels.centre(w, h);
         var round = app.play().chosenRound();
-        Gui.begin("New game: " + (round != null ? round.name() : app.play().world().course().name()) + "###newgame", Panels.PANEL);
-        Gui.sliderInt("Players", playerCount, 1, Game.MAX_PLAYERS);
         List<String> botNames = opponents();
         String[] labels = botNames.stream().map(BotCatalog::label).toArray(String[]::new);
+        // As wide as a computer seat's row from the start: choosing "Computer" must not move "Tee off"
+        // from under the mouse (the panel grew and re-centred).
+        float row = NAME_WIDTH + KIND_WIDTH + 2 * Gui.itemSpacingX();
+        if (!app.settings().practice()) for (String l : labels) row += Gui.radioButtonWidth(l) + Gui.itemSpacingX();
+        else row += BOT_LIST_WIDTH + Gui.itemSpacingX();
+        Gui.setNextWindowSizeConstraints(row + 2 * Gui.textLineHeight(), 0, Float.MAX_VALUE, Float.MAX_VALUE);
+        Gui.begin("New game: " + (round != null ? round.name() : app.play().world().course().name()) + "###newgame", Panels.PANEL);
+        lastRect = Gui.windowRect();
+        Gui.sliderInt("Players", playerCount, 1, Game.MAX_PLAYERS);
         for (int i = 0; i < playerCount[0]; i++) {
             Gui.pushID(i);
-            Gui.setNextItemWidth(200);
+            Gui.setNextItemWidth(NAME_WIDTH);
             Gui.inputText("##name", names[i]);
             Gui.sameLine();
-            Gui.setNextItemWidth(100);
+            Gui.setNextItemWidth(KIND_WIDTH);
             Gui.combo("##kind", kinds[i], KINDS);
             if (kinds[i].get() == 1 && app.settings().practice()) {
                 Gui.sameLine();
-                Gui.setNextItemWidth(120);
+                Gui.setNextItemWidth(BOT_LIST_WIDTH);
                 Gui.combo("##bot", bots[i], labels);
             } else if (kinds[i].get() == 1) {
                 // Four levels side by side: a player sees every choice without opening a list.

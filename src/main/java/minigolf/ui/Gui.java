@@ -498,9 +498,14 @@ public final class Gui {
 
     /** A round option; true when clicked. */
     public static boolean radioButton(String label, boolean active) {
+        place(radioButtonWidth(label), frameH);
         String shown = displayLabel(label);
-        place(font.width(shown) + textH + 16 * scale + 4, frameH);
         return nk_option_label(ctx, shown, active) && !active;
+    }
+
+    /** The width a radio button with this label takes (to keep room for it before it shows). */
+    public static float radioButtonWidth(String label) {
+        return font.width(displayLabel(label)) + textH + 16 * scale + 4;
     }
 
     /** A row that can be selected (lists); true when clicked. */
