@@ -68,8 +68,10 @@ public final class GuiDrawList {
                     case LINE -> nk_stroke_line(canvas, op.a, op.b, op.c, op.d, op.thickness, colour);
                     case CIRCLE -> nk_stroke_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), op.thickness, colour);
                     case DISC -> nk_fill_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), colour);
-                    default -> nk_draw_text(canvas, r.set(op.a, op.b, font.width(op.text) + 2, font.height()), op.text,
-                            userFont, none, colour);
+                    default -> {
+                        String text = GuiText.fit(op.text, font, Math.max(font.height(), width - op.a));
+                        nk_draw_text(canvas, r.set(op.a, op.b, font.width(text) + 2, font.height()), text, userFont, none, colour);
+                    }
                 }
             }
             nk_end(ctx);
