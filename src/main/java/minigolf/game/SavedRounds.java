@@ -114,10 +114,11 @@ public final class SavedRounds {
             f.onlyFields(h, p, HOLE);
             String course = f.text(h, p, "course");
             int par = f.integer(h, p, "par", 1, Round.MAX_PAR);
+            JsonNode definition = f.object(f.field(h, p, "definition"), p + ".definition");
             World world;
             try {
-                world = World.parse(JsonFields.MAPPER.writeValueAsString(f.object(f.field(h, p, "definition"), p + ".definition")),
-                        source + " (" + course + ")");
+                // Named by the save itself: its models are looked for beside the save, never where the label "course" points.
+                world = World.parse(JsonFields.MAPPER.writeValueAsString(definition), source);
             } catch (CourseException e) {
                 throw new SaveGameException(source, p + ".definition" + (e.path() == null ? "" : "." + e.path()), e.problem(), e);
             } catch (IOException e) {
