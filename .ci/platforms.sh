@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CI: resolve the complete runtime class path, natives included (LWJGL's, lwjgl-nuklear's among them), from the
-# registry for all five desktop platforms (README "Prerequisites"), so that a native that
+# registry for all five desktop platforms (docs/development.md, "Prerequisites and platforms"), so that a native that
 # disappears, or a dependency that has no native for one of them, fails here.
 set -uo pipefail
 cd "$(dirname "$0")/.."

@@ -7,14 +7,12 @@ import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.BiConsumer;
-import minigolf.course.CourseException;
 import minigolf.game.AimModel;
 import minigolf.game.Loft;
 import minigolf.game.BallReadout;
 import minigolf.game.BotSeats;
 import minigolf.game.BotConditions;
 import minigolf.game.BotTurn;
-import minigolf.game.CourseEdits;
 import minigolf.game.AudioSettings;
 import minigolf.game.Game;
 import minigolf.game.HighScores;
@@ -507,16 +505,7 @@ public final class GameApp implements UiActions, UiView {
     }
 
     @Override
-    public void applySettings(UserSettings newSettings, CourseEdits edits) {
-        try {
-            World edited = edits.applyTo(world);
-            if (!edited.course().equals(world.course())) {
-                world = edited;
-                rebuildScene = true;
-            }
-        } catch (CourseException e) {
-            throw new IllegalArgumentException(e.detail(), e);
-        }
+    public void applySettings(UserSettings newSettings) {
         UserSettings old = settings;
         settings = newSettings;
         window.setVsync(settings.vsync() && options.frames() <= 0);

@@ -1,6 +1,5 @@
 package minigolf.bot;
 
-import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.World;
 
 /**

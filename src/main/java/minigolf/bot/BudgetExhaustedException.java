@@ -5,7 +5,8 @@ import java.util.Locale;
 /**
  * Thrown by {@link CountingSimulator} when the simulation budget is spent, and by
  * {@link CancellationToken#throwIfCancelled()} when the wall-time limit has run out. Bots catch it
- * (see {@link SearchBot}) and return the best shot seen so far; callers of a bot never see it.
+ * (see {@link minigolf.bot.search.SearchBot}) and return the best shot seen so far; callers of a
+ * bot never see it.
  */
 public final class BudgetExhaustedException extends RuntimeException {
     public BudgetExhaustedException(long budget) {

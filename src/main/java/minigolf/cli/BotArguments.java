@@ -1,7 +1,7 @@
 package minigolf.cli;
 
 import minigolf.bot.Bot;
-import minigolf.bot.Bots;
+import minigolf.bot.play.Bots;
 
 /** Bot names given on the command line. */
 final class BotArguments {

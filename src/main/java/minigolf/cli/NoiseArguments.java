@@ -2,7 +2,7 @@ package minigolf.cli;
 
 import java.util.ArrayList;
 import java.util.List;
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.NoiseModel;
 
 /** {@code --noise-position} and {@code --noise-velocity}: one value, or a comma list on experiment. */
 final class NoiseArguments {

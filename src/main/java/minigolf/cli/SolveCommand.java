@@ -6,20 +6,20 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import minigolf.bot.Bot;
 import minigolf.bot.BotProgress;
-import minigolf.bot.Bots;
 import minigolf.bot.CancellationToken;
-import minigolf.bot.PlayConditions;
-import minigolf.bot.Playthrough;
+import minigolf.bot.NoiseModel;
 import minigolf.bot.Shot;
 import minigolf.bot.friction.FrictionPrior;
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.PlayConditions;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 @Command(name = "solve", description = "A bot plays the course from its start and prints what it did as JSON.")
 final class SolveCommand implements Callable<Integer> {

@@ -2,7 +2,7 @@ package minigolf.editor;
 
 import java.util.List;
 import java.util.concurrent.CancellationException;
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.NoiseModel;
 import minigolf.game.BotConditions;
 import minigolf.game.BotControl;
 import minigolf.game.Game;

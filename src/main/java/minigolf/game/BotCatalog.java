@@ -8,13 +8,13 @@ import java.util.function.Supplier;
 import minigolf.bot.Bot;
 import minigolf.bot.BotProgress;
 import minigolf.bot.BotRequest;
-import minigolf.bot.Bots;
 import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
 import minigolf.bot.friction.FrictionEstimator;
 import minigolf.bot.friction.FrictionPrior;
+import minigolf.bot.play.Bots;
+import minigolf.bot.search.SearchBot;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 

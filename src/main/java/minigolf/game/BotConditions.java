@@ -1,8 +1,8 @@
 package minigolf.game;
 
 import java.util.List;
+import minigolf.bot.NoiseModel;
 import minigolf.bot.friction.FrictionEstimator;
-import minigolf.bot.noise.NoiseModel;
 import minigolf.physics.Outcome;
 
 /**

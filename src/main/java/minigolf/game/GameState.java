@@ -1,8 +1,8 @@
 package minigolf.game;
 
-import minigolf.bot.noise.NoiseModel;
 
 import java.util.List;
+import minigolf.bot.NoiseModel;
 import minigolf.physics.SimulationSettings;
 
 /**

@@ -3,7 +3,7 @@ package minigolf.game;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.NoiseModel;
 import minigolf.physics.SimulationSettings;
 
 /**

@@ -8,7 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.NoiseModel;
 import minigolf.course.CourseException;
 import minigolf.course.CourseWriter;
 import minigolf.course.Limits;

@@ -1,7 +1,7 @@
 package minigolf.game;
 
 import java.util.List;
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.NoiseModel;
 import minigolf.physics.Integrator;
 import minigolf.physics.SimulationSettings;
 

@@ -259,6 +259,11 @@ public final class Window implements AutoCloseable {
         return surfaceless != null;
     }
 
+    /** The EGL platform of a display-less context, or null for a GLFW window. */
+    SurfacelessContext.Kind eglPlatform() {
+        return surfaceless == null ? null : surfaceless.kind();
+    }
+
     public boolean shouldClose() {
         return surfaceless != null ? closeRequested : glfwWindowShouldClose(handle);
     }

@@ -31,7 +31,6 @@ public final class Screens {
     private final GuiInt[] bots = new GuiInt[Game.MAX_PLAYERS];
     // Typed shot.
     // Settings form.
-    final GuiDouble[] course = new GuiDouble[9];
     private final GuiInt testBot = new GuiInt(0);
     /** The HUD's physics readout (position, velocity, acceleration, slope, friction): off unless asked for. */
     String formError;
@@ -43,7 +42,6 @@ public final class Screens {
             kinds[i] = new GuiInt(0);
             bots[i] = new GuiInt(0);
         }
-        for (int i = 0; i < course.length; i++) course[i] = new GuiDouble();
     }
 
     public Screen screen() {
@@ -243,6 +241,11 @@ public final class Screens {
         if (s == Screen.SETTINGS) settingsScreen.openSettings(view, screen);
         else if (s == Screen.HELP) openHelp();
         else show(s);
+    }
+
+    /** Presses the Settings screen's "Apply" with the form as it stands (tests: the button's own code). */
+    public void applySettingsForm(UiView view) {
+        settingsScreen.apply(view);
     }
 
     private void pause(float w, float h) {

@@ -1,14 +1,13 @@
 package minigolf.ui;
 
-import minigolf.course.CourseException;
-import minigolf.game.CourseEdits;
 import minigolf.game.Game;
 import minigolf.game.UserSettings;
 import minigolf.physics.Integrator;
 
 /**
- * The Settings screen: window, graphics, sound, mouse, the game's rules, the Advanced physics and
- * the course's own values; applied together, checked first.
+ * The Settings screen: window, graphics, sound, mouse, the game's rules and the Advanced physics;
+ * applied together, checked first. The course itself is never changed here (its values belong to
+ * the course file and the editor): Apply once rebuilt the course and lost its obstacles.
  */
 final class SettingsScreen {
     private final Screens screens;
@@ -64,10 +63,6 @@ final class SettingsScreen {
         masterVolume[0] = (float) view.volumes().master();
         effectsVolume[0] = (float) view.volumes().effects();
         ambienceVolume[0] = (float) view.volumes().ambience();
-        CourseEdits e = CourseEdits.of(view.world().course());
-        double[] v = {e.gravity(), e.kineticFriction(), e.staticFriction(), e.maxSpeed(), e.startX(), e.startY(),
-                e.holeX(), e.holeY(), e.holeRadius()};
-        for (int i = 0; i < v.length; i++) screens.course[i].set(v[i]);
         settingsReturn = returnTo;
         screens.show(Screen.SETTINGS);
     }
@@ -113,47 +108,36 @@ final class SettingsScreen {
             Gui.inputInt("Steps per second", stepsPerSecond);
         }
         Gui.separator();
-        Gui.text("This course (" + view.world().course().name() + "): applies to the next game");
-        String[] labels = {"Gravity (m/s^2)", "Kinetic friction", "Static friction", "Max speed (m/s)", "Start x",
-                "Start y", "Hole x", "Hole y", "Hole radius"};
-        for (int i = 0; i < labels.length; i++) {
-            boolean pair = i >= 4 && i <= 7; // start x and y, hole x and y side by side
-            if (pair) Gui.setNextItemWidth(100);
-            if (pair && i % 2 == 1) Gui.sameLine();
-            Gui.inputDouble(labels[i], screens.course[i], 0, 0, "%.4f");
-        }
         if (screens.formError != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, screens.formError);
-        if (Gui.button("Apply")) {
-            try {
-                int sps = stepsPerSecond.get();
-                UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
-                        .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
-                        .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
-                        .withHideFrictionFromBots(hideFriction.get())
-                        .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get())
-                        .withFullscreen(fullscreen.get()).withGraphics(UserSettings.GRAPHICS.get(graphics.get()))
-                        .withWindowSize(sizes[windowSize.get()][0], sizes[windowSize.get()][1]);
-                // Keeps noise levels set in the settings file; the box turns the default levels on or all noise off.
-                boolean wasOn = s.noisePosition() > 0 || s.noiseVelocity() > 0;
-                if (realistic.get() != wasOn) {
-                    s = realistic.get() ? s.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY)
-                            : s.withNoise(0, 0);
-                }
-                GuiDouble[] c = screens.course;
-                CourseEdits e = new CourseEdits(c[0].get(), c[1].get(), c[2].get(), c[3].get(), c[4].get(), c[5].get(),
-                        c[6].get(), c[7].get(), c[8].get());
-                screens.actions.applySettings(s, e);
-                screens.actions.applyVolumes(new minigolf.game.AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
-                screens.formError = null;
-                screens.show(settingsReturn);
-            } catch (IllegalArgumentException e) {
-                screens.formError = e.getMessage();
-            } catch (RuntimeException e) {
-                screens.formError = e.getCause() instanceof CourseException ce ? ce.detail() : e.getMessage();
-            }
-        }
+        if (Gui.button("Apply")) apply(view);
         Gui.sameLine();
         if (Gui.button("Cancel")) screens.show(settingsReturn);
         Gui.end();
+    }
+
+    /** What "Apply" does: the form checked, applied and saved, and back to where Settings was opened. */
+    void apply(UiView view) {
+        try {
+            int sps = stepsPerSecond.get();
+            UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
+                    .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
+                    .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
+                    .withHideFrictionFromBots(hideFriction.get())
+                    .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get())
+                    .withFullscreen(fullscreen.get()).withGraphics(UserSettings.GRAPHICS.get(graphics.get()))
+                    .withWindowSize(sizes[windowSize.get()][0], sizes[windowSize.get()][1]);
+            // Keeps noise levels set in the settings file; the box turns the default levels on or all noise off.
+            boolean wasOn = s.noisePosition() > 0 || s.noiseVelocity() > 0;
+            if (realistic.get() != wasOn) {
+                s = realistic.get() ? s.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY)
+                        : s.withNoise(0, 0);
+            }
+            screens.actions.applySettings(s);
+            screens.actions.applyVolumes(new minigolf.game.AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
+            screens.formError = null;
+            screens.show(settingsReturn);
+        } catch (IllegalArgumentException e) {
+            screens.formError = e.getMessage();
+        }
     }
 }

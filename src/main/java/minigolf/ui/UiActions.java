@@ -2,7 +2,6 @@ package minigolf.ui;
 
 import java.nio.file.Path;
 import java.util.List;
-import minigolf.game.CourseEdits;
 import minigolf.game.Player;
 import minigolf.game.UserSettings;
 
@@ -32,7 +31,7 @@ public interface UiActions {
 
     void loadGame(Path file);
 
-    void applySettings(UserSettings settings, CourseEdits edits);
+    void applySettings(UserSettings settings);
 
     void toMainMenu();
 

@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.nio.file.Path;
 import java.util.List;
-import minigolf.game.CourseEdits;
 import minigolf.game.Player;
 import minigolf.game.SettingsStore;
 import minigolf.render.RenderQuality;
@@ -28,8 +27,7 @@ class SettingsApplyWindowTest {
         RenderQuality[] quality = new RenderQuality[1];
         app.onLoopPass((pass, window) -> {
             if (pass == 5) {
-                app.applySettings(app.settings().withWindowSize(1024, 640).withGraphics("low"),
-                        CourseEdits.of(app.world().course()));
+                app.applySettings(app.settings().withWindowSize(1024, 640).withGraphics("low"));
             } else if (pass == 20) {
                 int[] w = new int[1], h = new int[1];
                 glfwGetWindowSize(window.handle(), w, h);

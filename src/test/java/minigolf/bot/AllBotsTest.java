@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import org.junit.jupiter.params.ParameterizedTest;

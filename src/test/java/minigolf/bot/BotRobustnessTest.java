@@ -6,6 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
+import minigolf.bot.search.SearchBot;
 import minigolf.course.CourseException;
 import minigolf.physics.Outcome;
 import minigolf.physics.SimulationSettings;

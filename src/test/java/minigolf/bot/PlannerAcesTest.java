@@ -3,6 +3,8 @@ package minigolf.bot;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import minigolf.bot.planner.PlannerBot;
+import minigolf.bot.play.Playthrough;
+import minigolf.bot.search.SearchBot;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;

@@ -1,6 +1,7 @@
 package minigolf.bot;
 
 import minigolf.bot.planner.PlannerBot;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 

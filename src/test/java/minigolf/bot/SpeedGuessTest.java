@@ -2,6 +2,7 @@ package minigolf.bot;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import minigolf.bot.search.SpeedGuess;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.Simulator;

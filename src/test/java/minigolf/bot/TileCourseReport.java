@@ -2,6 +2,8 @@ package minigolf.bot;
 
 import java.util.List;
 import java.util.Locale;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 

@@ -2,6 +2,9 @@ package minigolf.bot;
 
 import java.util.List;
 import java.util.Locale;
+import minigolf.bot.map.CourseMaps;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
 import minigolf.course.Course;
 import minigolf.course.Vec2;
 import minigolf.physics.ShotResult;

@@ -3,8 +3,8 @@ package minigolf.editor;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import minigolf.bot.NoiseModel;
 import minigolf.bot.friction.HiddenFrictionTestAccess;
-import minigolf.bot.noise.NoiseModel;
 import minigolf.game.BotCatalog;
 import minigolf.game.ShotPlanner;
 import minigolf.physics.SimulationSettings;

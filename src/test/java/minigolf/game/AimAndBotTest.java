@@ -90,17 +90,4 @@ class AimAndBotTest {
         capped.join(5_000);
         assertArrayEquals(new double[]{2.4, 3.2, 0}, capped.shot(), 1e-12, "scaled to maxSpeed 4 (vz 0: a putt)");
     }
-
-    @Test
-    void courseEditsAreCheckedLikeACourseFile() throws Exception {
-        CourseEdits e = CourseEdits.of(GameTest.FLAT.course());
-        World w = new CourseEdits(9.81, 0.2, 0.3, 3, -2, 0, 2, 1, 0.12).applyTo(GameTest.FLAT);
-        assertEquals(0.2, w.physics().kineticFriction());
-        assertEquals(2, w.hole().position().x());
-        assertEquals(-3, GameTest.FLAT.course().start().x(), "the original is untouched");
-        var ex = org.junit.jupiter.api.Assertions.assertThrows(minigolf.course.CourseException.class,
-                () -> new CourseEdits(e.gravity(), e.kineticFriction(), e.staticFriction(), e.maxSpeed(),
-                        e.startX(), e.startY(), 40, 0, 0.1).applyTo(GameTest.FLAT));
-        assertTrue(ex.getMessage().startsWith("settings: hole.position: "), ex.getMessage());
-    }
 }

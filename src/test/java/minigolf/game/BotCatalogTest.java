@@ -6,11 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.List;
+import minigolf.bot.play.Bots;
 import minigolf.physics.Outcome;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.Simulator;
 import minigolf.physics.World;
-import minigolf.bot.Bots;
 import org.junit.jupiter.api.Test;
 
 /** Every bot can sit at the game's table; the planner is the default. */

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
  * The bundled rounds: the 18-hole round and its front nine load, every hole is its own course with
  * the capture rule, and every hole has a hole in one that is possible but hard. The holing shots
  * below were found by {@link HoleInOneSweep} (720 directions x 60 speeds from the tee; the middle of
- * the largest success region); the sweep's share of holing strokes, 0.002% to 2.8%, is in the README.
+ * the largest success region); the sweep's share of holing strokes, 0.002% to 2.8%, is in docs/playing.md.
  */
 public class RoundFilesTest {
     /** One first stroke (vx, vy) per hole of meadowbrook-18 that holes in one; (vx, vy, vz) where it is a chip. */

@@ -160,7 +160,7 @@ class RoundGameTest {
     /** The "realistic" setting in a round: every hole strays, each with its own stream, and a save resumes it exactly. */
     @Test
     void aNoisyRoundPlaysEveryHoleWithNoiseAndResumesExactly() throws Exception {
-        minigolf.bot.noise.NoiseModel noise = new minigolf.bot.noise.NoiseModel(0.01, 0.05);
+        minigolf.bot.NoiseModel noise = new minigolf.bot.NoiseModel(0.01, 0.05);
         RoundGame rg = new RoundGame(threeHoles(), SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 10, noise, 77);
         assertEquals(noise, rg.game().noise());
         // A putt aimed at the cup 4 m away strays: it does not stop exactly where aimed.

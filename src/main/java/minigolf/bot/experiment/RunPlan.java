@@ -1,7 +1,7 @@
 package minigolf.bot.experiment;
 
 import java.util.List;
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.NoiseModel;
 
 /**
  * An experiment's runs in one fixed order: course by course (the suite's files sorted by name),

@@ -2,10 +2,11 @@ package minigolf.bot.noise;
 
 import java.util.ArrayList;
 import java.util.List;
+import minigolf.bot.Bot;
 import minigolf.bot.BotCancelledException;
 import minigolf.bot.BotRequest;
-import minigolf.bot.Bot;
 import minigolf.bot.BudgetExhaustedException;
+import minigolf.bot.NoiseModel;
 import minigolf.bot.Shot;
 import minigolf.bot.planner.PlannerBot;
 import minigolf.physics.World;

@@ -1,6 +1,7 @@
 package minigolf.bot.noise;
 
 import java.util.SplittableRandom;
+import minigolf.bot.NoiseModel;
 import minigolf.bot.Shot;
 import minigolf.bot.map.CourseGrid;
 import minigolf.physics.World;

@@ -1,8 +1,9 @@
 package minigolf.bot.noise;
 
-import minigolf.bot.SpeedGuess;
+import minigolf.bot.NoiseModel;
 import minigolf.bot.map.DistanceField;
 import minigolf.bot.planner.StrokePlan;
+import minigolf.bot.search.SpeedGuess;
 import minigolf.course.HoleRule;
 import minigolf.physics.World;
 

@@ -3,10 +3,10 @@ package minigolf.bot.path;
 import java.util.List;
 import minigolf.bot.BotRequest;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.CourseMaps;
-import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
+import minigolf.bot.map.CourseMaps;
 import minigolf.bot.search.Aim;
+import minigolf.bot.search.SearchBot;
 import minigolf.bot.search.Target;
 
 /**

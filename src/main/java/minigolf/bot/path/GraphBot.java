@@ -5,9 +5,9 @@ import java.util.HashSet;
 import java.util.Set;
 import minigolf.bot.BotRequest;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
 import minigolf.bot.search.Aim;
+import minigolf.bot.search.SearchBot;
 import minigolf.bot.search.Target;
 import minigolf.physics.ShotResult;
 

@@ -4,10 +4,10 @@ import java.util.List;
 import java.util.SplittableRandom;
 import minigolf.bot.BotRequest;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.CourseMaps;
-import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
+import minigolf.bot.map.CourseMaps;
 import minigolf.bot.search.NewtonSolver;
+import minigolf.bot.search.SearchBot;
 import minigolf.bot.search.SwarmSolver;
 import minigolf.bot.search.Target;
 

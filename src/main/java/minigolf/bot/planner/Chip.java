@@ -1,7 +1,7 @@
 package minigolf.bot.planner;
 
-import minigolf.bot.ChipSearch;
 import minigolf.bot.Shot;
+import minigolf.bot.search.ChipSearch;
 
 /**
  * The chip stage (issue 12): where no path along the ground reaches the hole the planner plays

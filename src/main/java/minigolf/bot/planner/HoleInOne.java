@@ -3,7 +3,7 @@ package minigolf.bot.planner;
 import java.util.ArrayList;
 import java.util.List;
 import minigolf.bot.Shot;
-import minigolf.bot.SpeedGuess;
+import minigolf.bot.search.SpeedGuess;
 
 /**
  * The planner's first stage: a hole-in-one. Broyden straight at the hole, bank lines off walls and

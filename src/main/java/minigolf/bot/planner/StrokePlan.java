@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import minigolf.bot.CancellationToken;
-import minigolf.bot.SpeedGuess;
 import minigolf.bot.map.CourseGrid;
+import minigolf.bot.search.SpeedGuess;
 import minigolf.physics.World;
 
 /**

@@ -2,7 +2,6 @@ package minigolf.bot.search;
 
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
-import minigolf.bot.SpeedGuess;
 import minigolf.physics.ShotResult;
 
 /**

@@ -2,7 +2,6 @@ package minigolf.bot.search;
 
 import minigolf.bot.BotRequest;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
 import minigolf.physics.ShotResult;
 

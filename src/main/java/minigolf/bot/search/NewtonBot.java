@@ -3,7 +3,6 @@ package minigolf.bot.search;
 import java.util.SplittableRandom;
 import minigolf.bot.BotRequest;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
 
 /** {@code newton}: {@link NewtonSolver} at the hole from the physics guess; else the best shot seen. */

@@ -3,7 +3,6 @@ package minigolf.bot.search;
 import java.util.SplittableRandom;
 import minigolf.bot.BotRequest;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.SearchBot;
 import minigolf.bot.Shot;
 
 /** {@code swarm}: {@link SwarmSolver} at the hole, particles spread over the hole's half-plane. */

@@ -6,7 +6,7 @@ package minigolf.physics.reference;
  * those four end points from the shot's own. A shot whose reference end point moves by more than
  * {@value #ILL_CONDITIONED_SPREAD} m under so small a change has no 1 mm answer: after several
  * obstacle contacts the path has split (a wall's corner, a ball that just reaches or misses the
- * water), and no integrator can be held to 1 mm there (README, "Accuracy against an independent
+ * water), and no integrator can be held to 1 mm there (docs/measurements.md, "Accuracy against an independent
  * reference"). This is a property of the shot and the model, measured with the reference alone.
  */
 public final class Conditioning {

@@ -56,7 +56,7 @@ class ManifestTest {
         assertTrue(m.differences(hidden).endsWith("--hide-friction against --bots planner,newton --seeds 5 --budget 20000"
                 + " --max-strokes 10"), m.differences(hidden));
         // Run 0 of each cell: position noise outer, velocity inner.
-        assertEquals(new minigolf.bot.noise.NoiseModel(0.01, 0.05), noisy.plan().run(4 * 2 * 5).noise());
+        assertEquals(new minigolf.bot.NoiseModel(0.01, 0.05), noisy.plan().run(4 * 2 * 5).noise());
     }
 
     @Test

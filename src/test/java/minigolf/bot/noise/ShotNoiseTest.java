@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import minigolf.bot.NoiseModel;
 import minigolf.bot.Shot;
 import minigolf.bot.map.CourseGrid;
 import minigolf.course.CourseException;

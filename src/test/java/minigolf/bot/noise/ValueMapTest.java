@@ -6,10 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.SplittableRandom;
 import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.CourseMaps;
+import minigolf.bot.NoiseModel;
 import minigolf.bot.Shot;
-import minigolf.bot.SpeedGuess;
+import minigolf.bot.map.CourseMaps;
 import minigolf.bot.planner.StrokePlan;
+import minigolf.bot.search.SpeedGuess;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 

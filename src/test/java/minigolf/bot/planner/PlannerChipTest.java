@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import minigolf.bot.BotProgress;
 import minigolf.bot.CancellationToken;
-import minigolf.bot.Playthrough;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;

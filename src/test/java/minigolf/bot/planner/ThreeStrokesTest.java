@@ -8,13 +8,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import minigolf.bot.BotProgress;
-import minigolf.bot.Bots;
 import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
-import minigolf.bot.CourseMaps;
-import minigolf.bot.Playthrough;
 import minigolf.bot.Shot;
 import minigolf.bot.TileCourses;
+import minigolf.bot.map.CourseMaps;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;

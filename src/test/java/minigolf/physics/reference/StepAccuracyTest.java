@@ -15,7 +15,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * Shots of `minigolf bench-accuracy COURSE --shots 1000` (seed 1) that RK4 at 1/60 s once ended
- * millimetres from the independent reference, each for its own cause (README, "Accuracy against
+ * millimetres from the independent reference, each for its own cause (docs/measurements.md, "Accuracy against
  * an independent reference"): now within 1 mm.
  */
 class StepAccuracyTest {

@@ -1,5 +1,7 @@
-package minigolf.bot;
+package minigolf.bot.search;
 
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.Shot;
 import minigolf.bot.map.CourseGrid;
 import minigolf.bot.map.DistanceField;
 import minigolf.physics.Outcome;

@@ -1,6 +1,7 @@
-package minigolf.bot;
+package minigolf.bot.play;
 
-import minigolf.bot.noise.NoiseModel;
+import minigolf.bot.NoiseModel;
+
 
 /**
  * What makes a game harder than the bare course: noise on the played strokes, and friction the

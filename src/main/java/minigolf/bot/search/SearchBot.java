@@ -1,5 +1,12 @@
-package minigolf.bot;
+package minigolf.bot.search;
 
+import minigolf.bot.Bot;
+import minigolf.bot.BotCancelledException;
+import minigolf.bot.BotRequest;
+import minigolf.bot.BudgetExhaustedException;
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.Shot;
+import minigolf.bot.map.CourseMaps;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.World;

@@ -1,13 +1,14 @@
-package minigolf.bot;
+package minigolf.bot.play;
 
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
+import minigolf.bot.Bot;
+import minigolf.bot.noise.RobustBot;
 import minigolf.bot.path.AStarBot;
 import minigolf.bot.path.GraphBot;
 import minigolf.bot.path.GuidedBot;
-import minigolf.bot.noise.RobustBot;
 import minigolf.bot.planner.PlannerBot;
 import minigolf.bot.search.GridBot;
 import minigolf.bot.search.LocalSearchBot;

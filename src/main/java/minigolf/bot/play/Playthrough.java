@@ -1,12 +1,19 @@
-package minigolf.bot;
+package minigolf.bot.play;
 
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
+import minigolf.bot.Bot;
+import minigolf.bot.BotProgress;
+import minigolf.bot.BotRequest;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.Shot;
 import minigolf.bot.friction.FrictionEstimator;
 import minigolf.bot.friction.FrictionPrior;
 import minigolf.bot.noise.PlayedStroke;
 import minigolf.bot.noise.ShotNoise;
+import minigolf.bot.search.SearchBot;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;

@@ -1,10 +1,10 @@
-package minigolf.bot.noise;
+package minigolf.bot;
 
 /**
  * How far a played stroke strays from the one chosen: independent Gaussian errors with standard
  * deviation {@code position} (metres, per axis) on where the stroke starts and {@code velocity}
  * (m/s, per component) on the velocity played. Known to everyone (it is a game setting), so a bot
- * may plan with it; the draws themselves come from {@link ShotNoise}.
+ * may plan with it; the draws themselves come from {@link minigolf.bot.noise.ShotNoise}.
  */
 public record NoiseModel(double position, double velocity) {
     public static final NoiseModel NONE = new NoiseModel(0, 0);

@@ -1,7 +1,6 @@
-package minigolf.bot;
+package minigolf.bot.map;
 
-import minigolf.bot.map.CourseGrid;
-import minigolf.bot.map.DistanceField;
+import minigolf.bot.CancellationToken;
 import minigolf.physics.World;
 
 /**

@@ -1,4 +1,4 @@
-package minigolf.bot;
+package minigolf.bot.search;
 
 import minigolf.physics.World;
 

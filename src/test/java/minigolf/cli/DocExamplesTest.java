@@ -18,24 +18,35 @@ import picocli.CommandLine;
 import picocli.CommandLine.Model.OptionSpec;
 
 /**
- * The README cannot drift from the program: every {@code $ minigolf ...} example in a code block is run
- * and its output compared with the lines under it ("..." stands for any text), and every option the
- * command table names exists.
+ * The README and the pages in docs/ cannot drift from the program: every {@code $ minigolf ...} example
+ * in a code block is run and its output compared with the lines under it ("..." stands for any text),
+ * and every option the command table of docs/cli.md names exists.
  */
-class ReadmeExamplesTest {
+class DocExamplesTest {
 
     private record Example(String command, List<String> expected) {
     }
 
-    private static String readme() throws IOException {
-        return Files.readString(Path.of(System.getProperty("minigolf.projectDir", "."), "README.md"));
+    private static Path projectDir() {
+        return Path.of(System.getProperty("minigolf.projectDir", "."));
     }
 
-    private static List<Example> examples(String readme) {
+    /** README.md and every docs/*.md, one after the other. */
+    private static String allPages() throws IOException {
+        StringBuilder all = new StringBuilder(Files.readString(projectDir().resolve("README.md")));
+        try (var pages = Files.list(projectDir().resolve("docs"))) {
+            for (Path p : pages.filter(f -> f.toString().endsWith(".md")).sorted().toList()) {
+                all.append("\n").append(Files.readString(p));
+            }
+        }
+        return all.toString();
+    }
+
+    private static List<Example> examples(String pages) {
         List<Example> out = new ArrayList<>();
         boolean inBlock = false;
         Example current = null;
-        for (String line : readme.split("\n")) {
+        for (String line : pages.split("\n")) {
             if (line.startsWith("```")) {
                 inBlock = !inBlock;
                 current = null;
@@ -64,8 +75,8 @@ class ReadmeExamplesTest {
     }
 
     @Test
-    void everyExampleInTheReadmePrintsWhatTheReadmeShows() throws IOException {
-        List<Example> examples = examples(readme());
+    void everyExampleInTheDocsPrintsWhatTheDocsShow() throws IOException {
+        List<Example> examples = examples(allPages());
         assertTrue(examples.stream().anyMatch(e -> e.command().startsWith("minigolf simulate courses/lake.json")),
                 "the lake example is gone: " + examples);
         for (Example e : examples) {
@@ -73,7 +84,7 @@ class ReadmeExamplesTest {
             String[] args = e.command().substring("minigolf ".length()).trim().split("\\s+");
             CliRun run = CliRun.of(args);
             String expected = String.join("\n", e.expected()).strip();
-            assertTrue(matches(expected, run.out().strip()), "README: $ " + e.command() + "\nshows:\n" + expected
+            assertTrue(matches(expected, run.out().strip()), "docs: $ " + e.command() + "\nshows:\n" + expected
                     + "\nbut it prints:\n" + run.out() + run.err());
         }
     }
@@ -90,7 +101,7 @@ class ReadmeExamplesTest {
     void everyOptionInTheCommandTableExists() throws IOException {
         CommandLine root = new CommandLine(new MinigolfCommand());
         Pattern row = Pattern.compile("^\\| `minigolf ([a-z-]+)(.*?)` \\|", Pattern.MULTILINE);
-        Matcher m = row.matcher(readme());
+        Matcher m = row.matcher(Files.readString(projectDir().resolve("docs/cli.md")));
         Set<String> seen = new TreeSet<>();
         List<String> problems = new ArrayList<>();
         while (m.find()) {

@@ -1,9 +1,16 @@
-package minigolf.bot;
+package minigolf.bot.search;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import minigolf.bot.BotProgress;
+import minigolf.bot.BotRequest;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.Shot;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
