@@ -63,7 +63,8 @@ class NeedsDisplayCountTest {
             while (m.find()) {
                 String n = m.group(1).toLowerCase();
                 int said = n.matches("\\d+") ? Integer.parseInt(n) : WORDS.get(n);
-                assertEquals(tests.size(), said, doc.getFileName() + " says \"" + m.group() + "\"");
+                assertEquals(tests.size(), said, doc.getFileName() + " says \"" + m.group() + "\": there are " + tests.size()
+                        + " (every test marked @NeedsDisplay): change the number there");
             }
         }
     }
