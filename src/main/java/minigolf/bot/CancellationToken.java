@@ -4,7 +4,7 @@ package minigolf.bot;
  * Lets another thread (the game's cancel button) stop a bot, and carries the bot's wall-time
  * limit. Bots check it before every simulated shot, every few hundred steps inside a simulated
  * shot, and in any loop of their own that can run longer than a millisecond or so, so a cancel or
- * the end of the time limit takes effect within 50 ms.
+ * the end of the time limit takes effect within about a millisecond of the bot's own CPU time.
  *
  * <p>A cancel ends the bot with {@link BotCancelledException}; the end of the time limit is the
  * end of a budget ({@link BudgetExhaustedException}): the bot returns its best shot so far.
