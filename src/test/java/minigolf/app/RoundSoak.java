@@ -53,7 +53,7 @@ public final class RoundSoak {
         int[] holes = {0}, cardPasses = {0}, rounds = {1};
         Object[] lastGame = {null};
         System.out.println("minutes,holes,rounds,rssMB,heapMB,nmtCommittedMB,glBuffers,glTextures,glVertexArrays,glFramebuffers,"
-                + "glRenderbuffers,glPrograms,glShaders,lwjglDebugBytes");
+                + "glRenderbuffers,glPrograms,glShaders,lwjglDebugBytes,heapCommittedMB");
         app.onLoopPass((pass, window) -> {
             double t = (System.nanoTime() - start) / 60e9;
             if (app.game != null && app.game != lastGame[0]) { // a new hole's game
@@ -84,8 +84,9 @@ public final class RoundSoak {
     private static String report(double minutes, int holes, int rounds) {
         System.gc();
         long heap = Runtime.getRuntime().totalMemory() - Runtime.getRuntime().freeMemory();
-        return String.format(Locale.ROOT, "%.2f,%d,%d,%.1f,%.1f,%.1f,%s,%d", minutes, holes, rounds, rssKb() / 1024.0,
-                heap / 1048576.0, nmtCommittedKb() / 1024.0, glObjects(), lwjglBytes());
+        return String.format(Locale.ROOT, "%.2f,%d,%d,%.1f,%.1f,%.1f,%s,%d,%.1f", minutes, holes, rounds, rssKb() / 1024.0,
+                heap / 1048576.0, nmtCommittedKb() / 1024.0, glObjects(), lwjglBytes(),
+                Runtime.getRuntime().totalMemory() / 1048576.0);
     }
 
     /** VmRSS from /proc/self/status, in KiB (0 where there is none). */
