@@ -73,6 +73,16 @@ class ArchitectureTest {
         noOpenGl(HEADLESS).check(production);
     }
 
+    /** The online server runs headless on a machine without a display; the game rules it uses have no OpenGL either. */
+    @Test
+    void theOnlineServerAndItsRulesUseNoOpenGl() {
+        noOpenGl("minigolf.online..", "minigolf.game..").check(production);
+        noClasses().that().resideInAnyPackage("minigolf.online..")
+                .should().dependOnClassesThat().resideInAnyPackage("minigolf.app..", "minigolf.render..", "minigolf.ui..",
+                        "minigolf.editor..")
+                .because("the server and the headless client run without a window").check(production);
+    }
+
     @Test
     void theHeadlessCoreUsesNothingOfTheLayersAboveIt() {
         noClasses().that().resideInAnyPackage(HEADLESS)

@@ -12,7 +12,6 @@ import minigolf.course.CourseException;
 import minigolf.course.CourseLoader;
 import minigolf.game.RoundLoader;
 import minigolf.game.SettingsStore;
-import minigolf.ui.UiView;
 
 /**
  * Where courses are found: {@code courses/} in the working directory, {@code courses/} beside the
@@ -23,19 +22,27 @@ final class CourseFolders {
     private CourseFolders() {
     }
 
+    /** A course offered: its name, its file, and whether it is the player's own. */
+    record CourseEntry(String name, Path file, boolean own) {
+    }
+
+    /** A round offered, loaded so that it can be played. */
+    record RoundEntry(minigolf.game.Round round, Path file) {
+    }
+
     /** The rounds in {@code rounds/} beside the shipped courses and in {@code <config>/rounds}; rounds that do not load are left out. */
-    static List<UiView.RoundEntry> rounds(SettingsStore store) {
+    static List<RoundEntry> rounds(SettingsStore store) {
         List<Path> dirs = new ArrayList<>();
         for (Path d : shippedFolders()) dirs.add(d.resolve("rounds"));
         dirs.add(store.directory().resolve("rounds"));
-        List<UiView.RoundEntry> out = new ArrayList<>();
+        List<RoundEntry> out = new ArrayList<>();
         Set<Path> seen = new LinkedHashSet<>();
         for (Path dir : dirs) {
             if (!Files.isDirectory(dir)) continue;
             try (Stream<Path> files = Files.list(dir)) {
                 for (Path f : files.filter(p -> p.toString().endsWith(".json")).sorted().toList()) {
                     try {
-                        if (seen.add(f.getFileName())) out.add(new UiView.RoundEntry(RoundLoader.load(f), f));
+                        if (seen.add(f.getFileName())) out.add(new RoundEntry(RoundLoader.load(f), f));
                     } catch (CourseException e) {
                         System.err.println("minigolf: round not offered: " + e.getMessage());
                     }
@@ -61,22 +68,22 @@ final class CourseFolders {
         return shipped;
     }
 
-    static List<UiView.CourseEntry> list(SettingsStore store) {
+    static List<CourseEntry> list(SettingsStore store) {
         Set<Path> shipped = shippedFolders();
-        List<UiView.CourseEntry> out = new ArrayList<>();
+        List<CourseEntry> out = new ArrayList<>();
         Set<Path> seen = new LinkedHashSet<>();
         for (Path dir : shipped) add(dir, false, out, seen);
         add(store.directory().resolve("courses"), true, out, seen);
         return out;
     }
 
-    private static void add(Path dir, boolean own, List<UiView.CourseEntry> out, Set<Path> seen) {
+    private static void add(Path dir, boolean own, List<CourseEntry> out, Set<Path> seen) {
         if (!Files.isDirectory(dir)) return;
         try (Stream<Path> files = Files.list(dir)) {
             for (Path f : files.filter(p -> p.toString().endsWith(".json")).sorted().toList()) {
                 try {
                     String name = CourseLoader.load(f).name();
-                    if (seen.add(f.getFileName())) out.add(new UiView.CourseEntry(name, f, own));
+                    if (seen.add(f.getFileName())) out.add(new CourseEntry(name, f, own));
                 } catch (CourseException e) {
                     // not a loadable course: not offered
                 }

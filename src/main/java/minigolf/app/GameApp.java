@@ -2,54 +2,37 @@ package minigolf.app;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayDeque;
-import java.util.Deque;
 import java.util.List;
-import java.util.Locale;
 import java.util.function.BiConsumer;
-import minigolf.game.AimModel;
-import minigolf.game.Loft;
-import minigolf.game.BallReadout;
-import minigolf.game.BotSeats;
-import minigolf.game.BotConditions;
-import minigolf.game.BotTurn;
 import minigolf.game.AudioSettings;
 import minigolf.game.Game;
-import minigolf.game.HighScores;
 import minigolf.game.HoleReplay;
 import minigolf.game.Player;
-import minigolf.game.PlayerState;
 import minigolf.game.Round;
 import minigolf.game.RoundGame;
 import minigolf.game.SettingsStore;
-import minigolf.game.ShotPlanner;
-import minigolf.game.ShotRecord;
-import minigolf.game.StrokeAnimator;
 import minigolf.game.UserSettings;
 import minigolf.physics.World;
-import minigolf.render.OrbitCamera;
-import minigolf.render.Png;
 import minigolf.render.RenderQuality;
-import minigolf.render.SceneRenderer;
-import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
+import minigolf.render.WindowApp;
+import minigolf.render.WindowLoop;
 import minigolf.ui.NuklearLayer;
 import minigolf.ui.PlayerColors;
 import minigolf.ui.Screen;
-import minigolf.ui.Screens;
-import minigolf.ui.UiActions;
-import minigolf.ui.UiView;
-import org.joml.Vector3f;
+import minigolf.ui.ScreenHost;
 
 import static org.lwjgl.glfw.GLFW.*;
+import static org.lwjgl.opengl.GL11.glViewport;
 
 /**
- * The game: one window, one render loop. Each frame polls input, advances the rolling ball at the
- * physics step (fixed, decoupled from the frame rate, drawn interpolated), runs bots on worker
- * threads, draws the course, the minimap and the interface screens. Everything GL happens on the
- * thread that calls {@link #run()}.
+ * The game window, in the manner of libGDX's {@code Game}: it owns the services every screen uses
+ * (what is being played, the 3D course behind the screens, the player's files, sound, messages)
+ * and shows one {@link GameScreen} at a time; input goes to the screen shown first, then to the
+ * camera and the keys that work everywhere (F1, F11, R, H). The window loop is {@link WindowLoop},
+ * shared with the editor. Everything GL happens on the thread that calls {@link #run()}.
  */
-public final class GameApp implements UiActions, UiView {
+public final class GameApp implements WindowApp {
     /** How the game is started (the command line and tests fill it). */
     public record Options(Path coursePath, Path screenshot, int frames, List<Player> startPlayers,
                           List<double[]> scriptedShots, double timeScale, SettingsStore store, boolean visible,
@@ -59,81 +42,48 @@ public final class GameApp implements UiActions, UiView {
         }
     }
 
-    /** Frames a headless run (--frames) shows the card between holes before it plays the next. */
-    static final int ROUND_CARD_FRAMES = 30;
+    /** The game's screens, each made once: a form keeps what was typed into it. */
+    public record Screens(MainMenuScreen mainMenu, CourseSelectScreen courseSelect, NewGameScreen newGame,
+                          PlayingScreen playing, TestBotScreen testBot, PauseScreen pause, SettingsScreen settings,
+                          ScorecardScreen scorecard, RoundCardScreen roundCard, ReplayScreen replay, HelpScreen help) {
+    }
 
     private final Options options;
-    private final SettingsStore store;
-    UserSettings settings;
-    World world;
-    Path coursePath;
-    Game game;
-    /** The round being played (null for a single course); {@link #game} is its current hole's game. */
-    RoundGame round;
-    /** Settings, volumes, high scores and saved games on disk. */
-    final PlayerFiles files;
-    /** Starting, moving on and ending games and rounds. */
-    private final PlayFlow flow = new PlayFlow(this);
+    private final PlayerFiles files;
+    private UserSettings settings;
+    private final Toasts toasts = new Toasts(this::clock);
+    private final PlaySession play;
+    private final CourseScene scene = new CourseScene();
+    private final CameraControls cameraControls = new CameraControls(this);
+    private final Thumbnails thumbnails = new Thumbnails();
+    private final Hud hud = new Hud(this);
+    private final Screens screens;
+    private final ScreenHost host;
+    private Window window;
+    private NuklearLayer uiLayer;
     /** Silent until the window is open, and where there is no audio device. */
     private Sounds sounds;
-    /** Confetti and splashes (the renderer draws them; they end by themselves). */
-    final minigolf.render.Particles effects = new minigolf.render.Particles();
-    /** The holed ball sinking into the cup (drawn until it is out of sight). */
-    final minigolf.render.CupDrop cupDrop = new minigolf.render.CupDrop();
-    /** The round the next game plays (set by {@link #playRound} or the menu). */
-    Round roundToPlay;
-    /** Frames the between-holes card has been shown (the headless run moves on by itself). */
-    private int cardFrames;
-    StrokeAnimator animator;
-    BotTurn botTurn;
-    /** One bot per player per hole, so the planner's memory lasts across its strokes. */
-    private final BotSeats botSeats = new BotSeats();
-    private String message;
-    private double messageUntil;
-    private String notice;
-    private final Deque<double[]> script;
-    final Screens screens = new Screens(this);
-    final Thumbnails thumbnails = new Thumbnails();
-    private List<CourseEntry> courses;
-    private List<RoundEntry> rounds;
-
-    Window window;
-    SceneRenderer renderer;
-    private RenderQuality quality = RenderQuality.HIGH;
-    /** What the renderer probed as right for this machine (the "auto" graphics setting). */
-    private RenderQuality autoQuality = RenderQuality.HIGH;
-    OrbitCamera camera;
-    NuklearLayer uiLayer;
-    boolean rebuildScene;
-    /** Called at the start of every pass of the loop (drawn or not) with the window: tests drive resizes with it. */
+    /** Frames in a row that showed a final card (a scripted run stops after a few). */
+    private int finalCardFrames;
     private BiConsumer<Integer, Window> loopHook = (pass, w) -> { };
-
-    /** Keys and mouse: aiming, the loft, turning and moving the camera. */
-    final GameInput input = new GameInput(this);
-    /** What each frame shows: the balls, the aim and its guide, the camera following the ball. */
-    private final GameView view = new GameView(this);
-    /** Set when a stroke ends: the camera turns towards the hole until it faces it or the player turns it. */
-    boolean turnToHole;
-    /** Watching a hole again ("Watch again", "Watch hole N"), and the screen to go back to. */
-    final ReplayPlayer replayer = new ReplayPlayer();
-    private Screen replayReturn;
 
     public GameApp(World world, Options options) {
         this.options = options;
-        this.store = options.store();
-        this.files = new PlayerFiles(store, this::say);
+        this.files = new PlayerFiles(options.store(), this::say);
         this.settings = files.loadedSettings();
         // Shown until dismissed (a timed message would expire before the window exists).
-        if (files.settingsProblem() != null) notice = "Settings ignored, the defaults are used: " + files.settingsProblem();
-        this.world = world;
-        this.coursePath = options.coursePath();
-        this.script = new ArrayDeque<>(options.scriptedShots());
+        if (files.settingsProblem() != null) toasts.setNotice("Settings ignored, the defaults are used: " + files.settingsProblem());
+        this.play = new PlaySession(world, options.coursePath(), options.scriptedShots(), files, this::say);
+        this.screens = new Screens(new MainMenuScreen(this), new CourseSelectScreen(this), new NewGameScreen(this),
+                new PlayingScreen(this), new TestBotScreen(this), new PauseScreen(this), new SettingsScreen(this),
+                new ScorecardScreen(this), new RoundCardScreen(this), new ReplayScreen(this), new HelpScreen(this));
+        this.host = new ScreenHost(screens.mainMenu());
     }
 
     /** Runs until the window closes or the requested frames are done; returns the game at the end (or null). */
     public Game run() {
-        autoQuality = RenderQuality.probe(); // llvmpipe: no MSAA, smaller water targets (docs/rendering.md)
-        quality = chosenQuality(settings);
+        scene.probeQuality(settings);
+        RenderQuality quality = scene.quality();
         Window.Options wo = options.visible() ? new Window.Options(true, true, quality.samples(), true, 3, 3)
                 : new Window.Options(true, false, 0, true, 3, 3);
         int ww = settings.windowWidth() > 0 ? settings.windowWidth() : 1280;
@@ -143,368 +93,252 @@ public final class GameApp implements UiActions, UiView {
             window.setVsync(settings.vsync() && options.frames() <= 0);
             // The player's full screen, not for scripted runs (tests and screenshots keep their window).
             if (settings.fullscreen() && options.visible() && options.frames() <= 0) window.toggleFullscreen();
-            input.install();
+            installInput();
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
             try (NuklearLayer ui = new NuklearLayer(window.handle(), scale); Sounds sound = Sounds.open(files.volumes())) {
                 sounds = sound;
                 uiLayer = ui;
-                buildScene();
+                play.setFeedback(new PlaySession.Feedback() {
+                    @Override
+                    public minigolf.physics.TrajectoryListener stroke(World world, boolean firstStroke, int seat) {
+                        return StrokeFeedback.listener(sounds, firstStroke, scene.effects(), world, scene.cupDrop(),
+                                PlayerColors.of(seat));
+                    }
+
+                    @Override
+                    public void hit(double speed, double maxSpeed) {
+                        StrokeFeedback.hit(sounds, speed, maxSpeed);
+                    }
+                });
                 try {
-                    if (options.startPlayers() != null) {
-                        if (roundToPlay != null) flow.startRound(roundToPlay, options.startPlayers());
-                        else startGame(options.startPlayers());
-                    }
-                    loop();
+                    if (options.startPlayers() != null) startGame(options.startPlayers());
+                    new WindowLoop(window, this).screenshot(options.screenshot()).onPass(loopHook).run();
                 } finally {
-                    if (botTurn != null) botTurn.cancel();
+                    play.cancelBot();
                     thumbnails.close();
-                    if (renderer != null) renderer.close();
+                    scene.close();
+                    screens.replay().dispose();
                 }
             }
         }
-        return game;
+        return play.game();
     }
 
-    /** Plays this round instead of a single course (before {@link #run()}: with the options' players it starts at once). */
-    public void playRound(Round r) {
-        roundToPlay = r;
+    // ---- The window loop ---------------------------------------------------------------------
+
+    @Override
+    public void update(double elapsed, double now) {
+        current().update(elapsed);
     }
 
-    /** Opens the help screen (what F1 does). */
-    public void openHelp() {
-        screens.openHelp();
+    @Override
+    public void render(int fw, int fh, float time) {
+        host.resize(fw, fh);
+        GameScreen s = current();
+        scene.show(s.course(), s.course() == play.world() ? play.coursePath() : null, settings, fw, fh);
+        s.directCamera(scene, scene.sinceLastFrame(time), (float) fw / Math.max(1, fh));
+        scene.draw(fw, fh, time, s.balls(), s.aim());
+        glViewport(0, 0, fw, fh);
+        uiLayer.newFrame();
+        float w = uiLayer.displayWidth(), h = uiLayer.displayHeight();
+        current().render(w, h); // the screen may have changed during update
+        toasts.render(w, h);
+        uiLayer.render();
+        finalCardFrames = current().showsFinalCard() ? finalCardFrames + 1 : 0;
     }
 
-    /** The round being played, or null. */
-    public RoundGame roundGame() {
-        return round;
+    @Override
+    public boolean finished(int framesDrawn) {
+        // A new window takes its content size in its second frame: stop once the final card has been drawn.
+        return (options.frames() > 0 && framesDrawn >= options.frames()) || (options.exitWhenOver() && finalCardFrames >= 3);
     }
 
-    /** Sets what runs at the start of every pass of the render loop (for tests: resize, minimise, close). */
-    public void onLoopPass(BiConsumer<Integer, Window> hook) {
-        loopHook = hook;
+    @Override
+    public double minFrameSeconds() {
+        if (options.frames() > 0 || (settings.vsync() && options.visible()) || settings.frameLimit() <= 0) return 0;
+        return 1.0 / settings.frameLimit();
     }
 
-    private void loop() {
-        double last = glfwGetTime(), start = last;
-        int frame = 0, overFrames = 0, pass = 0;
-        while (!window.shouldClose()) {
-            loopHook.accept(pass++, window);
-            if (window.shouldClose()) break;
-            double now = glfwGetTime(), elapsed = Math.min(0.25, now - last);
-            last = now;
-            window.pollEvents();
-            update(elapsed, now);
-            int fw = window.framebufferWidth(), fh = window.framebufferHeight();
-            if (fw <= 0 || fh <= 0 || window.isIconified()) {
-                sleep(50); // minimised: keep the game going, draw nothing
-                continue;
-            }
-            if (rebuildScene) buildScene();
-            view.draw(fw, fh, (float) (now - start));
-            frame++;
-            overFrames = showsFinalCard() ? overFrames + 1 : 0;
-            // A new window takes its content size in its second frame: stop once the scorecard has been drawn.
-            boolean over = options.exitWhenOver() && overFrames >= 3;
-            if ((options.frames() > 0 && frame >= options.frames()) || over) {
-                if (options.screenshot() != null) Png.saveBackBuffer(options.screenshot(), fw, fh);
-                window.swapBuffers();
-                break;
-            }
-            window.swapBuffers();
-            limitFrameRate(now);
-        }
-    }
-
-    private void limitFrameRate(double frameStart) {
-        if (options.frames() > 0 || (settings.vsync() && options.visible()) || settings.frameLimit() <= 0) return;
-        double wait = frameStart + 1.0 / settings.frameLimit() - glfwGetTime();
-        if (wait > 0.001) sleep((long) (wait * 1000));
-    }
-
-    private static void sleep(long millis) {
-        try {
-            Thread.sleep(millis);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-    }
-
-    // ---- Game logic per frame ---------------------------------------------------------------
-
-    private void update(double elapsed, double now) {
-        if (message != null && now > messageUntil) message = null;
-        Screen screen = screens.screen();
-        if (screen == Screen.REPLAY) {
-            updateReplay(elapsed);
-            return;
-        }
-        if (screen == Screen.ROUND_CARD && round != null && !round.isOver() && options.frames() > 0
-                && ++cardFrames >= ROUND_CARD_FRAMES) {
-            nextHole(); // a headless run moves on by itself; a player presses "Next hole"
-            return;
-        }
-        boolean running = screen == Screen.PLAYING || screen == Screen.TEST_BOT;
-        if (game == null || !running) return;
-        if (animator != null) {
-            animator.advance(elapsed, options.timeScale());
-            if (animator.isFinished()) {
-                ShotRecord r = game.completeShot();
-                animator = null;
-                turnToHole = true;
-                Player p = game.players().get(r.player());
-                say(p.name() + ": " + describe(r));
-                if (game.isOver()) {
-                    if (round != null) {
-                        files.recordScores(round, round.finishHole());
-                        cardFrames = 0;
-                        screens.show(Screen.ROUND_CARD);
-                    } else {
-                        screens.show(Screen.SCORECARD);
+    private void installInput() {
+        long h = window.handle();
+        glfwSetKeyCallback(h, (win, key, scancode, action, mods) -> {
+            if (action != GLFW_PRESS || (uiLayer != null && uiLayer.wantsKeyboard())) return;
+            if (current().keyPressed(key, mods)) return;
+            switch (key) {
+                case GLFW_KEY_F1 -> openHelp();
+                case GLFW_KEY_F11 -> window.toggleFullscreen();
+                case GLFW_KEY_R -> scene.resetCamera();
+                case GLFW_KEY_H -> {
+                    if (scene.renderer() != null) {
+                        scene.renderer().terrainPass().setColorMode(scene.renderer().terrainPass().colorMode().next());
                     }
-                    return;
+                }
+                default -> {
                 }
             }
-        }
-        if (game.isShotInFlight() || game.isOver()) return;
-        int seat = game.currentPlayer();
-        Player p = game.players().get(seat);
-        if (p.isBot()) {
-            if (botTurn == null) {
-                ShotPlanner planner = botSeats.planner(seat, p.bot(), game.world());
-                if (planner == null) {
-                    say("no bot named " + p.bot() + "; " + p.name() + " cannot play");
-                    return;
-                }
-                PlayerState s = game.player(seat);
-                botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
-                        31L * game.history().size() + seat,
-                        BotConditions.of(game, seat, settings.hideFrictionFromBots()));
-            } else if (botTurn.isDone()) {
-                BotTurn done = botTurn;
-                botTurn = null;
-                if (done.shot() != null) {
-                    hit(done.shot()[0], done.shot()[1], done.shot()[2]);
-                } else {
-                    say(p.name() + ": " + done.failure());
-                    if ("cancelled".equals(done.failure())) toMainMenu();
-                }
-            }
-        } else if (!script.isEmpty()) {
-            double[] v = script.poll();
-            hit(v[0], v[1], v.length > 2 ? v[2] : 0);
-        }
+        });
+        glfwSetMouseButtonCallback(h, (win, button, action, mods) -> {
+            boolean down = action == GLFW_PRESS;
+            double[] x = new double[1], y = new double[1];
+            glfwGetCursorPos(win, x, y);
+            if (down && uiLayer != null && uiLayer.wantsMouse()) return;
+            boolean used = current().mouseButton(button, down, mods, x[0], y[0]);
+            cameraControls.mouseButton(button, down, mods, x[0], y[0], used);
+        });
+        glfwSetCursorPosCallback(h, (win, x, y) -> {
+            int[] ww = new int[1], wh = new int[1];
+            glfwGetWindowSize(win, ww, wh);
+            cameraControls.cursorMoved(x, y, current().cursorMoved(x, y), wh[0]);
+        });
+        glfwSetScrollCallback(h, (win, xoff, yoff) -> {
+            if (uiLayer != null && uiLayer.wantsMouse()) return;
+            if (!current().scrolled(yoff)) cameraControls.zoom(yoff);
+        });
     }
 
-    private void updateReplay(double elapsed) {
-        switch (replayer.advance(elapsed, options.timeScale(), game.settings().dt(), () -> strokeSounds(false))) {
-            case STROKE_STARTED -> {
-                ShotRecord r = replayer.shot();
-                StrokeFeedback.hit(sounds, Math.sqrt(r.vx() * r.vx() + r.vy() * r.vy() + r.vz() * r.vz()),
-                        world.physics().maxSpeed());
-            }
-            case OVER -> {
-                int mismatches = replayer.counts()[1];
-                stopReplay();
-                say(mismatches == 0 ? "replay over: every stroke ended exactly where it did in play"
-                        : mismatches + " replayed strokes ended elsewhere than in play");
-            }
-            case ROLLING -> {
-            }
-        }
+    // ---- Services the screens use --------------------------------------------------------------
+
+    PlaySession play() {
+        return play;
     }
 
-    @Override
-    public void watchReplay() {
-        if (game == null || game.history().isEmpty() || game.isShotInFlight() || screens.screen() == Screen.REPLAY) return;
-        startReplay(HoleReplay.of(game));
+    CourseScene scene() {
+        return scene;
     }
 
-    @Override
-    public void watchHole(int hole) {
-        if (round == null || hole < 0 || hole >= round.holesFinished() || round.holeStrokes(hole).isEmpty()
-                || game.isShotInFlight() || screens.screen() == Screen.REPLAY) return;
-        World holeWorld = round.round().hole(hole).world();
-        if (holeWorld != world) { // another hole's course on screen while it is watched
-            world = holeWorld;
-            rebuildScene = true;
-        }
-        startReplay(new HoleReplay(holeWorld, game.settings(), round.holeStrokes(hole)));
+    PlayerFiles files() {
+        return files;
     }
 
-    private void startReplay(HoleReplay r) {
-        cancelBot();
-        botTurn = null;
-        replayer.start(r);
-        replayReturn = screens.screen();
-        screens.show(Screen.REPLAY);
+    Thumbnails thumbnails() {
+        return thumbnails;
     }
 
-    @Override
-    public void stopReplay() {
-        if (screens.screen() != Screen.REPLAY) return;
-        replayer.stop();
-        if (game != null && world != game.world()) { // back to the hole being played
-            world = game.world();
-            rebuildScene = true;
-        }
-        screens.show(replayReturn);
+    Window window() {
+        return window;
     }
 
-    /** Strokes replayed by the last "Watch again" and how many ended elsewhere than in play (for tests). */
-    public int[] replayCounts() {
-        return replayer.counts();
+    Hud hud() {
+        return hud;
     }
 
-    @Override
-    public String replayCaption() {
-        return replayer.caption(game.players());
+    /** A course point (x, y) on the terrain in interface pixels, or null when off screen (the bot's plan). */
+    float[] toScreen(double x, double y) {
+        World world = scene.world();
+        if (scene.camera() == null || world == null) return null;
+        // A little above the ground, so the line is not hidden in the grass.
+        float z = (float) (world.terrain().height(x, y) + 0.03);
+        float[] p = scene.camera().project(new org.joml.Vector3f((float) x, (float) y, z), window.framebufferWidth(),
+                window.framebufferHeight());
+        return uiLayer == null ? p : uiLayer.toInterface(p, window.framebufferWidth());
     }
 
-    private static String describe(ShotRecord r) {
-        return switch (r.outcome()) {
-            case HOLED -> "in the hole!";
-            case STOPPED -> String.format(Locale.ROOT, "stopped at (%.2f, %.2f)", r.endX(), r.endY());
-            case WATER -> "in the water: one penalty stroke, back to where the stroke began";
-            case OUT -> "out of bounds: one penalty stroke, back to where the stroke began";
-            case TIMEOUT -> "still rolling after the time limit; it stays where it is";
-        };
+    /** Window coordinates (the cursor's) to framebuffer pixels. */
+    double[] toFramebuffer(double x, double y) {
+        int[] ww = new int[1], wh = new int[1];
+        glfwGetWindowSize(window.handle(), ww, wh);
+        double sx = (double) window.framebufferWidth() / Math.max(1, ww[0]);
+        double sy = (double) window.framebufferHeight() / Math.max(1, wh[0]);
+        return new double[]{x * sx, y * sy};
+    }
+
+    NuklearLayer uiLayer() {
+        return uiLayer;
+    }
+
+    Sounds sounds() {
+        return sounds;
+    }
+
+    /** Strokes scripted runs play per second of animation, per real second. */
+    double timeScale() {
+        return options.timeScale();
+    }
+
+    /** A scripted run (--frames): nobody is there to press "Next hole". */
+    boolean scripted() {
+        return options.frames() > 0;
     }
 
     void say(String text) {
-        message = text;
-        messageUntil = (window != null ? glfwGetTime() : 0) + 5;
+        toasts.say(text);
     }
 
-    // ---- Drawing ------------------------------------------------------------------------------
-
-    void buildScene() {
-        rebuildScene = false;
-        effects.clear(); // a new hole: the last one's confetti stays behind
-        cupDrop.clear();
-        if (renderer != null) renderer.close();
-        renderer = null;
-        renderer = new SceneRenderer(world.course(), world.terrain(),
-                settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, quality);
-        if (coursePath != null) renderer.setCourseFolder(coursePath.toAbsolutePath().getParent());
-        renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0); // FXAA only without MSAA
-        int fw = Math.max(1, window.framebufferWidth()), fh = Math.max(1, window.framebufferHeight());
-        camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) fw / fh);
-        camera.setClearance(minigolf.render.CameraClearance.of(world.course(), world.terrain()::height));
-        view.sceneBuilt();
-        window.setTitle("Minigolf - " + world.course().name());
+    /** GLFW's clock once the window is open, else 0. */
+    private double clock() {
+        return window != null ? glfwGetTime() : 0;
     }
 
-    /**
-     * Shows the aim (vx, vy) in m/s as if the player were dragging it, from the first frame a human
-     * player can aim (until a mouse release or right click): for screenshots of the arrow and the aim guide.
-     */
-    public void showAim(double vx, double vy, int loftDegrees) {
-        view.showAim(vx, vy);
-        input.loft = Loft.clamp(loftDegrees);
+    public UserSettings settings() {
+        return settings;
     }
 
-    /** The game or the round is over and its card is shown. */
-    boolean showsFinalCard() {
-        return screens.screen() == Screen.SCORECARD
-                || (screens.screen() == Screen.ROUND_CARD && round != null && round.isOver());
+    public Screens screens() {
+        return screens;
     }
 
-    boolean canAim() {
-        return screens.screen() == Screen.PLAYING && game != null && !game.isShotInFlight() && !game.isOver()
-                && !game.players().get(game.currentPlayer()).isBot();
+    /** The screen shown now. */
+    public Screen screen() {
+        return host.current();
     }
 
-    // ---- UiActions ----------------------------------------------------------------------------
-
-    private minigolf.physics.TrajectoryListener strokeSounds(boolean firstStroke) {
-        return StrokeFeedback.listener(sounds, firstStroke, effects, world);
+    private GameScreen current() {
+        return (GameScreen) host.current();
     }
 
-    /** A played stroke's sounds and effects, and the ball in the player's colour dropping into the cup. */
-    private minigolf.physics.TrajectoryListener strokeFeedback(boolean firstStroke, int seat) {
-        return StrokeFeedback.listener(sounds, firstStroke, effects, world, cupDrop, PlayerColors.of(seat));
+    /** Shows {@code s}; call on the render thread (a screen's button, or a test's loop hook). */
+    public void setScreen(Screen s) {
+        host.setScreen(s);
     }
 
-    @Override
-    public AudioSettings volumes() {
-        return files.volumes();
-    }
+    // ---- Where the screens lead ----------------------------------------------------------------
 
-    @Override
-    public void applyVolumes(AudioSettings v) {
-        if (sounds != null) sounds.setVolumes(v);
-        files.saveVolumes(v);
-    }
-
-    @Override
+    /** A game on the chosen course, or the chosen round, for these players. */
     public void startGame(List<Player> players) {
-        flow.startGame(players);
+        play.start(players, settings);
+        scene.resetCamera();
+        setScreen(screens.playing());
     }
 
-
-
-    @Override
-    public void nextHole() {
-        flow.nextHole();
+    /** Play ends; the main menu. */
+    public void toMainMenu() {
+        play.end();
+        setScreen(screens.mainMenu());
     }
 
-    @Override
-    public HighScores highScores() {
-        return files.highScores();
+    /** The Settings screen, going back to the screen shown now. */
+    public void openSettings() {
+        screens.settings().open(host.current());
+        setScreen(screens.settings());
     }
 
-    @Override
-    public void chooseRound(Round r) {
-        roundToPlay = r;
-        screens.show(Screen.NEW_GAME);
-    }
-
-    @Override
-    public void hit(double vx, double vy, double vz) {
-        if (game == null || game.isShotInFlight() || game.isOver()) return;
-        String problem = AimModel.checkTyped(vx, vy, vz, world.physics().maxSpeed());
-        if (problem != null) {
-            say(problem);
+    /** The help screen (F1), going back to the screen shown now; F1 again closes it. */
+    public void openHelp() {
+        if (host.current() == screens.help()) {
+            screens.help().close();
             return;
         }
-        boolean firstStroke = game.player(game.currentPlayer()).total() == 0;
-        animator = new StrokeAnimator(game.startShot(vx, vy, vz, strokeFeedback(firstStroke, game.currentPlayer())),
-                game.settings().dt());
-        StrokeFeedback.hit(sounds, Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
-        input.loft = 0; // the next stroke starts as a putt again
+        screens.help().open(host.current());
+        setScreen(screens.help());
     }
 
-    @Override
-    public void selectCourse(Path file) {
-        flow.selectCourse(file);
+    /** Plays the current hole's strokes again, exactly as played. */
+    public void watchReplay() {
+        Game game = play.game();
+        if (game == null || game.history().isEmpty() || game.isShotInFlight() || host.current() == screens.replay()) return;
+        screens.replay().start(HoleReplay.of(game), host.current());
     }
 
-    @Override
-    public void testBot(String bot) {
-        startGame(List.of(Player.bot(bot, bot)));
-        screens.show(Screen.TEST_BOT);
-        say("watching " + bot + " play; ESC stops");
+    /** Plays finished hole {@code hole} (0-based) of the round again, exactly as played (also after a load). */
+    public void watchHole(int hole) {
+        RoundGame round = play.round();
+        if (round == null || hole < 0 || hole >= round.holesFinished() || round.holeStrokes(hole).isEmpty()
+                || play.game().isShotInFlight() || host.current() == screens.replay()) return;
+        screens.replay().start(new HoleReplay(round.round().hole(hole).world(), play.game().settings(), round.holeStrokes(hole)),
+                host.current());
     }
 
-    @Override
-    public void cancelBot() {
-        if (botTurn != null) botTurn.cancel();
-        // A cancelled worker may still be ending: its bot must not be asked again.
-        botSeats.clear();
-    }
-
-    @Override
-    public void saveGame() {
-        if (game != null) files.save(game, round);
-    }
-
-    @Override
-    public void loadGame(Path file) {
-        flow.load(file);
-    }
-
-    @Override
+    /** Applies and keeps the player's settings: window size, full screen and graphics at once. */
     public void applySettings(UserSettings newSettings) {
         UserSettings old = settings;
         settings = newSettings;
@@ -514,35 +348,17 @@ public final class GameApp implements UiActions, UiView {
                 && (settings.windowWidth() != old.windowWidth() || settings.windowHeight() != old.windowHeight())) {
             glfwSetWindowSize(window.handle(), settings.windowWidth(), settings.windowHeight());
         }
-        if (!settings.graphics().equals(old.graphics())) {
-            quality = chosenQuality(settings); // multisampling stays as the window was made (next start)
-            rebuildScene = true;
-        }
-        if (renderer != null) renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0);
+        scene.applySettings(old, settings);
         files.saveSettings(settings);
     }
 
-    /** The renderer's quality now (for tests). */
-    public RenderQuality renderQuality() {
-        return quality;
+    void applyVolumes(AudioSettings v) {
+        if (sounds != null) sounds.setVolumes(v);
+        files.saveVolumes(v);
     }
 
-    /** The renderer's quality for the player's graphics setting: auto is what the probe found. */
-    private RenderQuality chosenQuality(UserSettings s) {
-        return switch (s.graphics()) {
-            case "high" -> RenderQuality.HIGH;
-            case "low" -> RenderQuality.SOFTWARE;
-            default -> autoQuality;
-        };
-    }
-
-    @Override
-    public void toMainMenu() {
-        flow.toMainMenu();
-    }
-
-    @Override
-    public void createCourse() {
+    /** Opens the course editor in its own window. */
+    void createCourse() {
         try {
             minigolf.editor.ui.ProcessLauncher.start("edit");
             say("the editor opens in its own window");
@@ -551,122 +367,80 @@ public final class GameApp implements UiActions, UiView {
         }
     }
 
-    @Override
-    public void quit() {
+    void quit() {
         window.requestClose();
     }
 
-    // ---- UiView -------------------------------------------------------------------------------
+    // ---- For the command line and tests ---------------------------------------------------------
 
-    @Override
-    public World world() {
-        return world;
+    /** Plays this round instead of a single course (before {@link #run()}: with the options' players it starts at once). */
+    public void playRound(Round r) {
+        play.chooseRound(r);
     }
 
-    @Override
+    /**
+     * Shows the aim (vx, vy) in m/s as if the player were dragging it, from the first frame a human
+     * player can aim (until a mouse release or right click): for screenshots of the arrow and the aim guide.
+     */
+    public void showAim(double vx, double vy, int loftDegrees) {
+        screens.playing().showAim(vx, vy, loftDegrees);
+    }
+
+    /** Sets what runs at the start of every pass of the render loop (for tests: resize, minimise, close). */
+    public void onLoopPass(BiConsumer<Integer, Window> hook) {
+        loopHook = hook;
+    }
+
+    /** The game being played, or null. */
     public Game game() {
-        return game;
+        return play.game();
     }
 
-    @Override
-    public RoundGame round() {
-        return round;
+    /** The round being played, or null. */
+    public RoundGame roundGame() {
+        return play.round();
     }
 
-    @Override
-    public Round chosenRound() {
-        return roundToPlay;
+    /** The course of the game being played or chosen (not a replayed hole's). */
+    public World world() {
+        return play.world();
     }
 
-    @Override
-    public List<RoundEntry> rounds() {
-        if (rounds == null) rounds = CourseFolders.rounds(store);
-        return rounds;
+    /** The course drawn now (a replayed hole's while it is watched). */
+    public World shownWorld() {
+        return scene.world();
     }
 
-    /** Exposed for tests: the screen shown now. */
-    public Screen screen() {
-        return screens.screen();
+    /** The renderer's quality now (for tests). */
+    public RenderQuality renderQuality() {
+        return scene.quality();
     }
 
-    /** Opens a screen as its button would (for tests and screenshots; call on the render thread, e.g. from a loop hook). */
-    public void showScreen(Screen s) {
-        screens.open(s, this);
+    public String notice() {
+        return toasts.notice();
     }
 
-    @Override
-    public BallReadout readout() {
-        if (game == null || game.currentPlayer() < 0) return null;
-        if (animator != null) {
-            return BallReadout.of(world, animator.x(), animator.y(), animator.vx(), animator.vy(), animator.ax(), animator.ay());
-        }
-        PlayerState s = game.player(game.currentPlayer());
-        return BallReadout.of(world, s.x(), s.y(), 0, 0, 0, 0);
+    public void dismissNotice() {
+        toasts.dismissNotice();
     }
 
-    @Override
-    public BotTurn botTurn() {
-        return botTurn;
+    public void saveGame() {
+        play.save();
     }
 
-    @Override
-    public float[] toScreen(double x, double y) {
-        if (camera == null || world == null) return null;
-        // A little above the ground, so the line is not hidden in the grass.
-        float z = (float) (world.terrain().height(x, y) + 0.03);
-        float[] p = camera.project(new Vector3f((float) x, (float) y, z), window.framebufferWidth(), window.framebufferHeight());
-        return uiLayer == null ? p : uiLayer.toInterface(p, window.framebufferWidth());
+    public void loadGame(Path file) {
+        if (!play.load(file)) return;
+        Game g = play.game();
+        if (play.round() != null) setScreen(g.isOver() ? screens.roundCard() : screens.playing());
+        else setScreen(g.isOver() ? screens.scorecard() : screens.playing());
     }
 
-    @Override
-    public UserSettings settings() {
-        return settings;
-    }
-
-    @Override
-    public void refreshCourses() {
-        courses = null;
-        rounds = null;
-    }
-
-    @Override
-    public List<CourseEntry> courses() {
-        if (courses == null) courses = CourseFolders.list(store);
-        return courses;
-    }
-
-    @Override
     public List<Path> savedGames() {
         return files.savedGames();
     }
 
-    @Override
-    public String notice() {
-        return notice;
-    }
-
-    @Override
-    public void dismissNotice() {
-        notice = null;
-    }
-
-    @Override
-    public String message() {
-        return message;
-    }
-
-    @Override
-    public double aimSpeed() {
-        return input.aiming && input.aimVelocity != null ? Math.hypot(input.aimVelocity[0], input.aimVelocity[1]) : -1;
-    }
-
-    @Override
-    public int loftDegrees() {
-        return input.loft;
-    }
-
-    @Override
-    public int thumbnail(CourseEntry course) {
-        return thumbnails.texture(course.file());
+    /** Strokes replayed by the last "Watch again" and how many ended elsewhere than in play (for tests). */
+    public int[] replayCounts() {
+        return screens.replay().counts();
     }
 }

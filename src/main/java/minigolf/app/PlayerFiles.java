@@ -62,6 +62,11 @@ final class PlayerFiles {
     }
 
     /** The settings as loaded at start (the defaults when the file was broken). */
+    /** Where the player's files are (the courses and rounds of his own are beside them). */
+    SettingsStore store() {
+        return store;
+    }
+
     UserSettings loadedSettings() {
         return loadedSettings;
     }

@@ -11,7 +11,6 @@ import minigolf.render.Framebuffer;
 import minigolf.render.OrbitCamera;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
-import minigolf.ui.UiView;
 
 import static org.lwjgl.opengl.GL11.*;
 import static org.lwjgl.opengl.GL12.GL_CLAMP_TO_EDGE;
@@ -32,8 +31,8 @@ final class Thumbnails implements AutoCloseable {
     }
 
     /** Renders the first course without a preview; leaves the default framebuffer bound. */
-    void renderNext(List<UiView.CourseEntry> courses, int width, int height) {
-        for (UiView.CourseEntry c : courses) {
+    void renderNext(List<CourseFolders.CourseEntry> courses, int width, int height) {
+        for (CourseFolders.CourseEntry c : courses) {
             if (textures.containsKey(c.file())) continue;
             textures.put(c.file(), render(c.file(), width, height));
             return;

@@ -19,7 +19,8 @@ import minigolf.render.NoOpenGlException;
         subcommands = {PlayCommand.class, SimulateCommand.class, BenchPhysicsCommand.class, BenchAccuracyCommand.class,
                 RenderCommand.class,
                 BenchRenderCommand.class, SolveCommand.class, ExperimentCommand.class, ExperimentMergeCommand.class,
-                EditCommand.class, BenchEditorCommand.class, BenchLimitsCommand.class})
+                EditCommand.class, BenchEditorCommand.class, BenchLimitsCommand.class, ServerCommand.class, BenchServerCommand.class,
+                JoinCommand.class})
 public final class MinigolfCommand implements Callable<Integer> {
 
     @Override

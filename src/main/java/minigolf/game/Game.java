@@ -39,6 +39,8 @@ public final class Game {
     private final int strokeLimit;
     private final List<PlayerState> states = new ArrayList<>();
     private final List<ShotRecord> history = new ArrayList<>();
+    /** Seats the turn passes over while another can play (an online player who dropped); not part of a save. */
+    private final boolean[] passedOver;
 
     private final NoiseModel noise;
     private final long noiseSeed;
@@ -76,6 +78,7 @@ public final class Game {
         this.noiseSeed = this.noise.isNone() ? 0 : noiseSeed;
         double sx = world.course().start().x(), sy = world.course().start().y();
         for (int i = 0; i < players.size(); i++) states.add(new PlayerState(sx, sy, 0, 0, PlayerStatus.PLAYING));
+        passedOver = new boolean[players.size()];
     }
 
     /** Rebuilds a game from saved state (see {@link GameState}); a stroke that was rolling starts again. */
@@ -144,16 +147,48 @@ public final class Game {
 
     /**
      * The seat whose turn it is: while a stroke rolls, its player; otherwise the playing player
-     * farthest from the hole (ties: fewer strokes, then lower seat). -1 when the game is over.
+     * farthest from the hole (ties: fewer strokes, then lower seat), passing over the seats of
+     * {@link #passOver} while any other seat can play. -1 when the game is over.
      */
     public int currentPlayer() {
         if (stroke != null) return strokePlayer;
+        int present = farthestPlaying(true);
+        return present >= 0 ? present : farthestPlaying(false);
+    }
+
+    /**
+     * Passes the turn over {@code seat} (on) or gives it back (off): an online player whose
+     * connection dropped is skipped while others can still play; when only passed-over seats are
+     * left, the turn is theirs again. Kept in memory only: a save or a restored game passes over nobody.
+     */
+    public void passOver(int seat, boolean on) {
+        passedOver[seat] = on;
+    }
+
+    public boolean isPassedOver(int seat) {
+        return passedOver[seat];
+    }
+
+    /**
+     * Picks up {@code seat}'s ball without a stroke (an online player gone for good): the seat
+     * scores the stroke limit plus one on this hole, as a player who reached the limit.
+     *
+     * @throws IllegalStateException if the seat's stroke is rolling or the seat is no longer playing
+     */
+    public void pickUp(int seat) {
+        if (stroke != null && strokePlayer == seat) throw new IllegalStateException("the seat's stroke is still rolling");
+        PlayerState s = states.get(seat);
+        if (!s.isPlaying()) throw new IllegalStateException("seat " + seat + " is no longer playing");
+        states.set(seat, new PlayerState(s.x(), s.y(), s.strokes(), s.penalties(), PlayerStatus.PICKED_UP));
+    }
+
+    private int farthestPlaying(boolean skipPassedOver) {
         double hx = world.hole().position().x(), hy = world.hole().position().y();
         int best = -1;
         double bestDistance = -1;
         for (int i = 0; i < states.size(); i++) {
             PlayerState s = states.get(i);
-            if (!s.isPlaying()) continue;
+            if (!s.isPlaying() || (skipPassedOver && passedOver[i])) continue;
             double d = Math.hypot(s.x() - hx, s.y() - hy);
             boolean farther = d > bestDistance + TIE_DISTANCE;
             boolean tie = !farther && d >= bestDistance - TIE_DISTANCE;

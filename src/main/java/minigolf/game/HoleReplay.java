@@ -31,6 +31,11 @@ public final class HoleReplay {
         return new HoleReplay(game.world(), game.settings(), game.history());
     }
 
+    /** The course the hole was played on. */
+    public World world() {
+        return world;
+    }
+
     public List<ShotRecord> shots() {
         return shots;
     }

@@ -16,7 +16,6 @@ import minigolf.game.ScoreLine;
 import minigolf.game.SettingsStore;
 import minigolf.physics.Outcome;
 import minigolf.physics.World;
-import minigolf.ui.Screen;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -52,7 +51,7 @@ class GameAppTest {
         GameApp app = new GameApp(flat, options);
         Game game = app.run();
 
-        assertEquals(Screen.SCORECARD, app.screen());
+        assertEquals(app.screens().scorecard(), app.screen());
         assertTrue(game.isOver());
         List<Outcome> outcomes = game.history().stream().map(r -> r.outcome()).toList();
         assertEquals(List.of(Outcome.STOPPED, Outcome.OUT, Outcome.HOLED, Outcome.HOLED), outcomes);

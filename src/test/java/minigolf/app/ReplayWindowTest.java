@@ -7,7 +7,6 @@ import java.util.List;
 import minigolf.game.Player;
 import minigolf.game.SettingsStore;
 import minigolf.physics.World;
-import minigolf.ui.Screen;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -29,11 +28,11 @@ class ReplayWindowTest {
         GameApp app = new GameApp(flat, options);
         boolean[] asked = {false}, sawReplay = {false};
         app.onLoopPass((pass, window) -> {
-            if (app.screen() == Screen.REPLAY) sawReplay[0] = true;
-            if (!asked[0] && app.screen() == Screen.SCORECARD) {
+            if (app.screen() == app.screens().replay()) sawReplay[0] = true;
+            if (!asked[0] && app.screen() == app.screens().scorecard()) {
                 asked[0] = true;
                 app.watchReplay();
-            } else if (asked[0] && app.screen() == Screen.SCORECARD) {
+            } else if (asked[0] && app.screen() == app.screens().scorecard()) {
                 window.requestClose();
             }
         });

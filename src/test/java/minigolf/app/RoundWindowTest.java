@@ -13,7 +13,6 @@ import minigolf.game.RoundLoader;
 import minigolf.game.RoundFilesTest;
 import minigolf.game.SettingsStore;
 import minigolf.render.Png;
-import minigolf.ui.Screen;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -45,12 +44,12 @@ class RoundWindowTest {
         boolean[] cardClearance = {false};
         app.onLoopPass((pass, window) -> {
             RoundGame rg = app.roundGame();
-            if (rg != null && app.screen() == Screen.ROUND_CARD && !rg.isOver()) sawCardBetween[0] = true;
-            if (app.screen() == Screen.PLAYING && app.camera != null && app.camera.clearance() != null) clearanceInPlay[0] = true;
-            if (rg != null && rg.isOver() && app.screen() == Screen.ROUND_CARD && app.camera != null) {
-                org.joml.Vector3f t = app.camera.target();
-                cardViews.add(new float[]{t.x, t.y, app.camera.yaw(), app.camera.screenShiftX(), app.camera.pitch()});
-                cardClearance[0] |= app.camera.clearance() != null;
+            if (rg != null && app.screen() == app.screens().roundCard() && !rg.isOver()) sawCardBetween[0] = true;
+            if (app.screen() == app.screens().playing() && app.scene().camera() != null && app.scene().camera().clearance() != null) clearanceInPlay[0] = true;
+            if (rg != null && rg.isOver() && app.screen() == app.screens().roundCard() && app.scene().camera() != null) {
+                org.joml.Vector3f t = app.scene().camera().target();
+                cardViews.add(new float[]{t.x, t.y, app.scene().camera().yaw(), app.scene().camera().screenShiftX(), app.scene().camera().pitch()});
+                cardClearance[0] |= app.scene().camera().clearance() != null;
             }
         });
         app.run();
@@ -58,7 +57,7 @@ class RoundWindowTest {
         RoundGame rg = app.roundGame();
         assertTrue(rg.isOver());
         assertTrue(sawCardBetween[0], "the card was shown between the holes");
-        assertEquals(Screen.ROUND_CARD, app.screen());
+        assertEquals(app.screens().roundCard(), app.screen());
         assertArrayEquals(new int[]{1}, rg.finishedScores()[0]);
         assertArrayEquals(new int[]{1}, rg.finishedScores()[1]);
         assertEquals(4, rg.scorecard().totalPar());
@@ -75,8 +74,8 @@ class RoundWindowTest {
         minigolf.course.Bounds b = full.hole(5).world().course().bounds();
         assertEquals(0.5 * (b.minX() + b.maxX()), last[0], 1e-4, "looking at the course's middle");
         assertEquals(0.5 * (b.minY() + b.maxY()), last[1], 1e-4);
-        assertEquals(GameView.CARD_SHIFT_X, last[3], 0, "the course shows right of the card");
-        assertEquals(GameView.CARD_PITCH, last[4], 1e-5);
+        assertEquals(CourseScene.CARD_SHIFT_X, last[3], 0, "the course shows right of the card");
+        assertEquals(CourseScene.CARD_PITCH, last[4], 1e-5);
         assertTrue(last[2] != before[2], "the view turns: yaw " + before[2] + " -> " + last[2]);
         assertFalse(cardClearance[0], "no clearance pulls the overview into the crowns round the middle");
 
@@ -87,7 +86,7 @@ class RoundWindowTest {
             if (pass == 0) help.openHelp();
         });
         help.run();
-        assertEquals(Screen.HELP, help.screen());
+        assertEquals(help.screens().help(), help.screen());
         assertTrue(Files.size(shots.resolve("help.png")) > 10_000);
     }
 }

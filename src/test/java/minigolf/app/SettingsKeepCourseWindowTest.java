@@ -13,7 +13,6 @@ import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.Simulator;
 import minigolf.physics.World;
-import minigolf.ui.Screen;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.io.TempDir;
@@ -41,7 +40,7 @@ class SettingsKeepCourseWindowTest {
 
     private static Seen seen(GameApp app) {
         World played = app.game().world();
-        return new Seen(app.renderer.obstaclesPass().obstacles(), app.world().course().obstacles(),
+        return new Seen(app.scene().renderer().obstaclesPass().obstacles(), app.world().course().obstacles(),
                 played.obstacles() != null, wallShot(played));
     }
 
@@ -58,8 +57,8 @@ class SettingsKeepCourseWindowTest {
         app.onLoopPass((pass, window) -> {
             switch (pass) {
                 case 4 -> seen[0] = seen(app);
-                case 5 -> app.showScreen(Screen.SETTINGS);
-                case 8 -> app.screens.applySettingsForm(app); // "Apply" with nothing changed
+                case 5 -> app.openSettings();
+                case 8 -> app.screens().settings().apply(); // "Apply" with nothing changed
                 case 12 -> seen[1] = seen(app);
                 case 13 -> app.startGame(List.of(Player.human("Ann"))); // the next game on this course
                 case 16 -> seen[2] = seen(app);
@@ -67,7 +66,7 @@ class SettingsKeepCourseWindowTest {
             }
         });
         app.run();
-        assertSame(Screen.PLAYING, app.screen(), "Apply went back to the hole");
+        assertSame(app.screens().playing(), app.screen(), "Apply went back to the hole");
         String[] when = {"before Apply", "after Apply", "in the next game"};
         for (int i = 0; i < seen.length; i++) {
             Seen s = seen[i];

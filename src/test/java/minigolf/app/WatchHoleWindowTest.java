@@ -12,7 +12,6 @@ import minigolf.game.SettingsStore;
 import minigolf.physics.Outcome;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
-import minigolf.ui.Screen;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -53,13 +52,13 @@ class WatchHoleWindowTest {
             if (step[0] == 0 && pass > 2) {
                 app.loadGame(file);
                 step[0] = 1;
-            } else if (step[0] == 1 && app.screen() == Screen.PLAYING && app.roundGame() != null) {
+            } else if (step[0] == 1 && app.screen() == app.screens().playing() && app.roundGame() != null) {
                 app.watchHole(0);
                 step[0] = 2;
-            } else if (step[0] == 2 && app.screen() == Screen.REPLAY) {
+            } else if (step[0] == 2 && app.screen() == app.screens().replay()) {
                 sawReplay[0] = true;
-                replayedCourse[0] = app.world().course().name();
-            } else if (step[0] == 2 && sawReplay[0] && app.screen() == Screen.PLAYING) {
+                replayedCourse[0] = app.shownWorld().course().name();
+            } else if (step[0] == 2 && sawReplay[0] && app.screen() == app.screens().playing()) {
                 window.requestClose();
             }
         });

@@ -25,11 +25,12 @@ import minigolf.game.UserSettings;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import minigolf.render.OrbitCamera;
-import minigolf.render.Png;
 import minigolf.render.RenderQuality;
 import minigolf.render.SceneRenderer;
 import minigolf.render.TerrainMesh;
 import minigolf.render.Window;
+import minigolf.render.WindowApp;
+import minigolf.render.WindowLoop;
 import minigolf.ui.Gui;
 import minigolf.ui.GuiDrawList;
 import minigolf.ui.GuiInt;
@@ -47,7 +48,7 @@ import static org.lwjgl.opengl.GL11.*;
  * Camera (the game's scheme, minigolf.ui.CameraDrag): right drag or Ctrl + left drag turns, Shift + right drag, middle drag
  * or Ctrl + Shift + left drag pans, the wheel zooms; the left button uses the tool.
  */
-public final class EditorApp {
+public final class EditorApp implements WindowApp {
     /**
      * How the editor is started.
      *
@@ -91,6 +92,9 @@ public final class EditorApp {
     int selected = -1;
     int selectedZone = -1;
     float time;
+    /** The loop's clock at this pass (autosave and validation pace themselves by it). */
+    private double now;
+    private int framesDrawn, keysPlayed;
 
     public EditorApp(CourseEditor editor, Options options) {
         this.editor = editor;
@@ -132,7 +136,7 @@ public final class EditorApp {
                 }
                 try {
                     buildScene();
-                    loop();
+                    new WindowLoop(window, this).screenshot(options.screenshot()).run();
                 } finally {
                     if (botCheck != null) botCheck.cancel();
                     if (renderer != null) renderer.close();
@@ -145,41 +149,30 @@ public final class EditorApp {
         return editor;
     }
 
-    private void loop() {
-        double start = glfwGetTime();
-        int frame = 0;
-        while (!window.shouldClose()) {
-            double now = glfwGetTime();
-            time = (float) (now - start);
-            window.pollEvents();
-            if (frame < options.scriptedKeys().size()) {
-                int[] k = options.scriptedKeys().get(frame);
-                input.onKey(k[0], k[1]);
-            }
-            int fw = window.framebufferWidth(), fh = window.framebufferHeight();
-            if (fw <= 0 || fh <= 0 || window.isIconified()) {
-                sleep(50);
-                continue;
-            }
-            applyChanges(now);
-            autosave(now);
-            drawFrame(fw, fh);
-            frame++;
-            if (options.frames() > 0 && frame >= Math.max(options.frames(), options.scriptedKeys().size() + 1)) {
-                if (options.screenshot() != null) Png.saveBackBuffer(options.screenshot(), fw, fh);
-                window.swapBuffers();
-                break;
-            }
-            window.swapBuffers();
+    // ---- The window loop (minigolf.render.WindowLoop, shared with the game) ---------------------
+
+    @Override
+    public void update(double elapsed, double now) {
+        this.now = now;
+        // One scripted key a drawn frame, from the first, through the keyboard's path.
+        if (keysPlayed < options.scriptedKeys().size() && keysPlayed <= framesDrawn) {
+            int[] k = options.scriptedKeys().get(keysPlayed++);
+            input.onKey(k[0], k[1]);
         }
     }
 
-    private static void sleep(long millis) {
-        try {
-            Thread.sleep(millis);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+    @Override
+    public void render(int fw, int fh, float time) {
+        this.time = time;
+        applyChanges(now);
+        autosave(now);
+        drawFrame(fw, fh);
+        framesDrawn++;
+    }
+
+    @Override
+    public boolean finished(int frames) {
+        return options.frames() > 0 && frames >= Math.max(options.frames(), options.scriptedKeys().size() + 1);
     }
 
     void say(String text) {

@@ -1,18 +1,27 @@
-package minigolf.ui;
+package minigolf.app;
 
+import minigolf.game.AudioSettings;
 import minigolf.game.Game;
 import minigolf.game.UserSettings;
 import minigolf.physics.Integrator;
+import minigolf.ui.Gui;
+import minigolf.ui.GuiBool;
+import minigolf.ui.GuiInt;
+import minigolf.ui.Panels;
+import minigolf.ui.Screen;
+
+import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
 
 /**
  * The Settings screen: window, graphics, sound, mouse, the game's rules and the Advanced physics;
  * applied together, checked first. The course itself is never changed here (its values belong to
  * the course file and the editor): Apply once rebuilt the course and lost its obstacles.
  */
-final class SettingsScreen {
-    private final Screens screens;
+final class SettingsScreen extends GameScreen {
     private static final String[] INTEGRATORS = {"euler", "rk2", "rk4"};
-    private Screen settingsReturn = Screen.MAIN_MENU;
+    /** Where Apply and Cancel go back to. */
+    private Screen back;
+    private String formError;
     private final GuiInt integrator = new GuiInt(2);
     private final GuiInt stepsPerSecond = new GuiInt(60);
     private final GuiBool vsync = new GuiBool(true);
@@ -33,12 +42,15 @@ final class SettingsScreen {
     private static final String[] GRAPHICS_LABELS = {"Auto", "High", "Low"};
     private final float[] masterVolume = {0.8f}, effectsVolume = {1f}, ambienceVolume = {0.35f};
 
-    SettingsScreen(Screens screens) {
-        this.screens = screens;
+    SettingsScreen(GameApp app) {
+        super(app);
     }
 
-    void openSettings(UiView view, Screen returnTo) {
-        UserSettings s = view.settings();
+    /** Fills the form from the settings in use; Apply and Cancel go back to {@code returnTo}. */
+    void open(Screen returnTo) {
+        back = returnTo;
+        formError = null;
+        UserSettings s = app.settings();
         integrator.set(s.integrator().ordinal());
         stepsPerSecond.set((int) Math.round(1 / s.dt()));
         vsync.set(s.vsync());
@@ -60,16 +72,16 @@ final class SettingsScreen {
             at = SIZES.length;
         }
         windowSize.set(at);
-        masterVolume[0] = (float) view.volumes().master();
-        effectsVolume[0] = (float) view.volumes().effects();
-        ambienceVolume[0] = (float) view.volumes().ambience();
-        settingsReturn = returnTo;
-        screens.show(Screen.SETTINGS);
+        AudioSettings volumes = app.files().volumes();
+        masterVolume[0] = (float) volumes.master();
+        effectsVolume[0] = (float) volumes.effects();
+        ambienceVolume[0] = (float) volumes.ambience();
     }
 
-    void settings(UiView view, float w, float h) {
-        screens.centre(w, h);
-        Gui.begin("Settings", Screens.PANEL);
+    @Override
+    public void render(float w, float h) {
+        Panels.centre(w, h);
+        Gui.begin("Settings", Panels.PANEL);
         Gui.textColored(1f, 0.85f, 0.3f, 1f, "Game (kept in your config folder)");
         Gui.inputInt("Stroke limit", strokeLimit);
         Gui.sameLine(); // pairs on a row: the form fits a 720-pixel-high window
@@ -108,18 +120,25 @@ final class SettingsScreen {
             Gui.inputInt("Steps per second", stepsPerSecond);
         }
         Gui.separator();
-        if (screens.formError != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, screens.formError);
-        if (Gui.button("Apply")) apply(view);
+        if (formError != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, formError);
+        if (Gui.button("Apply")) apply();
         Gui.sameLine();
-        if (Gui.button("Cancel")) screens.show(settingsReturn);
+        if (Gui.button("Cancel")) app.setScreen(back);
         Gui.end();
     }
 
+    @Override
+    public boolean keyPressed(int key, int mods) {
+        if (key != GLFW_KEY_ESCAPE) return false;
+        app.setScreen(back);
+        return true;
+    }
+
     /** What "Apply" does: the form checked, applied and saved, and back to where Settings was opened. */
-    void apply(UiView view) {
+    void apply() {
         try {
             int sps = stepsPerSecond.get();
-            UserSettings s = view.settings().withIntegrator(Integrator.values()[integrator.get()])
+            UserSettings s = app.settings().withIntegrator(Integrator.values()[integrator.get()])
                     .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
                     .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
                     .withHideFrictionFromBots(hideFriction.get())
@@ -132,12 +151,12 @@ final class SettingsScreen {
                 s = realistic.get() ? s.withNoise(UserSettings.REALISTIC_POSITION, UserSettings.REALISTIC_VELOCITY)
                         : s.withNoise(0, 0);
             }
-            screens.actions.applySettings(s);
-            screens.actions.applyVolumes(new minigolf.game.AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
-            screens.formError = null;
-            screens.show(settingsReturn);
+            app.applySettings(s);
+            app.applyVolumes(new AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
+            formError = null;
+            app.setScreen(back);
         } catch (IllegalArgumentException e) {
-            screens.formError = e.getMessage();
+            formError = e.getMessage();
         }
     }
 }

@@ -1,0 +1,108 @@
+package minigolf.app;
+
+import java.util.Locale;
+import minigolf.game.BallReadout;
+import minigolf.game.BotTurn;
+import minigolf.game.Game;
+import minigolf.game.Loft;
+import minigolf.game.Player;
+import minigolf.game.PlayerState;
+import minigolf.game.PlayerStatus;
+import minigolf.game.RoundGame;
+import minigolf.game.StrokeAnimator;
+import minigolf.physics.World;
+import minigolf.ui.Gui;
+import minigolf.ui.GuiBool;
+import minigolf.ui.GuiCond;
+import minigolf.ui.GuiTableFlags;
+import minigolf.ui.GuiWindowFlags;
+import minigolf.ui.PlanOverlay;
+import minigolf.ui.PlayerColors;
+
+/**
+ * The HUD while a game is on, over the playing screen and the screens opened from it: the round,
+ * hole and par, whose turn, every player's strokes, the power while aiming, the loft, a details
+ * readout (position, velocity, acceleration, slope, friction), and a bot's progress with Cancel.
+ */
+final class Hud {
+    private final GameApp app;
+    /** The physics readout: off unless asked for. */
+    private final GuiBool details = new GuiBool(false);
+
+    Hud(GameApp app) {
+        this.app = app;
+    }
+
+    /** Draws the HUD; {@code aimSpeed} in m/s while an aim is dragged, else negative. */
+    void render(float w, float h, double aimSpeed, int loftDegrees) {
+        PlaySession play = app.play();
+        Game g = play.game();
+        Gui.setNextWindowPos(12, 12, GuiCond.Always);
+        Gui.begin("##hud", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
+        RoundGame rg = play.round();
+        if (rg != null) {
+            Gui.textColored(0.6f, 0.9f, 1f, 1f, String.format(Locale.ROOT, "%s  -  hole %d of %d  -  par %d",
+                    rg.round().name(), rg.holeIndex() + 1, rg.round().size(), rg.hole().par()));
+        }
+        if (g != null) {
+            int cur = g.currentPlayer();
+            if (cur >= 0) {
+                Player p = g.players().get(cur);
+                Gui.textColored(1f, 0.85f, 0.3f, 1f, p.name() + (p.isBot() ? " (bot: " + p.bot() + ")" : "") + " to play");
+            }
+            Gui.beginTable("##players", 2, GuiTableFlags.SizingFixedFit); // names of any width line up
+            for (int i = 0; i < g.players().size(); i++) {
+                PlayerState s = g.player(i);
+                float[] c = PlayerColors.of(i);
+                Gui.tableNextRow();
+                Gui.tableSetColumnIndex(0);
+                Gui.textColored(c[0], c[1], c[2], 1f, g.players().get(i).name());
+                Gui.tableSetColumnIndex(1);
+                Gui.text(String.format(Locale.ROOT, "strokes %d%s%s%s", s.total(),
+                        rg != null ? " (par " + rg.hole().par() + ")" : "",
+                        s.penalties() > 0 ? " (" + s.penalties() + " penalty)" : "",
+                        s.status() == PlayerStatus.PLAYING ? "" : ", " + s.status().jsonName()));
+            }
+            Gui.endTable();
+        }
+        if (aimSpeed >= 0 && g != null) {
+            double max = play.world().physics().maxSpeed();
+            Gui.progressBar((float) (aimSpeed / max), 260, 0, String.format(Locale.ROOT, "power %.0f%%", 100 * aimSpeed / max));
+        }
+        if (g != null && !g.isOver()) Gui.text(Loft.describe(loftDegrees) + "   (wheel while aiming, Up/Down)");
+        if (g != null) Gui.checkbox("details", details);
+        BallReadout r = details.get() ? readout() : null;
+        if (r != null) {
+            Gui.separator();
+            Gui.text(String.format(Locale.ROOT, "position  (%.3f, %.3f, %.3f) m", r.x(), r.y(), r.z()));
+            Gui.text(String.format(Locale.ROOT, "velocity  (%.3f, %.3f) m/s  |v| %.3f", r.vx(), r.vy(), r.speed()));
+            Gui.text(String.format(Locale.ROOT, "accel.    (%.3f, %.3f) m/s^2  |a| %.3f", r.ax(), r.ay(), r.acceleration()));
+            Gui.text(String.format(Locale.ROOT, "slope     %.3f (%.1f deg)", r.slope(), r.slopeDegrees()));
+            Gui.text(String.format(Locale.ROOT, "friction  mu_k %.3f  mu_s %.3f", r.kineticFriction(), r.staticFriction()));
+        }
+        Gui.end();
+
+        BotTurn bot = play.botTurn();
+        if (bot != null) {
+            PlanOverlay.draw(Gui.getBackgroundDrawList(), bot.plan(), p -> app.toScreen(p[0], p[1]));
+            Gui.setNextWindowPos(w * 0.5f, h - 60, GuiCond.Always, 0.5f, 1f);
+            Gui.begin("##bot", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
+            Gui.text("Bot thinking: " + bot.message());
+            Gui.progressBar((float) bot.progress(), 320, 0);
+            Gui.sameLine();
+            if (Gui.button("Cancel")) play.cancelBot();
+            Gui.end();
+        }
+    }
+
+    /** The ball under the HUD: the rolling one, else the current player's. */
+    private BallReadout readout() {
+        Game game = app.play().game();
+        if (game == null || game.currentPlayer() < 0) return null;
+        World world = app.play().world();
+        StrokeAnimator a = app.play().animator();
+        if (a != null) return BallReadout.of(world, a.x(), a.y(), a.vx(), a.vy(), a.ax(), a.ay());
+        PlayerState s = game.player(game.currentPlayer());
+        return BallReadout.of(world, s.x(), s.y(), 0, 0, 0, 0);
+    }
+}

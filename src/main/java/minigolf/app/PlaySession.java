@@ -1,0 +1,314 @@
+package minigolf.app;
+
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
+import minigolf.course.CourseException;
+import minigolf.game.AimModel;
+import minigolf.game.BotConditions;
+import minigolf.game.BotSeats;
+import minigolf.game.BotTurn;
+import minigolf.game.Game;
+import minigolf.game.Player;
+import minigolf.game.PlayerState;
+import minigolf.game.Round;
+import minigolf.game.RoundGame;
+import minigolf.game.SaveGameException;
+import minigolf.game.SavedGames;
+import minigolf.game.SavedRounds;
+import minigolf.game.ShotPlanner;
+import minigolf.game.ShotRecord;
+import minigolf.game.StrokeAnimator;
+import minigolf.game.UserSettings;
+import minigolf.physics.TrajectoryListener;
+import minigolf.physics.World;
+
+/**
+ * What is being played and how it goes on, without a window: the course or round chosen, the game
+ * and the round, the stroke rolling (animated at the fixed physics step), the bot thinking on its
+ * worker thread, and strokes scripted by the command line. Screens start, advance and end play
+ * through it; each change stops a thinking bot first.
+ */
+final class PlaySession {
+    /** What a pass of {@link #advance} brought. */
+    enum Progress {
+        NONE,
+        /** A stroke came to rest ({@link #lastStroke()}); the game goes on. */
+        STROKE_ENDED,
+        /** The hole, or the single game, is over: its card is due. */
+        OVER,
+        /** The player cancelled the bot's turn. */
+        CANCELLED
+    }
+
+    /** The sounds and effects of a stroke, from the window (none in tests without one). */
+    interface Feedback {
+        TrajectoryListener stroke(World world, boolean firstStroke, int seat);
+
+        void hit(double speed, double maxSpeed);
+    }
+
+    private final PlayerFiles files;
+    private final Consumer<String> say;
+    private final Deque<double[]> script;
+    private Feedback feedback;
+    /** The course shown and played next: the chosen course, or the round's hole. */
+    private World world;
+    private Path coursePath;
+    /** The round the next game plays (chosen in the menu), or null for the chosen course. */
+    private Round roundToPlay;
+    private RoundGame round;
+    private Game game;
+    private StrokeAnimator animator;
+    private BotTurn botTurn;
+    /** One bot per player per hole, so the planner's memory lasts across its strokes. */
+    private final BotSeats botSeats = new BotSeats();
+    private ShotRecord lastStroke;
+
+    PlaySession(World world, Path coursePath, List<double[]> script, PlayerFiles files, Consumer<String> say) {
+        this.world = world;
+        this.coursePath = coursePath;
+        this.script = new ArrayDeque<>(script);
+        this.files = files;
+        this.say = say;
+    }
+
+    void setFeedback(Feedback f) {
+        feedback = f;
+    }
+
+    World world() {
+        return world;
+    }
+
+    /** The course file being played (its folder holds the models' colours), or null. */
+    Path coursePath() {
+        return coursePath;
+    }
+
+    Game game() {
+        return game;
+    }
+
+    /** The round being played, or null (a single course). */
+    RoundGame round() {
+        return round;
+    }
+
+    /** The round the next game plays, or null (the chosen course). */
+    Round chosenRound() {
+        return roundToPlay;
+    }
+
+    void chooseRound(Round r) {
+        roundToPlay = r;
+    }
+
+    StrokeAnimator animator() {
+        return animator;
+    }
+
+    BotTurn botTurn() {
+        return botTurn;
+    }
+
+    /** The stroke that ended last. */
+    ShotRecord lastStroke() {
+        return lastStroke;
+    }
+
+    /** A human player is to play and no ball rolls. */
+    boolean humanToPlay() {
+        return game != null && !game.isShotInFlight() && !game.isOver() && game.currentPlayer() >= 0
+                && !game.players().get(game.currentPlayer()).isBot();
+    }
+
+    /** A game or a hole of a round for these players: the chosen round, else the chosen course. */
+    void start(List<Player> players, UserSettings s) {
+        stopPlay();
+        if (roundToPlay != null) {
+            round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
+            showHole();
+            say.accept(roundToPlay.name() + ", hole 1 of " + roundToPlay.size() + " (par " + roundToPlay.hole(0).par() + "): "
+                    + players.get(0).name() + " tees off.");
+            return;
+        }
+        round = null;
+        // The "realistic" noise, drawn from a new seed each game (saved with the game, so a resumed game goes on alike).
+        game = new Game(world, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
+        say.accept(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
+    }
+
+    /** The round's next hole; false after the last (its final card is due). */
+    boolean nextHole() {
+        if (round == null) return false;
+        if (round.isHoleOver()) files.recordScores(round, round.finishHole());
+        if (!round.nextHole()) return false;
+        stopPlay();
+        showHole();
+        say.accept("Hole " + (round.holeIndex() + 1) + " of " + round.round().size() + ": " + world.course().name()
+                + ", par " + round.hole().par());
+        return true;
+    }
+
+    /** Plays a course file from now on (single games); a broken file changes nothing. */
+    void selectCourse(Path file) throws CourseException {
+        World w = World.load(file);
+        stopPlay();
+        world = w;
+        coursePath = file;
+        roundToPlay = null;
+        round = null;
+        game = null;
+        say.accept("course: " + world.course().name());
+    }
+
+    /** Resumes a saved round or game where it was left, a stroke in flight included; false (and said why) when it cannot. */
+    boolean load(Path file) {
+        try {
+            SavedRounds.AnySave save = SavedRounds.loadAny(file);
+            stopPlay();
+            if (save.round() != null) {
+                round = save.round();
+                roundToPlay = round.round();
+                showHole();
+                resumeStroke();
+                say.accept("loaded " + file.getFileName() + ": " + round.round().name() + ", hole " + (round.holeIndex() + 1));
+                return true;
+            }
+            SavedGames.Loaded loaded = save.game();
+            round = null;
+            world = loaded.world();
+            coursePath = null;
+            game = loaded.resume();
+            resumeStroke();
+            say.accept("loaded " + file.getFileName());
+            return true;
+        } catch (SaveGameException e) {
+            say.accept(e.getMessage());
+            return false;
+        }
+    }
+
+    void save() {
+        if (game != null) files.save(game, round);
+    }
+
+    /** Play ends (back to the menu): the bot stops, nothing is in play. */
+    void end() {
+        stopPlay();
+        game = null;
+        round = null;
+    }
+
+    /** Hits the current player's ball: vz = 0 is a putt, vz &gt; 0 a chip. A refused velocity is said. */
+    void hit(double vx, double vy, double vz) {
+        if (game == null || game.isShotInFlight() || game.isOver()) return;
+        String problem = AimModel.checkTyped(vx, vy, vz, world.physics().maxSpeed());
+        if (problem != null) {
+            say.accept(problem);
+            return;
+        }
+        int seat = game.currentPlayer();
+        boolean firstStroke = game.player(seat).total() == 0;
+        TrajectoryListener listener = feedback == null ? null : feedback.stroke(game.world(), firstStroke, seat);
+        animator = new StrokeAnimator(game.startShot(vx, vy, vz, listener), game.settings().dt());
+        if (feedback != null) feedback.hit(Math.sqrt(vx * vx + vy * vy + vz * vz), world.physics().maxSpeed());
+    }
+
+    /** Runs the rolling stroke to its end at once (SPACE): the same stroke, no animation. */
+    void skipAnimation() {
+        if (animator == null) return;
+        while (!animator.isFinished()) animator.advance(1e9, 1);
+    }
+
+    /**
+     * One pass of play: the rolling ball moves on by {@code elapsed} seconds (times {@code timeScale}),
+     * a stroke that ends is scored, then the player to play is served: a bot is asked (on its worker
+     * thread) or its answer hit, a scripted stroke is hit.
+     */
+    Progress advance(double elapsed, double timeScale, boolean hideFrictionFromBots) {
+        if (game == null) return Progress.NONE;
+        Progress progress = Progress.NONE;
+        if (animator != null) {
+            animator.advance(elapsed, timeScale);
+            if (animator.isFinished()) {
+                lastStroke = game.completeShot();
+                animator = null;
+                say.accept(game.players().get(lastStroke.player()).name() + ": " + describe(lastStroke));
+                if (game.isOver()) {
+                    if (round != null) files.recordScores(round, round.finishHole());
+                    return Progress.OVER;
+                }
+                progress = Progress.STROKE_ENDED;
+            }
+        }
+        if (game.isShotInFlight() || game.isOver()) return progress;
+        int seat = game.currentPlayer();
+        Player p = game.players().get(seat);
+        if (p.isBot()) {
+            if (botTurn == null) {
+                ShotPlanner planner = botSeats.planner(seat, p.bot(), game.world());
+                if (planner == null) {
+                    say.accept("no bot named " + p.bot() + "; " + p.name() + " cannot play");
+                    return progress;
+                }
+                PlayerState s = game.player(seat);
+                botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
+                        31L * game.history().size() + seat, BotConditions.of(game, seat, hideFrictionFromBots));
+            } else if (botTurn.isDone()) {
+                BotTurn done = botTurn;
+                botTurn = null;
+                if (done.shot() != null) {
+                    hit(done.shot()[0], done.shot()[1], done.shot()[2]);
+                } else {
+                    say.accept(p.name() + ": " + done.failure());
+                    if ("cancelled".equals(done.failure())) return Progress.CANCELLED;
+                }
+            }
+        } else if (!script.isEmpty()) {
+            double[] v = script.poll();
+            hit(v[0], v[1], v.length > 2 ? v[2] : 0);
+        }
+        return progress;
+    }
+
+    /** Stops the bot thinking now (its Cancel button); the bots of this hole are asked afresh. */
+    void cancelBot() {
+        if (botTurn != null) botTurn.cancel();
+        // A cancelled worker may still be ending: its bot must not be asked again.
+        botSeats.clear();
+    }
+
+    private static String describe(ShotRecord r) {
+        return switch (r.outcome()) {
+            case HOLED -> "in the hole!";
+            case STOPPED -> String.format(Locale.ROOT, "stopped at (%.2f, %.2f)", r.endX(), r.endY());
+            case WATER -> "in the water: one penalty stroke, back to where the stroke began";
+            case OUT -> "out of bounds: one penalty stroke, back to where the stroke began";
+            case TIMEOUT -> "still rolling after the time limit; it stays where it is";
+        };
+    }
+
+    /** The round's current hole is what is played and shown. */
+    private void showHole() {
+        game = round.game();
+        world = game.world();
+        coursePath = null;
+    }
+
+    /** A saved stroke still rolling goes on rolling. */
+    private void resumeStroke() {
+        animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
+    }
+
+    /** The bot thinking now stops and the rolling animation is dropped. */
+    private void stopPlay() {
+        cancelBot();
+        botTurn = null;
+        animator = null;
+    }
+}

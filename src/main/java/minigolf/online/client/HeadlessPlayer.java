@@ -1,0 +1,262 @@
+package minigolf.online.client;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.net.URI;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import minigolf.game.BotCatalog;
+import minigolf.game.BotConditions;
+import minigolf.game.BotControl;
+import minigolf.game.Game;
+import minigolf.game.Loft;
+import minigolf.game.PlayerState;
+import minigolf.game.RoundScorecard;
+import minigolf.game.ShotPlanner;
+import minigolf.io.AtomicFile;
+import minigolf.online.ClientMessage;
+import minigolf.online.Json;
+import minigolf.online.Protocol;
+import minigolf.online.ProtocolException;
+
+/**
+ * A client without a window that plays one seat with a bot to the end of the round: the
+ * {@code minigolf join} command and the load benchmark's simulated players. It creates a room (and
+ * reports its code), joins one, or resumes a seat from its seat file; a dropped connection is
+ * reconnected and the seat resumed with its token. Everything happens on the thread that calls
+ * {@link #run()}.
+ */
+public final class HeadlessPlayer {
+    /**
+     * What to do. Exactly one of {@code create} (a course or round name) and {@code room} is given,
+     * unless {@code seatFile} already holds a seat, which is then resumed.
+     *
+     * @param thinkMillis a pause before each shot (the benchmark's human-like pace; 0 for none)
+     */
+    public record Options(URI server, String create, int seats, List<String> serverBots, boolean listed, String room,
+                          String name, String level, Path seatFile, long thinkMillis) {
+    }
+
+    /** Hooks for the benchmark: a shot sent (with the room's event count) and its stroke received. */
+    public interface Timing {
+        void shotSent(long seq, long nanos);
+
+        void strokeReceived(long seq, int seat, long nanos);
+    }
+
+    /** Connection retries: the first after 0.25 s, doubling to 8 s, for at most this long in all. */
+    static final Duration RECONNECT_FOR = Duration.ofMinutes(5);
+
+    private final Options options;
+    private final Consumer<String> out;
+    private final Consumer<String> log;
+    private final Timing timing;
+    private final BlockingQueue<Object> inbox = new LinkedBlockingQueue<>();
+    private final RoomMirror mirror = new RoomMirror();
+    private OnlineClient client;
+    private boolean printedRoom;
+    /** The seat came from the seat file: the room's code was printed by the run that created it. */
+    private boolean resumed;
+    private long shotAt = -1;
+
+    public HeadlessPlayer(Options options, Consumer<String> out, Consumer<String> log, Timing timing) {
+        this.options = options;
+        this.out = out;
+        this.log = log;
+        this.timing = timing;
+    }
+
+    /** Why the player stopped early: one line for the user. */
+    public static final class Failure extends Exception {
+        public Failure(String message) {
+            super(message);
+        }
+    }
+
+    private record Closed(String reason) {
+    }
+
+    /** Plays to the end of the round and prints the scorecard; the room's code first when it created the room. */
+    public void run() throws Failure, InterruptedException {
+        SeatFile saved = SeatFile.read(options.seatFile());
+        connect(true);
+        resumed = saved != null;
+        if (saved != null) {
+            client.send(new ClientMessage.Resume(saved.room(), saved.token()));
+        } else if (options.create() != null) {
+            client.send(new ClientMessage.Create(options.name(), options.create(), options.seats(), options.serverBots(),
+                    options.listed(), Game.DEFAULT_STROKE_LIMIT));
+        } else {
+            client.send(new ClientMessage.Join(options.room(), options.name()));
+        }
+        while (true) {
+            Object item = inbox.poll(30, TimeUnit.SECONDS);
+            if (item == null) {
+                client.send(new ClientMessage.Ping());
+                continue;
+            }
+            if (item instanceof Closed c) {
+                if (mirror.token() == null && saved == null) throw new Failure(c.reason());
+                reconnect(c.reason(), saved);
+                continue;
+            }
+            ObjectNode m = (ObjectNode) item;
+            RoomMirror.Update u = mirror.apply(m);
+            switch (u.change()) {
+                case JOINED -> joined();
+                case ERROR -> error(u);
+                case OUT_OF_STEP -> client.send(new ClientMessage.Sync());
+                case EVENT -> {
+                    if (timing != null) timing.strokeReceived(u.event().seq(), u.event().seat(), System.nanoTime());
+                }
+                case NOTICE, CHAT -> log.accept(u.text());
+                default -> {
+                }
+            }
+            if ("finished".equals(mirror.status()) && mirror.round() != null && mirror.round().isOver()) {
+                out.accept(Json.write(scorecard(mirror)));
+                client.close();
+                return;
+            }
+            if (mirror.isMyTurn() && shotAt != mirror.seq() && inbox.isEmpty()) shoot();
+        }
+    }
+
+    private void joined() {
+        if (!printedRoom && options.create() != null && !resumed) {
+            out.accept("{\"room\": \"" + mirror.room() + "\"}");
+        }
+        printedRoom = true;
+        if (mirror.token() != null && options.seatFile() != null) {
+            SeatFile.write(options.seatFile(), new SeatFile(mirror.room(), mirror.seat(), mirror.token()), log);
+        }
+    }
+
+    private void error(RoomMirror.Update u) throws Failure {
+        switch (u.code()) {
+            case "stale" -> client.send(new ClientMessage.Sync());
+            case "not-your-turn", "rate-limited", "not-playing" -> log.accept("server: " + u.text());
+            default -> {
+                if (mirror.seat() < 0) throw new Failure(u.text());
+                log.accept("server: " + u.text());
+            }
+        }
+    }
+
+    private void shoot() throws InterruptedException {
+        shotAt = mirror.seq();
+        if (options.thinkMillis() > 0) {
+            Thread.sleep(options.thinkMillis());
+            if (!inbox.isEmpty()) {
+                shotAt = -1; // something changed while thinking: look again
+                return;
+            }
+        }
+        Game g = mirror.round().game();
+        int seat = mirror.seat();
+        PlayerState p = g.player(seat);
+        double[] v = plan(options.level(), g, seat, p, mirror.room().hashCode() * 31L + mirror.seq());
+        double ground = Math.hypot(v[0], v[1]);
+        double speed = Math.sqrt(ground * ground + v[2] * v[2]);
+        double loft = Math.min(Loft.MAX_DEGREES, Loft.degreesOf(v[0], v[1], v[2]));
+        double ax = ground > 0 ? v[0] / ground * speed : 0, ay = ground > 0 ? v[1] / ground * speed : speed;
+        if (timing != null) timing.shotSent(mirror.seq(), System.nanoTime());
+        client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, 0));
+    }
+
+    /** The bot's shot (vx, vy, vz) within the course's speed limit. */
+    static double[] plan(String level, Game g, int seat, PlayerState p, long seed) {
+        ShotPlanner planner = BotCatalog.planner(level);
+        double max = g.world().physics().maxSpeed();
+        double[] v = planner.plan(g.world(), g.settings(), p.x(), p.y(), p.total(), seed, BotConditions.of(g, seat, false),
+                new BotControl());
+        double vz = v.length == 3 ? Math.max(0, v[2]) : 0;
+        double speed = Math.sqrt(v[0] * v[0] + v[1] * v[1] + vz * vz);
+        double k = speed > max ? max / speed : 1;
+        return new double[]{v[0] * k, v[1] * k, vz * k};
+    }
+
+    private void connect(boolean first) throws Failure {
+        try {
+            client = OnlineClient.connect(options.server(), new OnlineClient.Listener() {
+                public void onMessage(ObjectNode message) {
+                    inbox.add(message);
+                }
+
+                public void onClosed(String reason) {
+                    inbox.add(new Closed(reason));
+                }
+            }, Duration.ofSeconds(10));
+        } catch (IOException e) {
+            if (first) throw new Failure(e.getMessage());
+            client = null;
+        }
+    }
+
+    /** Connects again and resumes the seat, retrying with growing pauses. */
+    private void reconnect(String reason, SeatFile saved) throws Failure, InterruptedException {
+        log.accept(reason + "; reconnecting");
+        String room = mirror.room() != null ? mirror.room() : saved.room();
+        String token = mirror.token() != null ? mirror.token() : saved.token();
+        long deadline = System.nanoTime() + RECONNECT_FOR.toNanos();
+        long pause = 250;
+        inbox.clear();
+        while (System.nanoTime() < deadline) {
+            Thread.sleep(pause);
+            connect(false);
+            if (client != null) {
+                client.send(new ClientMessage.Resume(room, token));
+                shotAt = -1;
+                return;
+            }
+            pause = Math.min(8000, pause * 2);
+        }
+        throw new Failure("the server stayed unreachable for " + RECONNECT_FOR.toMinutes() + " minutes: " + reason);
+    }
+
+    /** The final card: {@code {"room", "course", "players": [{"name", "strokes": [per hole], "total"}]}}. */
+    public static ObjectNode scorecard(RoomMirror mirror) {
+        RoundScorecard card = mirror.round().scorecard();
+        ObjectNode o = Json.object().put("room", mirror.room()).put("course", mirror.course());
+        ArrayNode players = o.putArray("players");
+        for (RoundScorecard.Row row : card.rows()) {
+            ObjectNode p = players.addObject().put("name", row.name());
+            ArrayNode strokes = p.putArray("strokes");
+            for (int s : row.holes()) strokes.add(s);
+            p.put("total", row.total());
+        }
+        return o;
+    }
+
+    /** The seat a client holds, kept in a file so that a restarted client resumes it. */
+    record SeatFile(String room, int seat, String token) {
+        static SeatFile read(Path file) {
+            if (file == null || !Files.isRegularFile(file)) return null;
+            try {
+                JsonNode o = Json.parse(Files.readString(file, StandardCharsets.UTF_8));
+                return new SeatFile(Json.matching(o, "room", Protocol.CODE, "a room code"), (int) Json.integer(o, "seat", 0, 3),
+                        Json.matching(o, "token", Protocol.TOKEN, "a seat token"));
+            } catch (IOException | ProtocolException e) {
+                return null;
+            }
+        }
+
+        static void write(Path file, SeatFile s, Consumer<String> log) {
+            try {
+                AtomicFile.write(file, Json.write(Json.object().put("room", s.room()).put("seat", s.seat()).put("token", s.token()))
+                        .getBytes(StandardCharsets.UTF_8));
+            } catch (IOException e) {
+                log.accept("cannot write the seat file " + file + ": " + e.getMessage());
+            }
+        }
+    }
+}

@@ -1,0 +1,68 @@
+package minigolf.online;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import minigolf.game.Player;
+import minigolf.game.PlayerStatus;
+import minigolf.game.Round;
+import minigolf.game.RoundGame;
+import minigolf.game.SavedRounds;
+import minigolf.game.ShotRecord;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Settling a round from events (as clients and a restarting server do) gives exactly the round
+ * the engine played: the same balls, counts, history, card and save.
+ */
+class RoundSyncTest {
+    private static Round twoHoles() throws Exception {
+        World flat = World.load(java.nio.file.Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "flat.json"));
+        return new Round("Two flats", List.of(new Round.Hole("flat.json", 2, flat), new Round.Hole("flat.json", 3, flat)), "test");
+    }
+
+    @Test
+    void eventsSettleToTheRoundThatWasPlayed() throws Exception {
+        Round round = twoHoles();
+        List<Player> players = List.of(Player.human("Ann"), Player.human("Bob"));
+        RoundGame played = new RoundGame(round, SimulationSettings.DEFAULT, players, 2);
+        RoundGame settled = SavedRounds.parse(SavedRounds.toJson(played), "start");
+        long seq = 0;
+        double[][] shots = {{1, 0}, {0.8, 0.1}, {0.5, 0}, {3.9, 0.2}, {1.2, -0.1}, {0.3, 0}, {2, 0}, {1, 1}};
+        int k = 0;
+        while (!played.isOver()) {
+            int hole = played.holeIndex();
+            int seat = played.game().currentPlayer();
+            ShotRecord r = played.game().play(shots[k][0], shots[k][1]);
+            k = (k + 1) % shots.length;
+            RoomEvent e = new RoomEvent(++seq, hole, seat, r, played.game().player(seat), 0);
+            RoomEvent wire = RoomEvent.parse(Json.parse(Json.write(e.toJson(-1))), 2);
+            assertEquals(e, wire, "an event reads back exactly (every double too)");
+            minigolf.online.RoundSync.advance(played);
+            settled = RoundSync.apply(settled, wire);
+            assertEquals(played.holeIndex(), settled.holeIndex());
+        }
+        assertTrue(settled.isOver());
+        assertEquals(played.scorecard().toText(), settled.scorecard().toText());
+        assertEquals(SavedRounds.toJson(played), SavedRounds.toJson(settled), "the same save, strokes of every hole included");
+    }
+
+    @Test
+    void aPickUpScoresTheLimitPlusOneAndAnEventOnTheWrongHoleIsRefused() throws Exception {
+        Round round = twoHoles();
+        RoundGame rg = new RoundGame(round, SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 5);
+        rg.game().pickUp(0);
+        RoomEvent pick = new RoomEvent(1, 0, 0, null, rg.game().player(0), 0);
+        RoundGame fresh = new RoundGame(round, SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 5);
+        RoundGame after = RoundSync.apply(fresh, pick);
+        assertEquals(1, after.holesFinished());
+        assertEquals(6, after.finishedScores()[0][0]);
+        assertEquals(PlayerStatus.PICKED_UP, pick.after().status());
+        RoomEvent wrongHole = new RoomEvent(2, 0, 0, null, pick.after(), 0);
+        assertThrows(IllegalStateException.class, () -> RoundSync.apply(after, wrongHole));
+    }
+}
