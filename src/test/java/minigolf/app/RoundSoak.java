@@ -11,7 +11,6 @@ import minigolf.game.Player;
 import minigolf.game.Round;
 import minigolf.game.RoundLoader;
 import minigolf.game.SettingsStore;
-import minigolf.ui.Screen;
 import org.lwjgl.system.Configuration;
 import org.lwjgl.system.MemoryUtil;
 
@@ -30,6 +29,9 @@ import static org.lwjgl.opengl.GL33.*;
  * </pre>
  */
 public final class RoundSoak {
+    /** Passes of the loop the card between holes is shown before the next hole (as a scripted run's 30 frames). */
+    static final int CARD_PASSES = 30;
+
     private RoundSoak() {
     }
 
@@ -56,18 +58,19 @@ public final class RoundSoak {
                 + "glRenderbuffers,glPrograms,glShaders,lwjglDebugBytes,heapCommittedMB");
         app.onLoopPass((pass, window) -> {
             double t = (System.nanoTime() - start) / 60e9;
-            if (app.game != null && app.game != lastGame[0]) { // a new hole's game
-                lastGame[0] = app.game;
+            if (app.game() != null && app.game() != lastGame[0]) { // a new hole's game
+                lastGame[0] = app.game();
                 holes[0]++;
             }
-            if (app.screen() == Screen.ROUND_CARD && app.roundGame() != null) {
-                if (++cardPasses[0] >= GameApp.ROUND_CARD_FRAMES) {
+            if (app.screen() == app.screens().roundCard() && app.roundGame() != null) {
+                if (++cardPasses[0] >= CARD_PASSES) {
                     cardPasses[0] = 0;
                     if (app.roundGame().isOver()) {
                         rounds[0]++;
                         app.startGame(players); // the same round again, from hole 1
-                    } else {
-                        app.nextHole();
+                    } else if (app.play().nextHole()) { // what the card's "Next hole" does
+                        app.scene().resetCamera();
+                        app.setScreen(app.screens().playing());
                     }
                 }
             }

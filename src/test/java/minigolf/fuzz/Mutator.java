@@ -20,6 +20,7 @@ import java.util.Random;
 final class Mutator {
     static final ObjectMapper MAPPER = new ObjectMapper();
     private static final JsonNodeFactory F = JsonNodeFactory.instance;
+    private static final List<String> FILE_FIELDS = List.of("file", "course", "source");
     static final String[] KINDS = {"delete", "swap-type", "extreme-number", "non-finite", "deep-nesting", "huge-array",
             "truncate", "garbage", "bomb", "duplicate-key", "hostile-path", "utf16"};
 
@@ -67,7 +68,8 @@ final class Mutator {
                     List<Slot> slots = new ArrayList<>();
                     collect(root, slots);
                     if (slots.isEmpty()) return new Case(kind, "nothing to mutate", json.getBytes(StandardCharsets.UTF_8));
-                    List<Slot> files = slots.stream().filter(x -> "file".equals(x.field)).toList();
+                    // The fields that name a file: a model's, a round's hole course, a saved round's source.
+                    List<Slot> files = slots.stream().filter(x -> FILE_FIELDS.contains(x.field)).toList();
                     Slot s = kind.equals("hostile-path") && !files.isEmpty() ? files.get(r.nextInt(files.size()))
                             : slots.get(r.nextInt(slots.size()));
                     String detail = s.path + ": " + apply(kind, s, r);
