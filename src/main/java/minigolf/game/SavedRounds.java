@@ -136,9 +136,13 @@ public final class SavedRounds {
         } catch (IllegalArgumentException e) {
             throw f.error("round", e.getMessage());
         }
+        JsonNode holeNode = f.object(f.field(root, null, "hole"), "hole");
         SavedGames.Loaded hole;
         try {
-            hole = SavedGames.parse(JsonFields.MAPPER.writeValueAsString(f.object(f.field(root, null, "hole"), "hole")), source + " (hole)");
+            hole = SavedGames.parse(JsonFields.MAPPER.writeValueAsString(holeNode), source);
+        } catch (SaveGameException e) {
+            // The current hole is a saved game inside the file: its problems are named by their path under "hole".
+            throw new SaveGameException(source, "hole" + (e.path() == null ? "" : "." + e.path()), e.problem(), e);
         } catch (IOException e) {
             throw f.error("hole", "cannot be read: " + e.getMessage());
         }

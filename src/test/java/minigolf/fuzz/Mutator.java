@@ -69,7 +69,7 @@ final class Mutator {
                     collect(root, slots);
                     if (slots.isEmpty()) return new Case(kind, "nothing to mutate", json.getBytes(StandardCharsets.UTF_8));
                     // The fields that name a file: a model's, a round's hole course, a saved round's source.
-                    List<Slot> files = slots.stream().filter(x -> FILE_FIELDS.contains(x.field)).toList();
+                    List<Slot> files = slots.stream().filter(x -> x.field != null && FILE_FIELDS.contains(x.field)).toList();
                     Slot s = kind.equals("hostile-path") && !files.isEmpty() ? files.get(r.nextInt(files.size()))
                             : slots.get(r.nextInt(slots.size()));
                     String detail = s.path + ": " + apply(kind, s, r);

@@ -126,6 +126,9 @@ class RoundGameTest {
         // A hole whose definition is missing: the path once, not "round.holes[0].definition.round.holes[0].definition".
         e = assertThrows(SaveGameException.class, () -> SavedRounds.parse(withoutFirstDefinition(json), "s.json"));
         assertEquals("s.json: round.holes[0].definition: is missing", e.getMessage());
+        // The current hole is a saved game inside the file: named by its path under "hole", not as "s.json (hole)".
+        e = assertThrows(SaveGameException.class, () -> SavedRounds.parse(json.replaceFirst("\"strokeLimit\" : 10", "\"strokeLimit\" : 0"), "s.json"));
+        assertEquals("s.json: hole.strokeLimit: must be 1 to 99, got 0", e.getMessage());
         assertTrue(SavedRounds.isSavedRound(json));
         assertFalse(SavedRounds.isSavedRound("{\"kind\": \"minigolf-saved-game\"}"));
     }
