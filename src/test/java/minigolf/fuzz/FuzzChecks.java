@@ -20,6 +20,8 @@ import java.util.stream.Stream;
  */
 final class FuzzChecks {
     private final List<String> failures = new ArrayList<>();
+    /** This thread's CPU time when the checks began (the report gives the cases' CPU time: comparable on a loaded machine). */
+    private final long cpuStart = java.lang.management.ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime();
     private final Map<String, int[]> outcomes = new TreeMap<>();
     private int cases;
 
@@ -115,7 +117,9 @@ final class FuzzChecks {
 
     /** Prints the outcomes and fails with the first failures, if any; {@code atLeast} cases must have run. */
     void report(String title, int atLeast) {
-        StringBuilder summary = new StringBuilder(title + ": " + cases + " cases (accepted/refused):");
+        double cpu = (java.lang.management.ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime() - cpuStart) / 1e9;
+        StringBuilder summary = new StringBuilder(String.format(java.util.Locale.ROOT, "%s: %d cases in %.1f s of CPU (accepted/refused):",
+                title, cases, cpu));
         outcomes.forEach((k, v) -> summary.append(' ').append(k).append(' ').append(v[0]).append('/').append(v[1]));
         System.out.println(summary);
         if (cases < atLeast) fail("at least " + atLeast + " cases, ran " + cases);

@@ -156,8 +156,11 @@ final class Mutator {
             }
             case "huge-array" -> {
                 int n = 1000 + r.nextInt(300_000);
-                ArrayNode a = F.arrayNode(n);
                 JsonNode element = v.isArray() && v.size() > 0 ? v.get(0) : v;
+                // At most about 12 MB written: past every file limit, but within the test's heap (a grid's row
+                // copied 300,000 times would be gigabytes).
+                n = (int) Math.min(n, 12_000_000L / Math.max(1, element.toString().length() + 1));
+                ArrayNode a = F.arrayNode(n);
                 for (int i = 0; i < n; i++) a.add(element);
                 s.set(a);
                 return n + " copies";
