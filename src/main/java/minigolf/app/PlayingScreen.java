@@ -91,6 +91,7 @@ class PlayingScreen extends GameScreen {
 
     @Override
     public void render(float w, float h) {
+        nameTags();
         app.hud().render(w, h, aimSpeed(), loft);
         if (canAim() && app.play().botTurn() == null) shotPanel(w, h);
     }

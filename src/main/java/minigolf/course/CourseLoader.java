@@ -12,6 +12,7 @@ import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import minigolf.io.JsonSyntax;
 import minigolf.io.TextFiles;
+import minigolf.theme.Themes;
 
 import java.nio.charset.CharacterCodingException;
 import java.nio.file.AccessDeniedException;
@@ -35,7 +36,7 @@ import java.util.function.Function;
  */
 public final class CourseLoader {
     static final List<String> TOP_FIELDS = List.of(
-            "format", "name", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles");
+            "format", "name", "world", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles");
     static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
     static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction",
             "deletedCells");
@@ -225,6 +226,10 @@ public final class CourseLoader {
             String name = string(required(o, "", "name"), "name");
             if (name.isBlank()) throw error("name", "must be a non-empty string");
             if (Limits.tooLong(name, Limits.NAME_CHARS) != null) throw error("name", Limits.tooLong(name, Limits.NAME_CHARS));
+            String world = o.has("world") ? string(o.get("world"), "world") : Themes.DEFAULT_ID;
+            if (Themes.byId(world) == null) {
+                throw error("world", "expected one of " + String.join(", ", Themes.ids()) + ", got " + show(o.get("world")));
+            }
             TerrainSpec terrain = terrainReader.terrain(required(o, "", "terrain"), "terrain");
             Bounds bounds = bounds(required(o, "", "bounds"), "bounds");
             PhysicsSettings physics = physics(required(o, "", "physics"), "physics");
@@ -232,7 +237,7 @@ public final class CourseLoader {
             Hole hole = hole(required(o, "", "hole"), "hole");
             List<Zone> zones = obstacleReader.zones(o.get("zones"), "zones");
             List<Obstacle> obstacles = obstacleReader.obstacles(o.get("obstacles"), "obstacles");
-            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles);
+            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles, world);
         }
 
         // ---- terrain ----

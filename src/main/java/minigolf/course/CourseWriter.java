@@ -1,5 +1,7 @@
 package minigolf.course;
 
+import minigolf.theme.Themes;
+
 import com.fasterxml.jackson.core.io.JsonStringEncoder;
 
 import java.io.IOException;
@@ -27,6 +29,8 @@ public final class CourseWriter {
         sb.append("{\n");
         sb.append("  \"format\": ").append(course.format()).append(",\n");
         sb.append("  \"name\": ").append(quote(require(course.name(), "name"))).append(",\n");
+        // The world only where it is not the default: older files stay as they were.
+        if (!Themes.DEFAULT_ID.equals(course.world())) sb.append("  \"world\": ").append(quote(course.world())).append(",\n");
         sb.append("  \"terrain\": ");
         terrain(sb, require(course.terrain(), "terrain"));
         sb.append(",\n");

@@ -35,7 +35,7 @@ class SettingsNoticeTest {
         } finally {
             System.setErr(stderr);
         }
-        String problem = store.file() + ": dt must be 1/1000 to 1/30 s, got 4.9E-324";
+        String problem = store.file() + ": dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324";
         assertEquals("Settings ignored, the defaults are used: " + problem, app.notice());
         assertEquals("minigolf: settings ignored, the defaults are used: " + problem + "\n",
                 captured.toString(StandardCharsets.UTF_8).replace("\r\n", "\n"));
