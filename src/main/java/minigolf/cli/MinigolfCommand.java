@@ -20,7 +20,7 @@ import minigolf.render.NoOpenGlException;
                 RenderCommand.class,
                 BenchRenderCommand.class, ParCheckCommand.class, SolveCommand.class, ExperimentCommand.class, ExperimentMergeCommand.class,
                 EditCommand.class, BenchEditorCommand.class, BenchLimitsCommand.class, ServerCommand.class, BenchServerCommand.class,
-                JoinCommand.class})
+                JoinCommand.class, ImportTracksCommand.class, ClassicReportCommand.class})
 public final class MinigolfCommand implements Callable<Integer> {
 
     @Override

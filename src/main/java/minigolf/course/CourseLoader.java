@@ -44,7 +44,9 @@ public final class CourseLoader {
     static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model",
             "ballRadius", "ballMass", "dragCoefficient", "airDensity", "groundRestitution");
     static final List<String> HOLE_FIELDS = List.of("position", "radius", "rule", "captureSpeed");
-    static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction");
+    static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction", "hazard");
+    static final List<String> HAZARD_FIELDS = List.of("kind", "when", "returnTo", "penalty");
+    static final List<String> CELLS_FIELDS = List.of("type", "origin", "size", "columns", "rows", "spans");
     static final List<String> RECT_FIELDS = List.of("type", "min", "max");
     static final List<String> CIRCLE_FIELDS = List.of("type", "center", "radius");
     static final List<String> POLYGON_FIELDS = List.of("type", "points");

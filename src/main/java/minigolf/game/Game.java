@@ -11,6 +11,7 @@ import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.Stroke;
+import minigolf.physics.Landing;
 import minigolf.physics.World;
 
 /**
@@ -268,11 +269,11 @@ public final class Game {
         if (!stroke.isFinished()) throw new IllegalStateException("the stroke has not finished");
         ShotResult r = stroke.result();
         PlayerState s = states.get(strokePlayer);
-        boolean penalty = r.outcome().isPenalty();
-        double x = penalty ? s.x() : r.endX();
-        double y = penalty ? s.y() : r.endY();
+        Landing landing = Landing.of(world, r, s.x(), s.y());
+        double x = landing.x();
+        double y = landing.y();
         int hits = s.strokes() + 1;
-        int penalties = s.penalties() + (penalty ? 1 : 0);
+        int penalties = s.penalties() + landing.penalty();
         PlayerStatus status = r.outcome() == Outcome.HOLED ? PlayerStatus.HOLED
                 : hits + penalties >= strokeLimit ? PlayerStatus.PICKED_UP : PlayerStatus.PLAYING;
         states.set(strokePlayer, new PlayerState(x, y, hits, penalties, status));

@@ -29,6 +29,8 @@ public final class TerrainMesh {
     /** Zones at most this slick are drawn as ice (blended in up to {@link #GRASS_ICE_FRICTION}). */
     public static final double ICE_FRICTION = 0.03;
     public static final double GRASS_ICE_FRICTION = 0.06;
+    /** From this kinetic friction on the ground is drawn as mud (the classic tracks' mud is 1.27, their sand 0.51). */
+    public static final double MUD_FRICTION = 1.0;
     /**
      * Vertex layout: position, normal, colour and the mowing stripes' weight (1 on grass, 0 on sand,
      * mud, skirts and the height map). The stripes are drawn per pixel by the terrain shaders
@@ -125,7 +127,7 @@ public final class TerrainMesh {
                 int k = j * cols + i;
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 double len = Math.sqrt(gx[k] * gx[k] + gy[k] * gy[k] + 1);
-                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), x, y, h[k], minH, maxH, rgb);
+                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), friction.hazardAt(x, y), x, y, h[k], minH, maxH, rgb);
                 p = put(v, p, x, y, h[k], -gx[k] / len, -gy[k] / len, 1 / len, rgb, stripes);
             }
         }
@@ -215,7 +217,7 @@ public final class TerrainMesh {
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 terrain.sample(x, y, s);
                 double len = Math.sqrt(s[1] * s[1] + s[2] * s[2] + 1);
-                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), x, y, s[0], minH, maxH, rgb);
+                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), friction.hazardAt(x, y), x, y, s[0], minH, maxH, rgb);
                 p = put(v, p, x, y, s[0], -s[1] / len, -s[2] / len, 1 / len, rgb, stripes);
             }
         }
@@ -251,7 +253,10 @@ public final class TerrainMesh {
         for (Zone z : zones) {
             if (z.shape().contains(x, y)) zone = z; // later zones win
         }
-        surfaceColor(mode, zone != null ? zone.kineticFriction() : GRASS_FRICTION, x, y, h, minH, maxH, b, out);
+        // Outside every zone: plain grass.
+        double weight = unstripedColor(mode, Themes.MEADOWBROOK.materials(), zone != null ? zone.kineticFriction() : GRASS_FRICTION,
+                zone != null ? zone.hazard() : null, x, y, h, minH, maxH, out);
+        stripe(weight, x, b, out);
     }
 
     /**
@@ -261,8 +266,11 @@ public final class TerrainMesh {
      */
     public static void surfaceColor(ColorMode mode, double kineticFriction, double x, double y, double h,
                                     double minH, double maxH, Bounds b, float[] out) {
-        double weight = unstripedColor(mode, Themes.MEADOWBROOK.materials(), kineticFriction, x, y, h, minH, maxH, out);
-        // Mowing stripes across x, as on a real green (the terrain shaders draw the same per pixel).
+        stripe(unstripedColor(mode, Themes.MEADOWBROOK.materials(), kineticFriction, null, x, y, h, minH, maxH, out), x, b, out);
+    }
+
+    /** Mowing stripes across x, as on a real green (the terrain shaders draw the same per pixel), with this weight. */
+    private static void stripe(double weight, double x, Bounds b, float[] out) {
         double stripe = Math.floorMod((long) Math.floor((x - b.minX()) / STRIPE_WIDTH), 2) == 0 ? 1.0 : STRIPE_SHADE;
         double f = lerp(1, stripe, weight);
         set(out, out[0] * f, out[1] * f, out[2] * f);
@@ -270,10 +278,14 @@ public final class TerrainMesh {
 
     /**
      * The colour without the mowing stripes, into {@code out}; returns the stripes' weight there
-     * (1 - the sand's share on grass, 0 under water and on the height map).
+     * (1 - the sand's share on grass, 0 under water, in hazard zones, on ice and mud and on the
+     * height map).
+     *
+     * @param hazard the hazard of the zone there, or null: water and acid zones (the classic
+     *               tracks' pools) are drawn flat blue and green, shallow ones lighter
      */
-    static double unstripedColor(ColorMode mode, Theme.Materials palette, double kineticFriction, double x, double y,
-                                 double h, double minH, double maxH, float[] out) {
+    static double unstripedColor(ColorMode mode, Theme.Materials palette, double kineticFriction, Zone.Hazard hazard,
+                                 double x, double y, double h, double minH, double maxH, float[] out) {
         if (mode == ColorMode.HEIGHT_MAP) {
             heightMapColor(h, minH, maxH, out);
             return 0;
@@ -284,6 +296,20 @@ public final class TerrainMesh {
             Rgb bed = palette.lakeBed();
             double k = lerp(1.0, 0.55, t);
             set(out, bed.r() * k, bed.g() * k, bed.b() * k);
+            return 0;
+        }
+        double ripple = 0.96 + 0.04 * Math.sin(x * 23.0 + y * 7.0);
+        if (hazard != null) {
+            boolean shallow = hazard.when() == Zone.Hazard.When.REST;
+            if (hazard.kind() == Zone.Hazard.Kind.ACID) {
+                set(out, (shallow ? 0.62 : 0.46) * ripple, (shallow ? 0.86 : 0.74) * ripple, (shallow ? 0.30 : 0.10) * ripple);
+            } else {
+                set(out, (shallow ? 0.36 : 0.14) * ripple, (shallow ? 0.62 : 0.40) * ripple, (shallow ? 0.86 : 0.76) * ripple);
+            }
+            return 0;
+        }
+        if (kineticFriction >= MUD_FRICTION) {
+            set(out, 0.42 * ripple, 0.30 * ripple, 0.17 * ripple);
             return 0;
         }
         double sand = Math.min(1, Math.max(0, (kineticFriction - GRASS_FRICTION) / (SAND_FRICTION - GRASS_FRICTION)));

@@ -236,7 +236,7 @@ class CourseLoaderTest {
 
     @Test
     void enumValues() {
-        assertEquals("courses/x.json: zones[0].shape.type: expected one of rect, circle, polygon, got \"star\"",
+        assertEquals("courses/x.json: zones[0].shape.type: expected one of rect, circle, polygon, cells, got \"star\"",
                 error(edit("\"type\": \"rect\"", "\"type\": \"star\"")));
         assertEquals("courses/x.json: physics.model: expected one of classic, complete, got \"fast\"",
                 error(edit("\"model\": \"classic\"", "\"model\": \"fast\"")));
