@@ -37,11 +37,11 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class HostileFilesFuzzTest {
     static final long SEED = 20261124L;
-    static final int CASES_PER_COURSE = 40;
+    static final int CASES_PER_COURSE = 20;
     static final int CASES_PER_SAVE = 6;
     static final int SETTINGS_CASES = 300;
     /** As many bundled courses as courses/ holds today (docs/files-from-others.md says "every bundled course"). */
-    static final int BUNDLED_COURSES = 63;
+    static final int BUNDLED_COURSES = 117;
 
     @TempDir
     Path dir;
@@ -58,7 +58,8 @@ class HostileFilesFuzzTest {
         Path root = projectDir().resolve("courses");
         java.util.Set<String> folders = new java.util.TreeSet<>();
         for (Path c : courses) folders.add(root.relativize(c).getParent() == null ? "." : root.relativize(c).getParent().toString());
-        assertEquals(List.of(".", "bench", "chips", "friction", "holes", "hostile"), List.copyOf(folders));
+        assertEquals(List.of(".", "bench", "chips", "friction", "holes", "hostile", "worlds/canyon", "worlds/seaside", "worlds/winter"),
+                List.copyOf(folders));
         assertTrue(courses.size() >= BUNDLED_COURSES, "every bundled course: " + courses.size());
     }
 
@@ -87,7 +88,7 @@ class HostileFilesFuzzTest {
         }
         String settings = settingsJson();
         for (int i = 0; i < SETTINGS_CASES; i++) settingsCase(settings, seed++);
-        checks.report("fuzz", 3000);
+        checks.report("fuzz", 2600);
     }
 
     /** A course case through the command line: {@code simulate FILE --velocity 1,0.2}. */
