@@ -32,8 +32,8 @@ import org.junit.jupiter.api.io.TempDir;
  * the high-score table, the volumes file, and the online protocol's messages a server reads
  * (every kind of client message) and a client reads (room events). Each case loads to finite
  * JSON or is refused in one line naming its file ({@link FuzzChecks}); a protocol message is refused
- * with a {@link ProtocolException} of a known code. Classic track files (issue 28) join once their
- * reader is on main (docs/files-from-others.md).
+ * with a {@link ProtocolException} of a known code. Classic track files, their index and sprite
+ * sheets: {@link ClassicTracksFuzzTest}.
  */
 class StrangerFilesFuzzTest {
     static final long SEED = 20261127L;
