@@ -118,8 +118,9 @@ class ThreeStrokesTest {
     @Test
     void plannerAcesPlaysBothTilesInThreeWithALargeBudget() {
         for (World w : new World[] {FAR, NEAR}) {
+            // No time limit: the game depends on the budget alone (SearchBounds), however loaded the machine.
             Playthrough.Result r = Playthrough.play(Bots.create("planner-aces"), w, SimulationSettings.DEFAULT, 10,
-                    1_000_000, 1, CancellationToken.withTimeLimit(60), BotProgress.NONE);
+                    1_000_000, 1, CancellationToken.none(), BotProgress.NONE);
             assertTrue(r.holed(), w.course().name());
             // Measured: 74,702 and 324,172 simulations (both 5 strokes before ThreeStrokes; the exhaustive search's games are 3).
             assertEquals(3, r.strokes(), w.course().name());
