@@ -113,7 +113,9 @@ class HostileFilesFuzzTest {
         if (code == 0) {
             checks.finiteJson(what, out.toString());
         } else if (code == 2) {
-            checks.oneLine(what, err.toString(), "minigolf: " + file + ": ");
+            // A course whose maxSpeed is below the test's 1.02 m/s makes the shot itself the problem (seaside-01, maxSpeed 1e-9).
+            String tooFast = "minigolf: --velocity: shot speed ";
+            checks.oneLine(what, err.toString(), err.toString().startsWith(tooFast) ? tooFast : "minigolf: " + file + ": ");
         } else {
             checks.failure(what + ": exit " + code + ": " + err);
         }
