@@ -152,6 +152,12 @@ public final class Gui {
         return frameH;
     }
 
+    /** The width and height of a label's plate ({@link GuiDrawList#addLabel}) round {@code text}. */
+    public static float[] labelPlate(String text) {
+        float pad = GuiDrawList.labelPad(font.height());
+        return new float[]{font.width(text) + 2 + 2 * pad, font.height() + 2 * pad};
+    }
+
     static float textWidth(String s) {
         return font.width(s);
     }
@@ -456,7 +462,8 @@ public final class Gui {
     /** A button; a zero width or height fits the label. */
     public static boolean button(String label, float width, float height) {
         String shown = displayLabel(label);
-        float w = width > 0 ? width : buttonWidth(shown);
+        // Never narrower than its label: Nuklear clips a label that does not fit ("10" showed as "1").
+        float w = width > 0 ? Math.max(width, buttonWidth(shown)) : buttonWidth(shown);
         place(w, height > 0 ? height : frameH);
         return nk_button_label(ctx, shown);
     }
@@ -506,9 +513,14 @@ public final class Gui {
 
     /** A round option; true when clicked. */
     public static boolean radioButton(String label, boolean active) {
+        place(radioButtonWidth(label), frameH);
         String shown = displayLabel(label);
-        place(font.width(shown) + textH + 16 * scale + 4, frameH);
         return nk_option_label(ctx, shown, active) && !active;
+    }
+
+    /** The width a radio button with this label takes (to keep room for it before it shows). */
+    public static float radioButtonWidth(String label) {
+        return font.width(displayLabel(label)) + textH + 16 * scale + 4;
     }
 
     /** A row that can be selected (lists); true when clicked. */

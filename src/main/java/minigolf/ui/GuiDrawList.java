@@ -48,6 +48,11 @@ public final class GuiDrawList {
         ops.add(new Op(LABEL, x, y, 0, 0, textAbgr, 0, text, plateAbgr));
     }
 
+    /** The room a label's plate leaves round its text, for text {@code textHeight} high. */
+    static float labelPad(float textHeight) {
+        return 0.25f * textHeight;
+    }
+
     int size() {
         return ops.size();
     }
@@ -78,7 +83,7 @@ public final class GuiDrawList {
                     case DISC -> nk_fill_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), colour);
                     case LABEL -> {
                         String text = GuiText.fit(op.text, font, Math.max(font.height(), width / 2));
-                        float w = font.width(text) + 2, h = font.height(), pad = 0.25f * h;
+                        float w = font.width(text) + 2, h = font.height(), pad = labelPad(h);
                         int p = op.plate;
                         NkColor plate = NkColor.malloc(stack).set((byte) p, (byte) (p >> 8), (byte) (p >> 16), (byte) (p >>> 24));
                         float left = op.a - w / 2, top = op.b - h - pad;

@@ -34,7 +34,7 @@ class HighScoresTest {
 
         h.recordRound("R", card("R", List.of("Ann", "Bob"), new int[]{2, 3}, new int[]{1, 3}), ab, d1);
         news = h.recordRound("R", card("R", List.of("Ann", "Bob"), new int[]{2, 2}, new int[]{3, 3}), ab, d2);
-        assertTrue(news.contains(new HighScores.Achievement("Ann", "personal best round: 4 (was 5)")), news.toString());
+        assertTrue(news.contains(new HighScores.Achievement("Ann", "personal best round 4 (was 5)")), news.toString());
         assertTrue(news.contains(new HighScores.Achievement("Ann", "high score #2")), news.toString());
         assertTrue(news.contains(new HighScores.Achievement("Bob", "high score #4")), news.toString());
         // Equal totals: the earlier date first.
