@@ -81,14 +81,32 @@ final class CourseFolders {
         return store.directory().resolve("classic");
     }
 
+    /**
+     * The single holes offered for practice: every hole of the rounds, in their order (each file
+     * once), the practice holes of the course elements ({@code courses/practice/}), then the
+     * player's own courses. The loose courses beside the rounds are the engine's
+     * test terrains (a plane, sine hills, a 256 x 256 grid, 200 obstacles): {@code minigolf play
+     * FILE} plays them, a player's list does not offer them.
+     */
     static List<CourseEntry> list(SettingsStore store) {
-        Set<Path> shipped = shippedFolders();
         List<CourseEntry> out = new ArrayList<>();
         Set<Path> seen = new LinkedHashSet<>();
-        for (Path dir : shipped) add(dir, false, out, seen, null);
+        for (RoundEntry r : rounds(store)) {
+            Path folder = r.file().toAbsolutePath().getParent();
+            for (int i = 0; i < r.round().size(); i++) {
+                Path f = folder.resolve(r.round().hole(i).course()).normalize();
+                if (!seen.add(f)) continue;
+                try {
+                    out.add(new CourseEntry(CourseLoader.load(f).name(), f, false));
+                } catch (CourseException e) {
+                    // a hole that does not load is not offered (its round says why when played)
+                }
+            }
+        }
         // The practice holes, one course element each (docs/course-format.md, "Practice holes").
-        for (Path dir : shipped) add(dir.resolve(PRACTICE), false, out, seen, PRACTICE);
-        add(store.directory().resolve("courses"), true, out, seen, null);
+        Set<Path> practice = new LinkedHashSet<>();
+        for (Path dir : shippedFolders()) add(dir.resolve(PRACTICE), false, out, practice, PRACTICE);
+        add(store.directory().resolve("courses"), true, out, new LinkedHashSet<>(), null);
         return out;
     }
 

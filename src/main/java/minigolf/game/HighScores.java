@@ -77,6 +77,7 @@ public final class HighScores {
         for (Iterator<Map.Entry<String, JsonNode>> it = rs.fields(); it.hasNext(); ) {
             Map.Entry<String, JsonNode> e = it.next();
             String p = "rounds." + e.getKey();
+            f.shortText(e.getKey(), "rounds", minigolf.course.Limits.NAME_CHARS);
             JsonNode r = f.object(e.getValue(), p);
             f.onlyFields(r, p, List.of("table", "players"));
             RoundScores scores = new RoundScores();
@@ -85,12 +86,14 @@ public final class HighScores {
                 String q = p + ".table[" + i + "]";
                 JsonNode t = f.object(table.get(i), q);
                 f.onlyFields(t, q, List.of("name", "score", "date"));
-                scores.table.add(new Entry(f.text(t, q, "name"), f.integer(t, q, "score", 1, 100_000), date(f, t, q)));
+                String name = f.shortText(f.text(t, q, "name"), q + ".name", Player.MAX_NAME_LENGTH);
+                scores.table.add(new Entry(name, f.integer(t, q, "score", 1, 100_000), date(f, t, q)));
             }
             JsonNode players = f.object(f.field(r, p, "players"), p + ".players");
             for (Iterator<Map.Entry<String, JsonNode>> pit = players.fields(); pit.hasNext(); ) {
                 Map.Entry<String, JsonNode> pe = pit.next();
                 String q = p + ".players." + pe.getKey();
+                f.shortText(pe.getKey(), p + ".players", Player.MAX_NAME_LENGTH);
                 JsonNode pl = f.object(pe.getValue(), q);
                 f.onlyFields(pl, q, List.of("round", "holes"));
                 if (pl.has("round")) scores.bestRound.put(pe.getKey(), f.integer(pl, q, "round", 1, 100_000));

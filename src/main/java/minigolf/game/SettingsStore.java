@@ -80,12 +80,15 @@ public final class SettingsStore {
                 JsonNode a = f.array(root, null, "playerNames");
                 names = new ArrayList<>();
                 for (int i = 0; i < a.size(); i++) {
-                    if (!a.get(i).isTextual()) throw f.error("playerNames[" + i + "]", "must be a string");
+                    if (!a.get(i).isTextual()) throw f.error("playerNames[" + i + "]", "must be a string, got " + JsonFields.got(a.get(i)));
                     names.add(a.get(i).textValue());
                 }
             }
-            return new UserSettings(integrator,
-                    root.has("dt") ? f.number(root, null, "dt") : d.dt(),
+            double dt = root.has("dt") ? f.number(root, null, "dt") : d.dt();
+            if (minigolf.physics.SimulationSettings.dtProblem(dt) != null) {
+                throw f.error("dt", minigolf.physics.SimulationSettings.dtProblem(dt));
+            }
+            return new UserSettings(integrator, dt,
                     root.has("vsync") ? f.bool(root, null, "vsync") : d.vsync(),
                     root.has("frameLimit") ? f.integer(root, null, "frameLimit", 0, 1000) : d.frameLimit(),
                     root.has("fullscreen") ? f.bool(root, null, "fullscreen") : d.fullscreen(),

@@ -41,7 +41,7 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
             false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0,
             false, true, false, "auto", 0, 0, false, "");
-    public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
+    public static final double MIN_DT = SimulationSettings.MIN_DT, MAX_DT = SimulationSettings.MAX_DT;
     /** The longest classic-tracks folder name kept. */
     public static final int MAX_FOLDER_LENGTH = 4096;
     /** Beyond these a putt is a lottery, not "realistic". */
@@ -58,7 +58,7 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
 
     public UserSettings {
         if (integrator == null) throw new IllegalArgumentException("integrator must be given");
-        if (!(dt >= MIN_DT && dt <= MAX_DT)) throw new IllegalArgumentException("dt must be 1/1000 to 1/30 s, got " + dt);
+        if (SimulationSettings.dtProblem(dt) != null) throw new IllegalArgumentException("dt " + SimulationSettings.dtProblem(dt));
         if (frameLimit < 0 || frameLimit > 1000) throw new IllegalArgumentException("frameLimit must be 0 to 1000, got " + frameLimit);
         if (!(mouseSpeed >= 0.1 && mouseSpeed <= 10)) throw new IllegalArgumentException("mouseSpeed must be 0.1 to 10, got " + mouseSpeed);
         if (strokeLimit < 1 || strokeLimit > Game.MAX_STROKE_LIMIT) {

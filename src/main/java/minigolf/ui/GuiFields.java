@@ -242,6 +242,7 @@ final class GuiFields {
         float w = Gui.takeItemWidth(), h = Gui.frameHeight();
         Gui.place(w, h);
         int sel = items.length == 0 ? 0 : Math.max(0, Math.min(selected.get(), items.length - 1));
+        items = java.util.Arrays.stream(items).map(Gui::fitted).toArray(String[]::new);
         float widest = w;
         for (String item : items) widest = Math.max(widest, Gui.textWidth(item) + 40 * Gui.font.height() / 16);
         var style = Gui.ctx.style().window();

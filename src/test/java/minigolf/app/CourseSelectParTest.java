@@ -20,6 +20,20 @@ class CourseSelectParTest {
     Path dir;
 
     @Test
+    void practiceOffersEveryHoleOfTheRoundsAndNoTestTerrain() {
+        // Practice offered the engine's test terrains ("Plane", "Grid 256", "Sine Cross") and none of
+        // the rounds' holes, though the README says any hole can be played alone.
+        List<CourseFolders.CourseEntry> all = CourseFolders.list(new SettingsStore(dir));
+        List<String> names = all.stream().map(CourseFolders.CourseEntry::name).toList();
+        assertTrue(names.containsAll(List.of("First Tee", "Dogleg", "Windmill")), names.toString());
+        assertTrue(names.stream().noneMatch(n -> n.equals("Plane") || n.equals("Grid 256") || n.equals("Sine Cross")), names.toString());
+        assertEquals(all.size(), all.stream().map(c -> c.file().toAbsolutePath().normalize()).distinct().count(), "each file once");
+        int rounds = 0;
+        for (CourseFolders.RoundEntry r : CourseFolders.rounds(new SettingsStore(dir))) rounds += r.round().size();
+        assertTrue(all.size() >= 18 && all.size() <= rounds, all.size() + " holes of " + rounds + " in the rounds");
+    }
+
+    @Test
     void eachHoleShowsItsParAndTheBestScoreOnIt() {
         GameApp app = new GameApp(GameLauncher.loadBundled("/courses/flat.json"), new GameApp.Options(null, null, 0, null,
                 List.of(), 1, new SettingsStore(dir), false, false));

@@ -35,7 +35,7 @@ class SettingsNoticeTest {
         } finally {
             System.setErr(stderr);
         }
-        String problem = "dt must be 1/1000 to 1/30 s, got 4.9E-324";
+        String problem = "dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324";
         // The player's view names no file; the terminal's line does.
         assertEquals("Your settings could not be read (" + problem + "); the defaults are used", app.notice());
         assertEquals("minigolf: settings ignored, the defaults are used: " + store.file() + ": " + problem + "\n",
