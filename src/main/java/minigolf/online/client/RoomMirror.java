@@ -6,7 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import minigolf.game.RoundGame;
 import minigolf.game.SaveGameException;
-import minigolf.game.SavedRounds;
+import minigolf.online.StartSaves;
 import minigolf.online.ProtocolException;
 import minigolf.online.RoomEvent;
 import minigolf.online.RoundSync;
@@ -91,15 +91,23 @@ public final class RoomMirror {
         }
     }
 
-    private void snapshot(ObjectNode m) throws SaveGameException {
+    private void snapshot(ObjectNode m) throws SaveGameException, ProtocolException {
         room = m.path("room").asText(room);
         status = m.path("status").asText("lobby");
         course = m.path("course").asText("");
         title = m.path("title").asText(course);
         isRound = "round".equals(m.path("kind").asText());
-        seq = m.path("seq").asLong(0);
-        JsonNode save = m.get("save");
-        round = save == null || save.isNull() ? null : SavedRounds.parse(save.asText(), "the server's room " + room);
+        JsonNode start = m.get("start");
+        round = start == null || start.isNull() ? null : StartSaves.read(start.asText(), "the server's room " + room);
+        seq = 0;
+        int n = Math.max(1, m.path("seats").size());
+        for (JsonNode e : m.path("events")) {
+            RoomEvent event = RoomEvent.parse(e, n);
+            if (event.seq() != seq + 1) throw new ProtocolException("bad-message", "event " + event.seq() + " follows " + seq);
+            round = RoundSync.apply(round, event);
+            seq = event.seq();
+        }
+        if (seq != m.path("seq").asLong(0)) throw new ProtocolException("bad-message", "the room's events end at " + seq);
         seats(m);
     }
 

@@ -61,6 +61,9 @@ final class Room {
     private final RoomMessages messages = new RoomMessages(this);
     private Status status;
     private RoundGame round;
+    /** The round as it started (a saved round's text), and every event's message since, in order. */
+    private String startSave;
+    private final List<String> events = new ArrayList<>();
     private long seq;
     private ScheduledFuture<?> timer;
     private long botThinkingAt = -1;
@@ -84,13 +87,16 @@ final class Room {
     }
 
     /** A room rebuilt from the database: its round as it started and every stored event settled in order. */
-    void restore(Status stored, RoundGame started, List<RoomEvent> events) {
+    void restore(Status stored, String startText, RoundGame started, List<String> storedEvents) throws minigolf.online.ProtocolException {
         status = stored;
+        startSave = startText;
         round = started;
-        for (RoomEvent e : events) {
+        for (String json : storedEvents) {
+            RoomEvent e = RoomEvent.parse(minigolf.online.Json.parse(json), seats.length);
             if (e.seq() != seq + 1) throw new IllegalStateException("event " + e.seq() + " follows event " + seq);
             round = RoundSync.apply(round, e);
             seq = e.seq();
+            events.add(json);
         }
         if (round != null && round.isOver()) status = Status.FINISHED;
         long now = svc.now();
@@ -219,7 +225,8 @@ final class Room {
         for (Seat s : seats) players.add(s.bot ? Player.bot(s.name, s.level) : Player.human(s.name));
         round = new RoundGame(entry.round(), SETTINGS, players, strokeLimit);
         status = Status.PLAYING;
-        svc.store().startRoom(code, SavedRounds.toJson(round), svc.now()).whenComplete((v, err) -> actor.execute(() -> {
+        startSave = SavedRounds.toJson(round);
+        svc.store().startRoom(code, startSave, svc.now()).whenComplete((v, err) -> actor.execute(() -> {
             if (err != null) svc.log("room " + code + ": start not stored: " + err.getMessage());
             broadcast(messages.snapshot());
             refreshView();
@@ -315,6 +322,7 @@ final class Room {
         if (round.isOver()) status = Status.FINISHED;
         List<Score> scores = scoresSince(finishedBefore);
         String json = minigolf.online.Json.write(event.toJson(turn()));
+        events.add(json);
         svc.store().appendEvent(code, event.seq(), json, scores, status.jsonName(), svc.now())
                 .whenComplete((v, err) -> actor.execute(() -> {
                     if (err != null) {
@@ -505,6 +513,14 @@ final class Room {
 
     long seq() {
         return seq;
+    }
+
+    String startSave() {
+        return startSave;
+    }
+
+    List<String> events() {
+        return events;
     }
 
     /** The room as the web page shows it, safe to read from any thread. */
