@@ -42,7 +42,7 @@ abstract class GameScreen implements Screen {
             return views;
         }
         StrokeAnimator animator = app.play().animator();
-        int rolling = game.isShotInFlight() ? game.currentPlayer() : -1;
+        int rolling = app.play().rollingSeat();
         for (int i = 0; i < game.players().size(); i++) {
             PlayerState s = game.player(i);
             if (s.status() == PlayerStatus.HOLED && i != rolling) continue;

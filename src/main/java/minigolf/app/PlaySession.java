@@ -67,6 +67,10 @@ final class PlaySession {
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
     private final BotSeats botSeats = new BotSeats();
     private ShotRecord lastStroke;
+    /** A room on a game server being played instead of a local game, or null. */
+    private OnlinePlay online;
+    /** The server's stroke being animated (online), or null. */
+    private minigolf.online.RoomEvent rolling;
 
     PlaySession(World world, Path coursePath, List<double[]> script, PlayerFiles files, Consumer<String> say) {
         this.world = world;
@@ -122,6 +126,7 @@ final class PlaySession {
 
     /** A human player is to play and no ball rolls. */
     boolean humanToPlay() {
+        if (online != null) return animator == null && online.canShoot();
         return game != null && !game.isShotInFlight() && !game.isOver() && game.currentPlayer() >= 0
                 && !game.players().get(game.currentPlayer()).isBot();
     }
@@ -129,6 +134,7 @@ final class PlaySession {
     /** A game or a hole of a round for these players: the chosen round, else the chosen course. */
     void start(List<Player> players, UserSettings s) {
         stopPlay();
+        closeOnline();
         if (roundToPlay != null) {
             round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
             showHole();
@@ -158,6 +164,7 @@ final class PlaySession {
     void selectCourse(Path file) throws CourseException {
         World w = World.load(file);
         stopPlay();
+        closeOnline();
         world = w;
         coursePath = file;
         roundToPlay = null;
@@ -171,6 +178,7 @@ final class PlaySession {
         try {
             SavedRounds.AnySave save = SavedRounds.loadAny(file);
             stopPlay();
+            closeOnline();
             if (save.round() != null) {
                 round = save.round();
                 roundToPlay = round.round();
@@ -197,9 +205,10 @@ final class PlaySession {
         if (game != null) files.save(game, round);
     }
 
-    /** Play ends (back to the menu): the bot stops, nothing is in play. */
+    /** Play ends (back to the menu): the bot stops, nothing is in play; an online seat is kept for a resume. */
     void end() {
         stopPlay();
+        closeOnline();
         game = null;
         round = null;
     }
@@ -210,6 +219,12 @@ final class PlaySession {
         String problem = AimModel.checkTyped(vx, vy, vz, world.physics().maxSpeed());
         if (problem != null) {
             say.accept(problem);
+            return;
+        }
+        if (online != null) {
+            // The server plays the stroke; it is animated when it comes back.
+            if (animator != null || !online.canShoot()) return;
+            online.shoot(vx, vy, vz);
             return;
         }
         int seat = game.currentPlayer();
@@ -231,6 +246,7 @@ final class PlaySession {
      * thread) or its answer hit, a scripted stroke is hit.
      */
     Progress advance(double elapsed, double timeScale, boolean hideFrictionFromBots) {
+        if (online != null) return advanceOnline(elapsed, timeScale);
         if (game == null) return Progress.NONE;
         Progress progress = Progress.NONE;
         if (animator != null) {
@@ -276,6 +292,90 @@ final class PlaySession {
         return progress;
     }
 
+    /** Plays a room on a game server from now on (its lobby first). */
+    void startOnline(OnlinePlay room) {
+        stopPlay();
+        closeOnline();
+        online = room;
+        round = null;
+        game = null;
+    }
+
+    /** Leaves the online room's connection (its seat is kept for a resume). */
+    private void closeOnline() {
+        if (online != null) online.close();
+        online = null;
+    }
+
+    /** The online room being played, or null. */
+    OnlinePlay online() {
+        return online;
+    }
+
+    /** The seat whose ball is rolling in the animation, or -1. */
+    int rollingSeat() {
+        if (rolling != null) return rolling.seat();
+        return game != null && game.isShotInFlight() ? game.currentPlayer() : -1;
+    }
+
+    /**
+     * One pass of online play: what the server sent is taken in; its strokes are animated one after
+     * the other with the engine, each settled where the server put the ball; scripted strokes are
+     * sent when it is this seat's turn. The next hole starts when the player leaves the hole's card.
+     */
+    private Progress advanceOnline(double elapsed, double timeScale) {
+        online.poll();
+        if (online.takeResync()) {
+            animator = null;
+            rolling = null;
+            round = online.shown();
+            if (round != null) {
+                showHole();
+                // A round that comes over already (a resume after the end): its card.
+                if (round.isOver()) return Progress.OVER;
+            }
+        }
+        if (round == null) return Progress.NONE;
+        Progress progress = Progress.NONE;
+        if (animator != null) {
+            animator.advance(elapsed, timeScale);
+            if (!animator.isFinished()) return progress;
+            minigolf.online.RoomEvent e = rolling;
+            animator = null;
+            rolling = null;
+            lastStroke = e.stroke();
+            say.accept(game.players().get(e.seat()).name() + ": " + describe(lastStroke));
+            if (settleOnline(e)) return Progress.OVER;
+            progress = Progress.STROKE_ENDED;
+        }
+        minigolf.online.RoomEvent e = online.nextEvent();
+        if (e != null && e.isPickUp()) {
+            if (settleOnline(e)) return Progress.OVER;
+        } else if (e != null) {
+            ShotRecord r = e.stroke();
+            TrajectoryListener listener = feedback == null ? null
+                    : feedback.stroke(game.world(), game.player(e.seat()).total() == 0, e.seat());
+            animator = new StrokeAnimator(new minigolf.physics.Stroke(game.world(), game.settings(), r.startX(), r.startY(),
+                    r.vx(), r.vy(), r.vz(), listener, false), game.settings().dt());
+            rolling = e;
+            if (feedback != null) feedback.hit(Math.sqrt(r.vx() * r.vx() + r.vy() * r.vy() + r.vz() * r.vz()),
+                    game.world().physics().maxSpeed());
+        } else if (!script.isEmpty() && online.canShoot()) {
+            double[] v = script.poll();
+            hit(v[0], v[1], v.length > 2 ? v[2] : 0);
+        }
+        return progress;
+    }
+
+    /** Settles a server event on the round shown; true when it ended the hole (its card is due). */
+    private boolean settleOnline(minigolf.online.RoomEvent e) {
+        round = online.settle(e);
+        game = round.game();
+        if (!game.isOver()) return false;
+        files.recordScores(round, round.finishHole());
+        return true;
+    }
+
     /** Stops the bot thinking now (its Cancel button); the bots of this hole are asked afresh. */
     void cancelBot() {
         if (botTurn != null) botTurn.cancel();
@@ -310,5 +410,6 @@ final class PlaySession {
         cancelBot();
         botTurn = null;
         animator = null;
+        rolling = null;
     }
 }

@@ -43,6 +43,8 @@ class PlayingScreen extends GameScreen {
     private final GuiDouble typedVx = new GuiDouble(1.0);
     private final GuiDouble typedVy = new GuiDouble(0.0);
     private final GuiDouble typedVz = new GuiDouble(0.0);
+    /** The chat and connection panel of an online room. */
+    private final OnlinePanel onlinePanel = new OnlinePanel();
 
     PlayingScreen(GameApp app) {
         super(app);
@@ -93,6 +95,7 @@ class PlayingScreen extends GameScreen {
     public void render(float w, float h) {
         app.hud().render(w, h, aimSpeed(), loft);
         if (canAim() && app.play().botTurn() == null) shotPanel(w, h);
+        if (app.play().online() != null) onlinePanel.render(app.play().online(), w, h);
     }
 
     /** The aim being dragged: speed in m/s, or negative when not aiming. */
