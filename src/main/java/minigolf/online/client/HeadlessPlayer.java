@@ -46,11 +46,24 @@ public final class HeadlessPlayer {
                           String name, String level, Path seatFile, long thinkMillis) {
     }
 
+    /** Waited for before joining (the benchmark holds each room's last player until every room is nearly full). */
+    private java.util.concurrent.CountDownLatch joinGate;
+
+    /** Joins only once {@code gate} opens (a room's last seat: its round starts when it is taken). */
+    public HeadlessPlayer joinAfter(java.util.concurrent.CountDownLatch gate) {
+        joinGate = gate;
+        return this;
+    }
+
     /** Hooks for the benchmark: a shot sent (with the room's event count) and its stroke received. */
     public interface Timing {
         void shotSent(long seq, long nanos);
 
         void strokeReceived(long seq, int seat, long nanos);
+
+        /** The player holds its seat now (its connection is open). */
+        default void seated() {
+        }
     }
 
     /** Connection retries: the first after 0.25 s, doubling to 8 s, for at most this long in all. */
@@ -85,6 +98,10 @@ public final class HeadlessPlayer {
     private record Closed(String reason) {
     }
 
+    /** A message with the moment it arrived (the benchmark times strokes by arrival, not by when they were read). */
+    private record Arrived(ObjectNode message, long nanos) {
+    }
+
     /** Plays to the end of the round and prints the scorecard; the room's code first when it created the room. */
     public void run() throws Failure, InterruptedException {
         SeatFile saved = SeatFile.read(options.seatFile());
@@ -96,6 +113,7 @@ public final class HeadlessPlayer {
             client.send(new ClientMessage.Create(options.name(), options.create(), options.seats(), options.serverBots(),
                     options.listed(), Game.DEFAULT_STROKE_LIMIT));
         } else {
+            if (joinGate != null) joinGate.await();
             client.send(new ClientMessage.Join(options.room(), options.name()));
         }
         while (true) {
@@ -109,14 +127,18 @@ public final class HeadlessPlayer {
                 reconnect(c.reason(), saved);
                 continue;
             }
-            ObjectNode m = (ObjectNode) item;
+            Arrived a = (Arrived) item;
+            ObjectNode m = a.message();
             RoomMirror.Update u = mirror.apply(m);
             switch (u.change()) {
-                case JOINED -> joined();
+                case JOINED -> {
+                    joined();
+                    if (timing != null) timing.seated();
+                }
                 case ERROR -> error(u);
                 case OUT_OF_STEP -> client.send(new ClientMessage.Sync());
                 case EVENT -> {
-                    if (timing != null) timing.strokeReceived(u.event().seq(), u.event().seat(), System.nanoTime());
+                    if (timing != null) timing.strokeReceived(u.event().seq(), u.event().seat(), a.nanos());
                 }
                 case NOTICE, CHAT -> log.accept(u.text());
                 default -> {
@@ -189,7 +211,7 @@ public final class HeadlessPlayer {
         try {
             client = OnlineClient.connect(options.server(), new OnlineClient.Listener() {
                 public void onMessage(ObjectNode message) {
-                    inbox.add(message);
+                    inbox.add(new Arrived(message, System.nanoTime()));
                 }
 
                 public void onClosed(String reason) {

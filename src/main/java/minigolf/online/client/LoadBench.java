@@ -48,6 +48,10 @@ public final class LoadBench {
         List<long[]> latencies = java.util.Collections.synchronizedList(new ArrayList<>());
         AtomicInteger connected = new AtomicInteger(), peak = new AtomicInteger();
         CountDownLatch done = new CountDownLatch(rooms * seats);
+        // Every room's last player waits until all the others are connected and seated: then every round starts at
+        // once, with all the players connected together.
+        CountDownLatch others = new CountDownLatch(rooms * Math.max(0, seats - 1));
+        CountDownLatch gate = new CountDownLatch(1);
         long start = System.nanoTime();
         for (int r = 0; r < rooms; r++) {
             CountDownLatch code = new CountDownLatch(1);
@@ -56,14 +60,15 @@ public final class LoadBench {
                 int seat = s;
                 String name = "P" + r + "-" + s;
                 Thread t = new Thread(() -> {
-                    Timer timer = new Timer();
+                    Timer timer = new Timer(() -> {
+                        peak.accumulateAndGet(connected.incrementAndGet(), Math::max);
+                        if (seat < seats - 1) others.countDown();
+                    });
                     try {
                         if (seat > 0 && !code.await(120, TimeUnit.SECONDS)) throw new IllegalStateException("no room code");
                         HeadlessPlayer.Options o = new HeadlessPlayer.Options(server, seat == 0 ? course : null, seats, List.of(),
                                 false, seat == 0 ? null : roomCode[0], name, bot, null, thinkMillis);
-                        connected.incrementAndGet();
-                        peak.accumulateAndGet(connected.get(), Math::max);
-                        new HeadlessPlayer(o, line -> {
+                        HeadlessPlayer player = new HeadlessPlayer(o, line -> {
                             ObjectNode m = parse(line);
                             if (m != null && m.has("room") && !m.has("players")) {
                                 roomCode[0] = m.get("room").asText();
@@ -71,12 +76,14 @@ public final class LoadBench {
                             } else if (m != null && m.has("players")) {
                                 cards.put(m.get("room").asText() + "/" + seat, m);
                             }
-                        }, line -> { }, timer).run();
+                        }, line -> { }, timer);
+                        if (seat == seats - 1 && seats > 1) player.joinAfter(gate);
+                        player.run();
                     } catch (Exception | Error e) {
                         failures.add(name + ": " + e.getMessage());
                         code.countDown();
                     } finally {
-                        connected.decrementAndGet();
+                        if (timer.wasSeated()) connected.decrementAndGet();
                         latencies.add(timer.latencies());
                         done.countDown();
                     }
@@ -88,6 +95,10 @@ public final class LoadBench {
             // Let the room's creator get its code before the next room's players start.
             code.await(120, TimeUnit.SECONDS);
         }
+        others.await(600, TimeUnit.SECONDS);
+        progress.accept(String.format(java.util.Locale.ROOT, "%.0f s: %d connected; the last players join now",
+                (System.nanoTime() - start) / 1e9, connected.get()));
+        gate.countDown();
         long deadline = start + (long) (timeoutSeconds * 1e9);
         while (!done.await(10, TimeUnit.SECONDS)) {
             progress.accept(String.format(java.util.Locale.ROOT, "%.0f s: %d connected, %d rooms' cards in",
@@ -119,7 +130,23 @@ public final class LoadBench {
 
     /** One player's shot timings: sent at seq n, received as event n + 1 of the same seat. */
     private static final class Timer implements HeadlessPlayer.Timing {
+        private final Runnable onSeated;
+        private boolean seated;
         private long sentSeq = -1, sentAt;
+
+        Timer(Runnable onSeated) {
+            this.onSeated = onSeated;
+        }
+
+        @Override
+        public synchronized void seated() {
+            if (!seated) onSeated.run();
+            seated = true;
+        }
+
+        synchronized boolean wasSeated() {
+            return seated;
+        }
         private long[] lat = new long[64];
         private int n;
 
