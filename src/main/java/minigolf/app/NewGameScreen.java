@@ -27,7 +27,7 @@ final class NewGameScreen extends GameScreen {
         for (int i = 0; i < Game.MAX_PLAYERS; i++) {
             names[i] = new GuiString("Player " + (i + 1), Player.MAX_NAME_LENGTH);
             kinds[i] = new GuiInt(0);
-            bots[i] = new GuiInt(0);
+            bots[i] = new GuiInt(Math.max(0, BotCatalog.names().indexOf(BotCatalog.DEFAULT_OPPONENT))); // medium
         }
     }
 
@@ -53,7 +53,7 @@ final class NewGameScreen extends GameScreen {
             if (kinds[i].get() == 1) {
                 Gui.sameLine();
                 Gui.setNextItemWidth(120);
-                Gui.combo("##bot", bots[i], botNames.toArray(new String[0]));
+                Gui.combo("##bot", bots[i], botNames.stream().map(BotCatalog::label).toArray(String[]::new));
             }
             Gui.popID();
         }

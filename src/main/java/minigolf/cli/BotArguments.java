@@ -22,7 +22,7 @@ final class BotArguments {
     static Bot bot(String name) {
         Bot bot = Bots.create(name);
         if (bot == null) {
-            throw new UserError("--bot: unknown bot '" + name + "'; known: " + String.join(", ", Bots.names()));
+            throw new UserError("--bot: unknown bot '" + name + "'; known: " + String.join(", ", Bots.allNames()));
         }
         return bot;
     }

@@ -219,7 +219,7 @@ final class ExperimentCommand implements Callable<Integer> {
             String name = part.trim();
             if (name.isEmpty()) continue;
             if (Bots.create(name) == null) {
-                throw new UserError("--bots: unknown bot '" + name + "'; known: " + String.join(", ", Bots.names()) + ", all");
+                throw new UserError("--bots: unknown bot '" + name + "'; known: " + String.join(", ", Bots.allNames()) + ", all");
             }
             if (!names.contains(name)) names.add(name);
         }

@@ -13,6 +13,7 @@ import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
 import minigolf.bot.friction.FrictionEstimator;
 import minigolf.bot.friction.FrictionPrior;
+import minigolf.bot.level.Level;
 import minigolf.bot.play.Bots;
 import minigolf.bot.search.SearchBot;
 import minigolf.physics.SimulationSettings;
@@ -21,9 +22,9 @@ import minigolf.physics.World;
 /**
  * The bots the game can seat and watch ("Test bot"), by name. Bots of minigolf.bot are adapted to
  * {@link ShotPlanner} by {@link #fromBot}; each request gets a fresh planner (planners need not be
- * thread-safe). Every bot of {@link Bots} is registered, the default ({@link Bots#DEFAULT}, the
- * planner) first, so it is what a new bot player and "Test bot" start with; last the "straight"
- * putter: the physics guess straight at the hole, with no search.
+ * thread-safe). First the opponents by level ({@link #levels()}: easy, medium, hard, pro), what a
+ * player chooses from; then every other bot of {@link Bots} by its algorithm's name (the planner
+ * first), for experts; last the "straight" putter: the physics guess straight at the hole, with no search.
  */
 public final class BotCatalog {
     /** Simulations a bot may spend on one stroke in the game. */
@@ -37,7 +38,11 @@ public final class BotCatalog {
     public static final double TIME_LIMIT_PER_STROKE = 20;
     private static final Map<String, Supplier<ShotPlanner>> PLANNERS = new LinkedHashMap<>();
 
+    /** The opponent a new bot seat starts with. */
+    public static final String DEFAULT_OPPONENT = "medium";
+
     static {
+        for (String level : Bots.levels()) registerBot(level, () -> Bots.create(level));
         registerBot(Bots.DEFAULT, () -> Bots.create(Bots.DEFAULT));
         for (String name : Bots.names()) {
             if (!name.equals(Bots.DEFAULT)) registerBot(name, () -> Bots.create(name));
@@ -69,6 +74,16 @@ public final class BotCatalog {
 
     public static synchronized List<String> names() {
         return new ArrayList<>(PLANNERS.keySet());
+    }
+
+    /** The opponents by level, from the easiest: {@code easy}, {@code medium}, {@code hard}, {@code pro}. */
+    public static List<String> levels() {
+        return Bots.levels();
+    }
+
+    /** A bot's name as a player reads it: "Easy", "Medium", "Hard", "Pro" for the levels, else the name itself. */
+    public static String label(String name) {
+        return Level.byId(name) == null ? name : Character.toUpperCase(name.charAt(0)) + name.substring(1);
     }
 
     /** A new planner for the bot with this name, or null if there is none. */

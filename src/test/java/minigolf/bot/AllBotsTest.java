@@ -18,6 +18,11 @@ class AllBotsTest {
         return Bots.names();
     }
 
+    /** The bots by algorithm and the opponents by level. */
+    static List<String> allBots() {
+        return Bots.allNames();
+    }
+
     private static Playthrough.Result play(String bot, World world, long budget, long seed) {
         Bot b = Bots.create(bot);
         assertNotNull(b, bot);
@@ -37,7 +42,7 @@ class AllBotsTest {
     }
 
     @ParameterizedTest
-    @MethodSource("bots")
+    @MethodSource("allBots")
     void neverExceedsTheBudget(String bot) {
         // The lake defeats several bots: they must stop at the budget, not run on.
         for (long budget : new long[] {1, 7, 60}) {
@@ -48,7 +53,7 @@ class AllBotsTest {
     }
 
     @ParameterizedTest
-    @MethodSource("bots")
+    @MethodSource("allBots")
     void theSameSeedGivesTheSameShots(String bot) {
         World world = BenchCourses.load("pond");
         Playthrough.Result a = play(bot, world, 3_000, 11), b = play(bot, world, 3_000, 11);

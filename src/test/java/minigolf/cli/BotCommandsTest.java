@@ -84,7 +84,7 @@ class BotCommandsTest {
         CliRun unknown = run("solve", BENCH.resolve("flat-7m.json").toString(), "--bot", "oracle");
         assertEquals(2, unknown.code());
         assertEquals("minigolf: --bot: unknown bot 'oracle'; known: grid, local, newton, swarm, astar, astar-newton, "
-                + "astar-swarm, graph, planner, planner-aces, robust", unknown.err().trim());
+                + "astar-swarm, graph, planner, planner-aces, robust, easy, medium, hard, pro", unknown.err().trim());
         Path broken = dir.resolve("broken.json");
         Files.writeString(broken, "{\"format\": 1}");
         CliRun bad = run("solve", broken.toString());
@@ -123,5 +123,26 @@ class BotCommandsTest {
             assertEquals('P', bytes[1]);
         }
         assertTrue(r.err().contains("8/8 runs"), r.err());
+    }
+
+    @Test
+    void theOpponentsByLevelPlayInSolveAndExperiment(@TempDir Path dir) throws IOException {
+        CliRun solve = run("solve", BENCH.resolve("two-putt.json").toString(), "--bot", "hard", "--seed", "2");
+        assertEquals(0, solve.code(), solve.err());
+        JsonNode json = new ObjectMapper().readTree(solve.out());
+        assertEquals("hard", json.get("bot").asText());
+        assertTrue(json.get("holed").asBoolean());
+        assertTrue(json.get("strokes").asInt() >= 2 && json.get("strokes").asInt() <= 10, solve.out());
+        Path suite = Files.createDirectories(dir.resolve("suite"));
+        Files.copy(BENCH.resolve("flat-7m.json"), suite.resolve("flat-7m.json"));
+        Path out = dir.resolve("out");
+        CliRun r = run("experiment", "--suite", suite.toString(), "--bots", "easy,pro,planner", "--seeds", "2",
+                "--out", out.toString(), "--threads", "1");
+        assertEquals(0, r.code(), r.err());
+        List<String> csv = Files.readAllLines(out.resolve("results.csv"));
+        assertEquals(1 + 3 * 2, csv.size());
+        // pro is the planner: an ace on flat-7m; easy holes within the limit.
+        assertTrue(csv.stream().anyMatch(l -> l.startsWith("flat-7m,pro,1,0.0,0.0,true,1,true,")), csv.toString());
+        assertTrue(csv.stream().filter(l -> l.startsWith("flat-7m,easy,")).allMatch(l -> l.contains(",true,")), csv.toString());
     }
 }

@@ -28,7 +28,7 @@ class PlayRoundArgumentsTest {
                 r.err().strip());
         r = CliRun.of("play", "--round", round("meadowbrook-9.json"), "--players", "Ann,Bot:nobody", "--frames", "1");
         assertEquals(2, r.code());
-        assertTrue(r.err().startsWith("minigolf: --players: no bot named 'nobody' (bots: planner"), r.err());
+        assertTrue(r.err().startsWith("minigolf: --players: no bot named 'nobody' (bots: easy, medium, hard, pro, planner"), r.err());
         r = CliRun.of("play", "x.json", "--round", round("meadowbrook-9.json"));
         assertEquals(2, r.code());
         assertEquals("minigolf: give either a COURSE or --round, not both", r.err().strip());

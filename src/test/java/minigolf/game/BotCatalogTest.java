@@ -13,13 +13,19 @@ import minigolf.physics.Simulator;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 
-/** Every bot can sit at the game's table; the planner is the default. */
+/** Every bot can sit at the game's table; the opponents by level come first. */
 class BotCatalogTest {
     @Test
-    void registersEveryBotWithThePlannerFirst() {
+    void registersEveryBotWithTheLevelsFirstThenThePlanner() {
         List<String> names = BotCatalog.names();
-        assertEquals(Bots.DEFAULT, names.get(0), "the first entry is what new bot players and Test bot start with");
+        assertEquals(List.of("easy", "medium", "hard", "pro", Bots.DEFAULT), names.subList(0, 5),
+                "a player chooses an opponent by level; the algorithms follow for experts");
+        assertEquals(BotCatalog.levels(), names.subList(0, 4));
+        assertTrue(BotCatalog.levels().contains(BotCatalog.DEFAULT_OPPONENT));
+        assertEquals(List.of("Easy", "Medium", "Hard", "Pro", "planner"),
+                names.subList(0, 5).stream().map(BotCatalog::label).toList());
         assertTrue(names.containsAll(Bots.names()), names.toString());
+        assertEquals(names.size(), new java.util.HashSet<>(names).size(), "each bot once: " + names);
         assertTrue(names.contains("straight"));
         for (String name : names) {
             ShotPlanner planner = BotCatalog.planner(name);
@@ -31,7 +37,7 @@ class BotCatalogTest {
     @Test
     void theDefaultBotHolesOutThroughTheGamesInterface() throws Exception {
         World world = World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "bench", "maze-c.json"));
-        ShotPlanner planner = BotCatalog.planner(BotCatalog.names().get(0));
+        ShotPlanner planner = BotCatalog.planner(Bots.DEFAULT);
         double x = world.course().start().x(), y = world.course().start().y();
         double[] v = planner.plan(world, SimulationSettings.DEFAULT, x, y, 0, 1, new ShotPlanner.Control() {
             public void progress(double fraction, String message) {

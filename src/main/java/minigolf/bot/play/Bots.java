@@ -1,10 +1,13 @@
 package minigolf.bot.play;
 
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
 import minigolf.bot.Bot;
+import minigolf.bot.level.Level;
+import minigolf.bot.level.LevelBot;
 import minigolf.bot.noise.RobustBot;
 import minigolf.bot.path.AStarBot;
 import minigolf.bot.path.GraphBot;
@@ -15,7 +18,7 @@ import minigolf.bot.search.LocalSearchBot;
 import minigolf.bot.search.NewtonBot;
 import minigolf.bot.search.SwarmBot;
 
-/** Every bot by its command-line name. Each call to {@link #create} gives a fresh bot (one per thread). */
+/** Every bot by its command-line name: the bots by algorithm and the opponents by level ({@link Level}). Each call to {@link #create} gives a fresh bot (one per thread). */
 public final class Bots {
     /** The game's default bot. */
     public static final String DEFAULT = "planner";
@@ -41,13 +44,27 @@ public final class Bots {
     private Bots() {
     }
 
-    /** The names in the order reports list them. */
+    /** The bots by algorithm, in the order reports list them (what {@code experiment --bots all} plays). */
     public static List<String> names() {
         return List.copyOf(FACTORIES.keySet());
     }
 
-    /** A new bot, or null for an unknown name. */
+    /** The opponents by level, from the easiest: {@code easy}, {@code medium}, {@code hard}, {@code pro}. */
+    public static List<String> levels() {
+        return Level.ids();
+    }
+
+    /** Every name {@link #create} knows: the bots by algorithm, then the levels. */
+    public static List<String> allNames() {
+        List<String> all = new ArrayList<>(names());
+        all.addAll(levels());
+        return List.copyOf(all);
+    }
+
+    /** A new bot (by algorithm or by level), or null for an unknown name. */
     public static Bot create(String name) {
+        Level level = Level.byId(name);
+        if (level != null) return new LevelBot(level);
         Supplier<Bot> factory = FACTORIES.get(name);
         return factory == null ? null : factory.get();
     }

@@ -1,0 +1,66 @@
+package minigolf.bot.level;
+
+import java.util.List;
+import java.util.Locale;
+import minigolf.bot.noise.HumanError;
+
+/**
+ * The opponents a player chooses from, by how well they play: each a strategy and a human-like
+ * error (docs/bots.md, "Opponents with levels"). Calibrated on human play: on a classic online
+ * game's tracks, players' mean strokes are a median 3.0x the track's best score; on generated tile
+ * courses {@code easy} aims at a casual player (about 2.5-3x the fewest strokes), {@code medium} at
+ * 1.7-2x, {@code hard} at 1.2-1.4x, and {@code pro} is the planner itself. Tuned on tile seed 1001
+ * and the Meadowbrook round (docs/bots.md has the figures and the fresh seed they were checked on).
+ *
+ * <ul>
+ * <li>{@code easy}: the planner's line, struck about 5 degrees and 17% of pace off (a casual player).</li>
+ * <li>{@code medium}: the noise-aware robust bot (it lays up where a bold line would likely miss),
+ *     2.25 degrees and 7.75% off.</li>
+ * <li>{@code hard}: the planner's line, a quarter of a degree and 1% of pace off: on our tile
+ *     courses the planner itself is about 1.2x the fewest strokes, and any larger error costs
+ *     a stroke on most of them (their two-stroke games pass gaps a few centimetres wider than the ball).</li>
+ * <li>{@code pro}: the planner, no error.</li>
+ * </ul>
+ *
+ * @param error    the error on every stroke while the hole goes well
+ * @param robust   whether the level plans for its own error (the noise-aware robust bot) or plays
+ *                 the planner's line as if it were exact
+ */
+public enum Level {
+    EASY(new HumanError(Math.toRadians(5), 0.17), false),
+    MEDIUM(new HumanError(Math.toRadians(2.25), 0.0775), true),
+    HARD(new HumanError(Math.toRadians(0.25), 0.01), false),
+    PRO(HumanError.NONE, false);
+
+    private final HumanError error;
+    private final boolean robust;
+
+    Level(HumanError error, boolean robust) {
+        this.error = error;
+        this.robust = robust;
+    }
+
+    /** The name on the command line and in the game's setup: {@code easy}, {@code medium}, {@code hard}, {@code pro}. */
+    public String id() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    public HumanError error() {
+        return error;
+    }
+
+    public boolean robust() {
+        return robust;
+    }
+
+    /** The level with this id, or null. */
+    public static Level byId(String id) {
+        for (Level level : values()) if (level.id().equals(id)) return level;
+        return null;
+    }
+
+    /** The ids from the easiest to the strongest. */
+    public static List<String> ids() {
+        return List.of(EASY.id(), MEDIUM.id(), HARD.id(), PRO.id());
+    }
+}

@@ -1,0 +1,63 @@
+package minigolf.bot;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import minigolf.game.Round;
+import minigolf.game.RoundLoader;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The opponents' levels as calibrated (docs/bots.md, "Opponents with levels"), on a small part of
+ * the tuning set: tile seed 1001's first six courses, two games each, and the Meadowbrook round
+ * against a player who plays par. The figures on a fresh seed are in docs/bots.md.
+ */
+class LevelCalibrationTest {
+    /** planner-aces' strokes on tile courses 1001-0 to 1001-5 (LevelCalibration 1001 6 2). */
+    private static final int[] FEWEST = {1, 2, 2, 2, 4, 2};
+
+    private static LevelCalibration.LevelResult play(String level) {
+        return LevelCalibration.play(level, TileCourses.generate(1001, FEWEST.length), FEWEST, 2, 1);
+    }
+
+    private static void assertBand(LevelCalibration.LevelResult r, double low, double high) {
+        assertEquals(FEWEST.length, r.holed(), r.level() + " holes every game");
+        assertTrue(r.maxStrokes() <= LevelCalibration.MAX_STROKES, r.level() + " within the stroke limit");
+        assertTrue(r.median() >= low && r.median() <= high, r.level() + ": median ratio " + r.median() + " of "
+                + Arrays.toString(r.ratios()));
+    }
+
+    @Test
+    void eachLevelPlaysWithinItsBandOnTheTuningTiles() {
+        // Measured (median of the six courses' mean strokes over the fewest; mean strokes a game):
+        // easy 2.88 (5.33), medium 2.00 (4.17), hard 1.50 (2.92), pro 1.13 (2.67). The bands leave
+        // room for small changes of the engine; they do not overlap where the levels must differ.
+        LevelCalibration.LevelResult easy = play("easy"), medium = play("medium"), hard = play("hard"), pro = play("pro");
+        assertBand(easy, 2.4, 3.4);
+        assertBand(medium, 1.7, 2.35);
+        assertBand(hard, 1.2, 1.65);
+        assertBand(pro, 1.0, 1.3);
+        assertTrue(mean(easy) > mean(medium) && mean(medium) > mean(hard) && mean(hard) > mean(pro),
+                mean(easy) + " " + mean(medium) + " " + mean(hard) + " " + mean(pro));
+    }
+
+    private static double mean(LevelCalibration.LevelResult r) {
+        return r.courses().stream().mapToDouble(LevelCalibration.CourseResult::mean).average().orElseThrow();
+    }
+
+    @Test
+    void aParPlayerBeatsMediumAndLosesToHardOnMeadowbrook() throws Exception {
+        Round round = RoundLoader.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses/rounds/meadowbrook-18.json"));
+        List<World> holes = round.holes().stream().map(Round.Hole::world).toList();
+        int par = round.holes().stream().mapToInt(Round.Hole::par).sum();
+        assertEquals(46, par);
+        int[] medium = LevelCalibration.roundTotals("medium", holes, 3), hard = LevelCalibration.roundTotals("hard", holes, 3);
+        // Measured (game seeds 1-3): medium 50, 50, 47; hard 24, 37, 26 (about 2.5 min of one core).
+        assertTrue(Arrays.stream(medium).filter(t -> t > par).count() >= 2, "medium above par: " + Arrays.toString(medium));
+        assertTrue(Arrays.stream(hard).filter(t -> t < par).count() >= 2, "hard below par: " + Arrays.toString(hard));
+    }
+}

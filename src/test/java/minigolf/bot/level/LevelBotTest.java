@@ -1,0 +1,110 @@
+package minigolf.bot.level;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.SplittableRandom;
+import minigolf.bot.BotProgress;
+import minigolf.bot.BotRequest;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.CountingSimulator;
+import minigolf.bot.Shot;
+import minigolf.bot.noise.HumanError;
+import minigolf.bot.planner.PlannerBot;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.Playthrough;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+/** The opponents by level: their error model, determinism, and that pro is the planner. */
+class LevelBotTest {
+    private static final Path BENCH = Path.of(System.getProperty("minigolf.projectDir", ".")).resolve("courses/bench");
+
+    private static BotRequest request(World world, int strokesTaken, long seed) {
+        CountingSimulator sim = new CountingSimulator(world, SimulationSettings.DEFAULT, 20_000, new CancellationToken(),
+                BotProgress.NONE);
+        return new BotRequest(sim, world.course().start().x(), world.course().start().y(), strokesTaken, seed);
+    }
+
+    @Test
+    void aHumanErrorTurnsTheShotAndScalesItsPaceAsDrawn() {
+        HumanError error = new HumanError(Math.toRadians(3), 0.1);
+        SplittableRandom draws = new SplittableRandom(7);
+        double turn = Math.toRadians(3) * draws.nextGaussian(), scale = 1 + 0.1 * draws.nextGaussian();
+        Shot played = error.play(Shot.polar(0.4, 2.0), new SplittableRandom(7), 5);
+        assertEquals(0.4 + turn, Math.atan2(played.vy(), played.vx()), 1e-12);
+        assertEquals(2.0 * scale, played.speed(), 1e-12);
+        assertEquals(0, played.vz());
+        // A chip's lift scales with its pace; no draw is faster than the course allows.
+        Shot chip = error.play(new Shot(1, 0, 1), new SplittableRandom(7), 5);
+        assertEquals(scale, chip.vz(), 1e-12);
+        assertTrue(new HumanError(0, 10).play(Shot.of(4, 0), new SplittableRandom(1), 5).speed() < 5);
+        // A draw far below -1 leaves a fifth of the pace, never a ball struck backwards.
+        assertEquals(0.2 * 3, new HumanError(0, 1e6).play(Shot.of(3, 0), new SplittableRandom(3), 5).speed(), 1e-9);
+    }
+
+    @Test
+    void noErrorPlaysTheShotAsChosen() {
+        Shot shot = Shot.of(1.5, -0.25);
+        assertSame(shot, HumanError.NONE.play(shot, new SplittableRandom(1), 5));
+    }
+
+    @Test
+    void theErrorHalvesWithEveryStrokeFromTheSixth() {
+        LevelBot easy = new LevelBot(Level.EASY);
+        HumanError full = Level.EASY.error();
+        for (int s = 0; s < LevelBot.CAREFUL_FROM; s++) assertEquals(full, easy.errorAfter(s));
+        assertEquals(full.angle() / 2, easy.errorAfter(5).angle(), 1e-15);
+        assertEquals(full.pace() / 4, easy.errorAfter(6).pace(), 1e-15);
+        assertEquals(full.pace() / 32, easy.errorAfter(9).pace(), 1e-15);
+    }
+
+    @Test
+    void theLevelsErrLessInOrder() {
+        Level[] levels = Level.values();
+        for (int i = 1; i < levels.length; i++) {
+            assertTrue(levels[i].error().angle() < levels[i - 1].error().angle(), levels[i].id());
+            assertTrue(levels[i].error().pace() < levels[i - 1].error().pace(), levels[i].id());
+        }
+        assertEquals(HumanError.NONE, Level.PRO.error());
+        assertEquals(java.util.List.of("easy", "medium", "hard", "pro"), Level.ids());
+        assertSame(Level.HARD, Level.byId("hard"));
+        assertNull(Level.byId("Hard"));
+    }
+
+    @Test
+    void theSameRequestGivesTheSameShotAndAnotherSeedAnother() throws Exception {
+        World world = World.load(BENCH.resolve("flat-7m.json"));
+        for (Level level : new Level[]{Level.EASY, Level.MEDIUM}) {
+            Shot a = new LevelBot(level).nextShot(request(world, 0, 11));
+            Shot b = new LevelBot(level).nextShot(request(world, 0, 11));
+            Shot c = new LevelBot(level).nextShot(request(world, 0, 12));
+            assertEquals(a, b, level.id());
+            assertNotEquals(a, c, level.id());
+        }
+    }
+
+    @Test
+    void proPlaysThePlannersShot() throws Exception {
+        World world = World.load(BENCH.resolve("maze-c.json"));
+        assertEquals(new PlannerBot().nextShot(request(world, 0, 5)), new LevelBot(Level.PRO).nextShot(request(world, 0, 5)));
+    }
+
+    @Test
+    void aGameIsTheSameForTheSameSeed() throws Exception {
+        World world = World.load(BENCH.resolve("two-putt.json"));
+        Playthrough.Result first = Playthrough.play(Bots.create("medium"), world, SimulationSettings.DEFAULT, 10, 200_000, 3,
+                new CancellationToken(), BotProgress.NONE);
+        Playthrough.Result again = Playthrough.play(Bots.create("medium"), world, SimulationSettings.DEFAULT, 10, 200_000, 3,
+                new CancellationToken(), BotProgress.NONE);
+        assertTrue(first.holed());
+        assertEquals(first.strokes(), again.strokes());
+        assertEquals(first.shots().stream().map(Playthrough.PlayedShot::shot).toList(),
+                again.shots().stream().map(Playthrough.PlayedShot::shot).toList());
+    }
+}
