@@ -61,7 +61,7 @@ final class OnlineScreen extends GameScreen {
         List<String> levels = BotCatalog.names();
         String[] kinds = new String[levels.size() + 1];
         kinds[0] = "a friend (joins with the code)";
-        for (int i = 0; i < levels.size(); i++) kinds[i + 1] = "bot: " + levels.get(i);
+        for (int i = 0; i < levels.size(); i++) kinds[i + 1] = "bot: " + BotCatalog.label(levels.get(i));
         for (int i = 1; i < seats[0]; i++) {
             Gui.pushID(i);
             Gui.setNextItemWidth(260);

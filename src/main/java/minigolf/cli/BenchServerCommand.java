@@ -81,6 +81,7 @@ final class BenchServerCommand implements Callable<Integer> {
                         err.println("bench-server: " + line + ", load " + loadAverage());
                         err.flush();
                     });
+            for (String f : res.failures().subList(0, Math.min(20, res.failures().size()))) err.println("bench-server: " + f);
             double serverCpu = LoadBench.cpuSeconds(server.pid()) - cpuBefore;
             double rss = LoadBench.peakRssMb(server.pid());
             String loadAfter = loadAverage();

@@ -77,6 +77,8 @@ public final class HeadlessPlayer {
     private final RoomMirror mirror = new RoomMirror();
     private OnlineClient client;
     private boolean printedRoom;
+    /** The last messages taken in, for a report on a player that never ends. */
+    private final java.util.List<String> recent = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
     /** The seat came from the seat file: the room's code was printed by the run that created it. */
     private boolean resumed;
     private long shotAt = -1;
@@ -86,6 +88,14 @@ public final class HeadlessPlayer {
         this.out = out;
         this.log = log;
         this.timing = timing;
+    }
+
+    /** The last messages this player took in (type, and the problem for errors), for reports. */
+    public String recentMessages() {
+        synchronized (recent) {
+            return String.join(", ", recent) + "; seat " + mirror.seat() + " turn " + mirror.turn() + " seq " + mirror.seq()
+                    + " shotAt " + shotAt + " status " + mirror.status();
+        }
     }
 
     /** Why the player stopped early: one line for the user. */
@@ -130,6 +140,9 @@ public final class HeadlessPlayer {
             Arrived a = (Arrived) item;
             ObjectNode m = a.message();
             RoomMirror.Update u = mirror.apply(m);
+            recent.add(m.path("type").asText() + (u.change() == RoomMirror.Change.OUT_OF_STEP || u.change() == RoomMirror.Change.ERROR
+                    ? "(" + u.code() + ": " + u.text() + ")" : "") + "@" + mirror.seq());
+            while (recent.size() > 8) recent.remove(0);
             switch (u.change()) {
                 case JOINED -> {
                     joined();
@@ -179,7 +192,7 @@ public final class HeadlessPlayer {
         if (options.thinkMillis() > 0) {
             Thread.sleep(options.thinkMillis());
             if (!inbox.isEmpty()) {
-                shotAt = -1; // something changed while thinking: look again
+                shotAt = -1; // messages came while thinking: they are taken in, then the turn is looked at again
                 return;
             }
         }

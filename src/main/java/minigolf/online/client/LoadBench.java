@@ -46,6 +46,7 @@ public final class LoadBench {
         List<String> failures = java.util.Collections.synchronizedList(new ArrayList<>());
         Map<String, JsonNode> cards = new ConcurrentHashMap<>();
         List<long[]> latencies = java.util.Collections.synchronizedList(new ArrayList<>());
+        Map<String, HeadlessPlayer> playing = new ConcurrentHashMap<>();
         AtomicInteger connected = new AtomicInteger(), peak = new AtomicInteger();
         CountDownLatch done = new CountDownLatch(rooms * seats);
         // Every room's last player waits until all the others are connected and seated: then every round starts at
@@ -78,7 +79,9 @@ public final class LoadBench {
                             }
                         }, line -> { }, timer);
                         if (seat == seats - 1 && seats > 1) player.joinAfter(gate);
+                        playing.put(name, player);
                         player.run();
+                        playing.remove(name);
                     } catch (Exception | Error e) {
                         failures.add(name + ": " + e.getMessage());
                         code.countDown();
@@ -105,6 +108,7 @@ public final class LoadBench {
                     (System.nanoTime() - start) / 1e9, connected.get(), cards.size() / Math.max(1, seats)));
             if (System.nanoTime() > deadline) {
                 failures.add("timed out after " + timeoutSeconds + " s with " + done.getCount() + " players still playing");
+                playing.forEach((n, p) -> failures.add(n + " still playing: " + p.recentMessages()));
                 break;
             }
         }
