@@ -93,7 +93,7 @@ final class BenchServerCommand implements Callable<Integer> {
                     .put("roomsFinished", res.roomsFinished()).put("course", course).put("bot", bot).put("thinkSeconds", think)
                     .put("shots", res.shots()).put("seconds", Math.round(res.seconds() * 10) / 10.0)
                     .put("p50Ms", round(res.percentileMs(50))).put("p99Ms", round(res.percentileMs(99)))
-                    .put("maxMs", round(res.percentileMs(100))).put("serverPeakRssMb", Math.round(rss))
+                    .put("maxMs", round(res.percentileMs(100))).put("reconnects", res.reconnects()).put("serverPeakRssMb", Math.round(rss))
                     .put("serverCpuSeconds", round(serverCpu)).put("storedStrokes", check.stored)
                     .put("lostOrDuplicated", check.problems.size()).put("loadAverageBefore", loadBefore)
                     .put("loadAverageAfter", loadAfter).put("cores", Runtime.getRuntime().availableProcessors());

@@ -105,7 +105,7 @@ public final class HeadlessPlayer {
         }
     }
 
-    private record Closed(String reason) {
+    private record Closed(OnlineClient client, String reason) {
     }
 
     /** A message with the moment it arrived (the benchmark times strokes by arrival, not by when they were read). */
@@ -115,6 +115,7 @@ public final class HeadlessPlayer {
     /** Plays to the end of the round and prints the scorecard; the room's code first when it created the room. */
     public void run() throws Failure, InterruptedException {
         SeatFile saved = SeatFile.read(options.seatFile());
+        if (joinGate != null && saved == null && options.create() == null) joinGate.await();
         connect(true);
         resumed = saved != null;
         if (saved != null) {
@@ -123,16 +124,31 @@ public final class HeadlessPlayer {
             client.send(new ClientMessage.Create(options.name(), options.create(), options.seats(), options.serverBots(),
                     options.listed(), Game.DEFAULT_STROKE_LIMIT));
         } else {
-            if (joinGate != null) joinGate.await();
             client.send(new ClientMessage.Join(options.room(), options.name()));
         }
+        long thinkingAt = -1, thinkUntil = 0;
         while (true) {
-            Object item = inbox.poll(30, TimeUnit.SECONDS);
+            // On this seat's turn the player thinks for a while (messages are taken in meanwhile), then shoots.
+            long waitMillis = 30_000;
+            if (mirror.isMyTurn() && shotAt != mirror.seq()) {
+                long now = System.nanoTime();
+                if (thinkingAt != mirror.seq()) {
+                    thinkingAt = mirror.seq();
+                    thinkUntil = now + options.thinkMillis() * 1_000_000;
+                }
+                if (now >= thinkUntil) {
+                    shoot();
+                    continue;
+                }
+                waitMillis = Math.max(1, (thinkUntil - now) / 1_000_000);
+            }
+            Object item = inbox.poll(waitMillis, TimeUnit.MILLISECONDS);
             if (item == null) {
-                client.send(new ClientMessage.Ping());
+                if (waitMillis == 30_000) client.send(new ClientMessage.Ping());
                 continue;
             }
             if (item instanceof Closed c) {
+                if (c.client() != client) continue; // a connection already replaced
                 if (mirror.token() == null && saved == null) throw new Failure(c.reason());
                 reconnect(c.reason(), saved);
                 continue;
@@ -162,7 +178,6 @@ public final class HeadlessPlayer {
                 client.close();
                 return;
             }
-            if (mirror.isMyTurn() && shotAt != mirror.seq() && inbox.isEmpty()) shoot();
         }
     }
 
@@ -187,15 +202,8 @@ public final class HeadlessPlayer {
         }
     }
 
-    private void shoot() throws InterruptedException {
+    private void shoot() {
         shotAt = mirror.seq();
-        if (options.thinkMillis() > 0) {
-            Thread.sleep(options.thinkMillis());
-            if (!inbox.isEmpty()) {
-                shotAt = -1; // messages came while thinking: they are taken in, then the turn is looked at again
-                return;
-            }
-        }
         Game g = mirror.round().game();
         int seat = mirror.seat();
         PlayerState p = g.player(seat);
@@ -222,15 +230,17 @@ public final class HeadlessPlayer {
 
     private void connect(boolean first) throws Failure {
         try {
+            OnlineClient[] self = new OnlineClient[1];
             client = OnlineClient.connect(options.server(), new OnlineClient.Listener() {
                 public void onMessage(ObjectNode message) {
                     inbox.add(new Arrived(message, System.nanoTime()));
                 }
 
                 public void onClosed(String reason) {
-                    inbox.add(new Closed(reason));
+                    inbox.add(new Closed(self[0], reason));
                 }
             }, Duration.ofSeconds(10));
+            self[0] = client;
         } catch (IOException e) {
             if (first) throw new Failure(e.getMessage());
             client = null;

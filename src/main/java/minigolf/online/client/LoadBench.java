@@ -23,7 +23,7 @@ import minigolf.online.Json;
 public final class LoadBench {
     /** The measured figures. */
     public record Result(int players, int peakConnected, int roomsFinished, long shots, long[] latencyNanos,
-                         List<String> failures, Map<String, JsonNode> cards, double seconds) {
+                         List<String> failures, Map<String, JsonNode> cards, double seconds, int reconnects) {
         public double percentileMs(double p) {
             if (latencyNanos.length == 0) return Double.NaN;
             long[] sorted = latencyNanos.clone();
@@ -47,7 +47,7 @@ public final class LoadBench {
         Map<String, JsonNode> cards = new ConcurrentHashMap<>();
         List<long[]> latencies = java.util.Collections.synchronizedList(new ArrayList<>());
         Map<String, HeadlessPlayer> playing = new ConcurrentHashMap<>();
-        AtomicInteger connected = new AtomicInteger(), peak = new AtomicInteger();
+        AtomicInteger connected = new AtomicInteger(), peak = new AtomicInteger(), reconnects = new AtomicInteger();
         CountDownLatch done = new CountDownLatch(rooms * seats);
         // Every room's last player waits until all the others are connected and seated: then every round starts at
         // once, with all the players connected together.
@@ -77,7 +77,9 @@ public final class LoadBench {
                             } else if (m != null && m.has("players")) {
                                 cards.put(m.get("room").asText() + "/" + seat, m);
                             }
-                        }, line -> { }, timer);
+                        }, line -> {
+                            if (line.endsWith("; reconnecting")) reconnects.incrementAndGet();
+                        }, timer);
                         if (seat == seats - 1 && seats > 1) player.joinAfter(gate);
                         playing.put(name, player);
                         player.run();
@@ -121,7 +123,8 @@ public final class LoadBench {
             for (long[] l : latencies) for (long v : l) all[k++] = v;
         }
         int finished = (int) cards.keySet().stream().map(c -> c.substring(0, c.indexOf('/'))).distinct().count();
-        return new Result(rooms * seats, peak.get(), finished, k, Arrays.copyOf(all, k), List.copyOf(failures), cards, seconds);
+        return new Result(rooms * seats, peak.get(), finished, k, Arrays.copyOf(all, k), List.copyOf(failures), cards, seconds,
+                reconnects.get());
     }
 
     private static ObjectNode parse(String line) {
