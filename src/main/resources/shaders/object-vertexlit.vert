@@ -2,10 +2,11 @@
 // the sun's lighting and the haze per vertex, only the shadows per pixel (object-vertexlit.frag).
 // Obstacle faces are flat, so per-vertex diffuse light is the same as per-pixel there.
 #include "lighting.glsl"
+#include "wind.glsl"
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec3 aColor;
+layout(location = 2) in vec4 aColor; // rgb and the material's id (meshes with rgb only read 1: plain)
 
 uniform mat4 uViewProjection;
 uniform vec4 uClipPlane;
@@ -29,17 +30,18 @@ invariant gl_Position;
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vec3 n = normalize(uNormalMatrix * aNormal);
+    waveCloth(aColor.a, world.xyz, n);
     // Thin things (the flag's cloth) are seen from both sides.
     if (dot(n, uEye - world.xyz) < 0.0) n = -n;
     vec3 v = normalize(uEye - world.xyz);
     vec3 l = normalize(uSunDirection);
-    vec3 albedo = aColor * uTint;
+    vec3 albedo = aColor.rgb * uTint;
     vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * n.z);
     float diffuse = max(dot(n, l), 0.0);
     float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;
     vUnlit = albedo * ambient;
     vSunlit = albedo * uSunColor * diffuse + uSunColor * specular * uSpecularStrength;
-    vHaze = clamp(1.0 - exp(-length(uEye - world.xyz) * 0.004), 0.0, 0.6);
+    vHaze = hazeAmount(length(uEye - world.xyz));
     vec4 p = uLightViewProjection * vec4(world.xyz + n * uShadowNormalOffset, 1.0);
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;
     vWorld = world.xyz;

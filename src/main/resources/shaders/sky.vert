@@ -23,6 +23,17 @@ uniform float uGridPixels;   // one grid cell in pixels (about)
 uniform vec2 uGround;
 uniform vec3 uGroundColor;
 uniform vec2 uFade;          // horizontal distances over which the meadow fades into the sky
+#ifdef SEA
+// A seaside world: the ground ends at a beach round the course and the sea reaches to the horizon.
+// Their colours are computed here; which of them a pixel shows is decided per pixel (sky.frag,
+// SEA_PIXEL) in the cells wholly below the horizon, per corner in the others (they lie far away).
+uniform vec3 uSeaColor;
+uniform vec3 uBeachColor;
+uniform vec4 uCourseRect;    // the course's bounds: min x, min y, max x, max y
+uniform float uShore;        // the shore's distance from the bounds (metres)
+out vec3 vSea;
+out vec3 vBeach;
+#endif
 
 out vec3 vSky;        // gradient under the clouds
 out vec3 vCloudColor; // the sun's warm tint on the clouds here
@@ -54,10 +65,27 @@ void main() {
     vGlow = sunGlow(s);
     vec4 nearPoint = uInverseViewProjection * vec4(aNdc, -1.0, 1.0);
     vec3 origin = nearPoint.xyz / nearPoint.w;
+#ifdef SEA
+    vSea = vSky;
+    vBeach = vSky;
+#endif
     if (uGround.y > 0.5 && up < 0.0 && origin.z > uGround.x) {
         vec3 p = origin + dir * ((uGround.x - origin.z) / up);
         vec3 lit = haze(shade(uGroundColor, vec3(0.0, 0.0, 1.0), p, 0.03, 8.0), p);
         float f = smoothstep(uFade.x, uFade.y, length(p.xy - uEye.xy));
+#ifdef SEA
+        // The sea: the sky mirrored (Fresnel) over deep water, and a broad glint towards the sun.
+        vec3 r = reflect(dir, vec3(0.0, 0.0, 1.0));
+        float fresnel = 0.02 + 0.98 * pow(1.0 - max(-up, 0.0), 5.0);
+        vec3 sea = mix(uSeaColor * (uSkyAmbient + uSunColor * 0.35), skyGradient(r), clamp(fresnel * 1.2, 0.0, 1.0));
+        sea += uSunColor * pow(max(dot(r, sun), 0.0), 40.0) * 0.35;
+        vSea = mix(haze(sea, p), vSky, f);
+        vBeach = mix(haze(shade(uBeachColor, vec3(0.0, 0.0, 1.0), p, 0.03, 8.0), p), vSky, f);
+#ifndef SEA_PIXEL
+        vec2 outside = max(max(uCourseRect.xy - p.xy, p.xy - uCourseRect.zw), 0.0);
+        if (length(outside) > uShore) lit = haze(sea, p);
+#endif
+#endif
         vSky = mix(lit, vSky, f);
         vGlow *= f; // the fragment adds it: mix(lit, sky + glow, f) in all
     }

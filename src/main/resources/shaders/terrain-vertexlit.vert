@@ -35,7 +35,7 @@ void main() {
     float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;
     vUnlit = aColor.rgb * ambient;
     vSunlit = aColor.rgb * uSunColor * diffuse + uSunColor * specular * uSpecularStrength;
-    vHaze = clamp(1.0 - exp(-length(uEye - aPosition) * 0.004), 0.0, 0.6);
+    vHaze = hazeAmount(length(uEye - aPosition));
     vec4 p = uLightViewProjection * vec4(aPosition + n * uShadowNormalOffset, 1.0);
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;
     vWorld = aPosition;

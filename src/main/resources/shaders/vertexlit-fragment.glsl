@@ -18,8 +18,10 @@ out vec4 fragColor;
 void main() {
     float sunlight = mapVisibilityAt(vShadowCoord) * ballVisibility(vWorld);
     vec3 color = vUnlit + vSunlit * sunlight;
+    // No material detail here: on llvmpipe one texture-array read per pixel cost the terrain and the
+    // obstacles several times their frame (docs/rendering.md); the high tier draws it.
 #ifdef TERRAIN_STRIPES
-    color *= stripeFactor(vWorld.x, vStripes);
+    color *= stripeFactor(vWorld.x, vStripes > 1.5 ? 0.0 : vStripes);
 #endif
-    fragColor = vec4(mix(color, vec3(0.78, 0.87, 0.96), vHaze), 1.0);
+    fragColor = vec4(mix(color, uFogColor, vHaze), 1.0);
 }

@@ -68,6 +68,19 @@ final class CourseFolders {
         return shipped;
     }
 
+    /** Where the classic tracks are read from: the settings' folder, else {@code <config>/classic}. */
+    static Path classicFolder(SettingsStore store, minigolf.game.UserSettings settings) {
+        String own = settings.classicFolder();
+        if (!own.isBlank()) {
+            try {
+                return Path.of(own.strip());
+            } catch (java.nio.file.InvalidPathException e) {
+                // not a path on this system: the default
+            }
+        }
+        return store.directory().resolve("classic");
+    }
+
     static List<CourseEntry> list(SettingsStore store) {
         Set<Path> shipped = shippedFolders();
         List<CourseEntry> out = new ArrayList<>();

@@ -5,6 +5,7 @@ import java.util.List;
 import minigolf.game.UserSettings;
 import minigolf.physics.World;
 import minigolf.render.AimView;
+import minigolf.render.BallTrail;
 import minigolf.render.BallView;
 import minigolf.render.CameraClearance;
 import minigolf.render.CupDrop;
@@ -32,6 +33,8 @@ final class CourseScene implements AutoCloseable {
     private final Particles effects = new Particles();
     /** The holed ball sinking into the cup (drawn until it is out of sight). */
     private final CupDrop cupDrop = new CupDrop();
+    /** Where the rolling ball was over the last half second. */
+    private final BallTrail trail = new BallTrail();
     private SceneRenderer renderer;
     private OrbitCamera camera;
     private World built;
@@ -85,6 +88,7 @@ final class CourseScene implements AutoCloseable {
         stale = false;
         built = world;
         effects.clear(); // a new hole: the last one's confetti stays behind
+        trail.clear();
         cupDrop.clear();
         if (renderer != null) renderer.close();
         renderer = null;
@@ -135,11 +139,23 @@ final class CourseScene implements AutoCloseable {
         if (moving) turnToHole = false;
     }
 
-    /** Draws the scene with these balls and aim, then the minimap at the top right. */
-    void draw(int fw, int fh, float time, List<BallView> balls, AimView aim) {
+    /**
+     * Draws the scene with these balls and aim, the ring round the ball to play ({@code marker},
+     * may be null) and the trail behind the ball rolling ({@code rolling}, may be null), then the
+     * minimap at the top right.
+     */
+    void draw(int fw, int fh, float time, List<BallView> balls, AimView aim, BallView marker, BallView rolling) {
         cupDrop.advanceTo(time);
         renderer.setBalls(balls);
         renderer.setAim(aim);
+        renderer.setMarker(marker);
+        if (rolling == null) {
+            trail.clear();
+        } else {
+            trail.add(time, rolling.x(), rolling.y(), rolling.z());
+        }
+        renderer.setTrail(trail.isEmpty() ? null : trail.path(),
+                rolling == null ? null : new float[]{rolling.red(), rolling.green(), rolling.blue()});
         effects.advanceTo(time);
         renderer.setEffects(effects.mesh());
         camera.ease(time - lastDrawTime > 0 ? time - lastDrawTime : 0); // the clearance's moves glide

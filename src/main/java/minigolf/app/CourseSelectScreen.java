@@ -1,8 +1,15 @@
 package minigolf.app;
 
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import minigolf.classic.ClassicIndex;
 import minigolf.ui.Gui;
+import minigolf.ui.GuiInt;
+import minigolf.ui.GuiString;
+import minigolf.ui.GuiTableFlags;
 import minigolf.ui.GuiWindowFlags;
 import minigolf.ui.Panels;
 
@@ -10,12 +17,22 @@ import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
 
 /**
  * Choosing what to play: the rounds, then the single holes for practice, each with a preview
- * rendered by the game's renderer (one a frame, so the screen stays responsive). The folders are
- * read again each time the screen opens: a course the editor saved a moment ago is listed.
+ * rendered by the game's renderer (one a frame, so the screen stays responsive), then the classic
+ * tracks imported with {@code minigolf import-tracks} (searched by name and category, the human
+ * average and best beside the players' own best). The folders are read again each time the
+ * screen opens: a course the editor saved a moment ago is listed.
  */
 final class CourseSelectScreen extends GameScreen {
+    /** Classic tracks listed a page at a time. */
+    static final int CLASSIC_PAGE = 12;
+    static final String[] CATEGORIES = {"all", "basic", "traditional", "modern", "hio", "short", "long"};
     private List<CourseFolders.CourseEntry> courses;
     private List<CourseFolders.RoundEntry> rounds;
+    private ClassicIndex.Index classic;
+    private String classicProblem;
+    private final GuiString classicSearch = new GuiString(64);
+    private final GuiInt classicCategory = new GuiInt(0);
+    private int classicPage;
 
     CourseSelectScreen(GameApp app) {
         super(app);
@@ -25,6 +42,37 @@ final class CourseSelectScreen extends GameScreen {
     public void show() {
         courses = null;
         rounds = null;
+        classic = null;
+        classicProblem = null;
+    }
+
+    /** The imported classic tracks (read the first time after the screen opened); an empty index if there are none. */
+    ClassicIndex.Index classic() {
+        if (classic == null) {
+            Path folder = CourseFolders.classicFolder(app.files().store(), app.settings());
+            classicProblem = null;
+            try {
+                classic = java.nio.file.Files.isRegularFile(folder.resolve("index.json")) ? ClassicIndex.read(folder)
+                        : new ClassicIndex.Index(List.of(), List.of());
+            } catch (IOException e) {
+                classic = new ClassicIndex.Index(List.of(), List.of());
+                classicProblem = e.getMessage();
+            }
+        }
+        return classic;
+    }
+
+    /** The classic tracks the search and the category let through. */
+    List<ClassicIndex.Entry> classicMatches() {
+        String category = classicCategory.get() == 0 ? null : CATEGORIES[classicCategory.get()];
+        List<ClassicIndex.Entry> out = new ArrayList<>();
+        for (ClassicIndex.Entry e : classic().tracks()) if (e.matches(classicSearch.get(), category)) out.add(e);
+        return out;
+    }
+
+    /** The key under which the players' scores on a classic track are kept (high scores, hole 0). */
+    static String scoreKey(ClassicIndex.Entry e) {
+        return "classic: " + e.folder();
     }
 
     /** The single courses offered (read from the folders the first time after the screen opened). */
@@ -83,8 +131,71 @@ final class CourseSelectScreen extends GameScreen {
             }
         }
         Gui.separator();
+        classicSection();
+        Gui.separator();
         if (Gui.button("Back")) app.setScreen(app.screens().mainMenu());
         Gui.end();
+    }
+
+    private void classicSection() {
+        ClassicIndex.Index index = classic();
+        Panels.heading("Classic tracks");
+        if (classicProblem != null) {
+            Gui.textWrapped(classicProblem);
+            return;
+        }
+        if (index.tracks().isEmpty()) {
+            Gui.textWrapped("None imported: minigolf import-tracks DIR reads the classic game's .track files into "
+                    + CourseFolders.classicFolder(app.files().store(), app.settings()) + " (docs/classic-tracks.md).");
+            return;
+        }
+        Gui.setNextItemWidth(220);
+        if (Gui.inputText("Search name or author", classicSearch)) classicPage = 0;
+        Gui.sameLine();
+        Gui.setNextItemWidth(130);
+        if (Gui.combo("Category", classicCategory, CATEGORIES)) classicPage = 0;
+        List<ClassicIndex.Entry> matches = classicMatches();
+        int pages = Math.max(1, (matches.size() + CLASSIC_PAGE - 1) / CLASSIC_PAGE);
+        classicPage = Math.min(classicPage, pages - 1);
+        List<String> names = app.settings().playerNames();
+        if (Gui.beginTable("##classic", 5, GuiTableFlags.RowBg | GuiTableFlags.SizingFixedFit)) {
+            Gui.tableSetupColumn("Track");
+            Gui.tableSetupColumn("Author");
+            Gui.tableSetupColumn("Human average");
+            Gui.tableSetupColumn("Human best");
+            Gui.tableSetupColumn("Your best");
+            Gui.tableHeadersRow();
+            for (ClassicIndex.Entry e : matches.subList(classicPage * CLASSIC_PAGE, Math.min(matches.size(), (classicPage + 1) * CLASSIC_PAGE))) {
+                Gui.tableNextRow();
+                Gui.tableSetColumnIndex(0);
+                if (Gui.selectable(e.name() + "##" + e.folder(), false)) selectClassic(e);
+                Gui.tableSetColumnIndex(1);
+                Gui.text(e.author());
+                Gui.tableSetColumnIndex(2);
+                Gui.text(Double.isNaN(e.averageStrokes()) ? "-" : String.format(Locale.ROOT, "%.1f", e.averageStrokes()));
+                Gui.tableSetColumnIndex(3);
+                Gui.text(e.bestStrokes() > 0 ? String.valueOf(e.bestStrokes()) : "-");
+                Gui.tableSetColumnIndex(4);
+                Integer mine = app.files().classicBest(scoreKey(e), names);
+                Gui.text(mine == null ? "-" : String.valueOf(mine));
+            }
+            Gui.endTable();
+        }
+        Gui.text(String.format(Locale.ROOT, "%d of %d tracks, page %d of %d", matches.size(), index.tracks().size(),
+                classicPage + 1, pages));
+        Gui.sameLine();
+        if (Gui.button("Previous page") && classicPage > 0) classicPage--;
+        Gui.sameLine();
+        if (Gui.button("Next page") && classicPage + 1 < pages) classicPage++;
+    }
+
+    void selectClassic(ClassicIndex.Entry e) {
+        try {
+            app.play().selectCourse(e.course(), scoreKey(e));
+            app.setScreen(app.screens().mainMenu());
+        } catch (minigolf.course.CourseException ex) {
+            app.say(ex.getMessage());
+        }
     }
 
     private void select(CourseFolders.CourseEntry c) {

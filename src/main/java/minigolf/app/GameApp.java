@@ -142,8 +142,10 @@ public final class GameApp implements WindowApp {
         host.resize(fw, fh);
         GameScreen s = current();
         scene.show(s.course(), s.course() == play.world() ? play.coursePath() : null, settings, fw, fh);
+        // Each world's quiet background loop (setAmbience does nothing when it already plays).
+        if (sounds != null) sounds.setAmbience(minigolf.theme.Themes.of(s.course().course().world()).ambience());
         s.directCamera(scene, scene.sinceLastFrame(time), (float) fw / Math.max(1, fh));
-        scene.draw(fw, fh, time, s.balls(), s.aim());
+        scene.draw(fw, fh, time, s.balls(), s.aim(), s.marker(), s.rolling());
         glViewport(0, 0, fw, fh);
         uiLayer.newFrame();
         float w = uiLayer.displayWidth(), h = uiLayer.displayHeight();
@@ -231,10 +233,15 @@ public final class GameApp implements WindowApp {
     /** A course point (x, y) on the terrain in interface pixels, or null when off screen (the bot's plan). */
     float[] toScreen(double x, double y) {
         World world = scene.world();
-        if (scene.camera() == null || world == null) return null;
+        if (world == null) return null;
         // A little above the ground, so the line is not hidden in the grass.
-        float z = (float) (world.terrain().height(x, y) + 0.03);
-        float[] p = scene.camera().project(new org.joml.Vector3f((float) x, (float) y, z), window.framebufferWidth(),
+        return toScreen(x, y, world.terrain().height(x, y) + 0.03);
+    }
+
+    /** A point (x, y, z) of the course in interface pixels, or null when off screen or before the first frame. */
+    float[] toScreen(double x, double y, double z) {
+        if (scene.camera() == null) return null;
+        float[] p = scene.camera().project(new org.joml.Vector3f((float) x, (float) y, (float) z), window.framebufferWidth(),
                 window.framebufferHeight());
         return uiLayer == null ? p : uiLayer.toInterface(p, window.framebufferWidth());
     }

@@ -41,18 +41,85 @@ abstract class GameScreen implements Screen {
             views.add(BallView.white(x, y, world.terrain().height(x, y)));
             return views;
         }
-        StrokeAnimator animator = app.play().animator();
-        int rolling = app.play().rollingSeat();
+        // The current player's ball last, so that it is drawn over any ball at the same spot.
+        int current = game.currentPlayer();
         for (int i = 0; i < game.players().size(); i++) {
-            PlayerState s = game.player(i);
-            if (s.status() == PlayerStatus.HOLED && i != rolling) continue;
-            boolean moving = i == rolling && animator != null;
-            double x = moving ? animator.x() : s.x(), y = moving ? animator.y() : s.y();
-            double z = moving ? animator.z() : world.terrain().height(x, y); // a chip's ball is drawn in the air
-            float[] c = PlayerColors.of(i);
-            views.add(new BallView((float) x, (float) y, (float) Math.max(0, z), c[0], c[1], c[2]));
+            if (i != current) addBall(views, game, i);
         }
+        if (current >= 0) addBall(views, game, current);
         return views;
+    }
+
+    /** Seat {@code seat}'s ball where it is (the rolling one where its animation has it); none once holed. */
+    private void addBall(List<BallView> views, Game game, int seat) {
+        BallView b = ball(game, seat);
+        if (b != null) views.add(b);
+    }
+
+    /** Seat {@code seat}'s ball as drawn, or null when it is in the cup. */
+    BallView ball(Game game, int seat) {
+        StrokeAnimator animator = app.play().animator();
+        // Online, the server's stroke is animated on the game as it was before it (no shot in flight there).
+        boolean moving = app.play().rollingSeat() == seat && animator != null;
+        PlayerState s = game.player(seat);
+        if (s.status() == PlayerStatus.HOLED && !moving) return null;
+        World world = course();
+        double x = moving ? animator.x() : s.x(), y = moving ? animator.y() : s.y();
+        double z = moving ? animator.z() : world.terrain().height(x, y); // a chip's ball is drawn in the air
+        float[] c = PlayerColors.of(seat);
+        return new BallView((float) x, (float) y, (float) Math.max(0, z), c[0], c[1], c[2]);
+    }
+
+    /** The ball rolling now (its trail is drawn), or null. */
+    BallView rolling() {
+        Game game = app.play().game();
+        int seat = app.play().rollingSeat();
+        if (game == null || seat < 0 || app.play().animator() == null) return null;
+        return ball(game, seat);
+    }
+
+    /** The ball ringed as the one to play (at rest, while the game goes on), or null. */
+    BallView marker() {
+        Game game = app.play().game();
+        if (game == null || game.isOver() || app.play().rollingSeat() >= 0 || game.currentPlayer() < 0) return null;
+        return ball(game, game.currentPlayer());
+    }
+
+    /** A name tag drawn: the player's name, where its plate's bottom centre stands (interface pixels), whether gold. */
+    record NameTag(String name, float x, float y, boolean current) {
+    }
+
+    /** The tags drawn by the last {@link #nameTags()} (for tests). */
+    private List<NameTag> lastTags = List.of();
+
+    List<NameTag> lastNameTags() {
+        return lastTags;
+    }
+
+    /** Draws a name tag over every ball in play, the current player's in gold (for the screens that show the game). */
+    void nameTags() {
+        List<NameTag> tags = new ArrayList<>();
+        lastTags = tags;
+        Game game = app.play().game();
+        if (game == null) return;
+        double lift = 3.2 * minigolf.render.ObjectsPass.visualBallRadius();
+        for (int i = 0; i < game.players().size(); i++) {
+            BallView b = ball(game, i);
+            if (b == null) continue;
+            float[] p = app.toScreen(b.x(), b.y(), b.z() + lift);
+            if (p == null) continue;
+            boolean current = i == game.currentPlayer() && !game.isOver();
+            float[] c = PlayerColors.of(i);
+            int text = current ? abgr(0.1f, 0.08f, 0.02f, 1f) : abgr(c[0], c[1], c[2], 1f);
+            int plate = current ? abgr(1f, 0.82f, 0.2f, 0.92f) : abgr(0.08f, 0.1f, 0.08f, 0.72f);
+            minigolf.ui.Gui.getBackgroundDrawList().addLabel(p[0], p[1], text, plate, game.players().get(i).name());
+            tags.add(new NameTag(game.players().get(i).name(), p[0], p[1], current));
+        }
+    }
+
+    /** An ABGR colour (ImGui's order) from RGBA in [0, 1]. */
+    static int abgr(float r, float g, float b, float a) {
+        return (Math.round(a * 255) << 24) | (Math.round(b * 255) << 16) | (Math.round(g * 255) << 8) | Math.round(r * 255);
     }
 
     /** The aim drawn (arrow and guide), or null. */

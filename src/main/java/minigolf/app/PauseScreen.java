@@ -14,6 +14,7 @@ final class PauseScreen extends GameScreen {
 
     @Override
     public void render(float w, float h) {
+        nameTags();
         app.hud().render(w, h, -1, 0);
         Panels.centre(w, h);
         Gui.begin("Paused", Panels.PANEL);

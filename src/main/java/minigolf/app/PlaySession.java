@@ -58,6 +58,8 @@ final class PlaySession {
     /** The course shown and played next: the chosen course, or the round's hole. */
     private World world;
     private Path coursePath;
+    /** The high-score key of the classic track being played, or null (docs/classic-tracks.md). */
+    private String classicKey;
     /** The round the next game plays (chosen in the menu), or null for the chosen course. */
     private Round roundToPlay;
     private RoundGame round;
@@ -162,11 +164,20 @@ final class PlaySession {
 
     /** Plays a course file from now on (single games); a broken file changes nothing. */
     void selectCourse(Path file) throws CourseException {
+        selectCourse(file, null);
+    }
+
+    /**
+     * As {@link #selectCourse(Path)}; {@code scoreKey} (not null: a classic track) is where the
+     * players' scores on it are kept in the high scores.
+     */
+    void selectCourse(Path file, String scoreKey) throws CourseException {
         World w = World.load(file);
         stopPlay();
         closeOnline();
         world = w;
         coursePath = file;
+        classicKey = scoreKey;
         roundToPlay = null;
         round = null;
         game = null;
@@ -189,6 +200,7 @@ final class PlaySession {
             }
             SavedGames.Loaded loaded = save.game();
             round = null;
+            classicKey = null;
             world = loaded.world();
             coursePath = null;
             game = loaded.resume();
@@ -257,6 +269,7 @@ final class PlaySession {
                 say.accept(game.players().get(lastStroke.player()).name() + ": " + describe(lastStroke));
                 if (game.isOver()) {
                     if (round != null) files.recordScores(round, round.finishHole());
+                    else if (classicKey != null) files.recordClassic(classicKey, game);
                     return Progress.OVER;
                 }
                 progress = Progress.STROKE_ENDED;

@@ -13,6 +13,7 @@ import java.util.stream.Stream;
 import minigolf.game.AudioSettings;
 import minigolf.game.Game;
 import minigolf.game.HighScores;
+import minigolf.game.Player;
 import minigolf.game.RoundGame;
 import minigolf.game.SaveGameException;
 import minigolf.game.SavedGames;
@@ -114,6 +115,44 @@ final class PlayerFiles {
             return;
         }
         if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+    }
+
+    /**
+     * A single game on a classic track is over: the human players' scores go into the high scores
+     * under {@code key} (hole 0), so the course select shows each player's best beside the human
+     * average and best of the original game.
+     */
+    void recordClassic(String key, Game game) {
+        if (highScores == null || !game.isOver()) return;
+        int[] all = game.scorecard().lines().stream().mapToInt(minigolf.game.ScoreLine::score).toArray();
+        List<Player> humans = new ArrayList<>();
+        List<Integer> scores = new ArrayList<>();
+        for (int s = 0; s < game.players().size(); s++) {
+            if (game.players().get(s).isBot()) continue;
+            humans.add(game.players().get(s));
+            scores.add(all[s]);
+        }
+        if (humans.isEmpty()) return;
+        List<HighScores.Achievement> news = highScores.recordHole(key, 0, humans,
+                scores.stream().mapToInt(Integer::intValue).toArray());
+        try {
+            highScores.save(HighScores.file(store.directory()));
+        } catch (SaveGameException e) {
+            say.accept("scores not saved: " + e.getMessage());
+            return;
+        }
+        if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+    }
+
+    /** The best score any of {@code names} has on classic track {@code key}, or null. */
+    Integer classicBest(String key, List<String> names) {
+        if (highScores == null) return null;
+        Integer best = null;
+        for (String n : names) {
+            Integer b = highScores.personalBest(key, 0, n);
+            if (b != null && (best == null || b < best)) best = b;
+        }
+        return best;
     }
 
     /** Saves the round (when one is played) or the game into the saves folder under a dated name. */

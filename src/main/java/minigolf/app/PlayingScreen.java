@@ -93,6 +93,7 @@ class PlayingScreen extends GameScreen {
 
     @Override
     public void render(float w, float h) {
+        nameTags();
         app.hud().render(w, h, aimSpeed(), loft);
         if (canAim() && app.play().botTurn() == null) shotPanel(w, h);
         if (app.play().online() != null) onlinePanel.render(app.play().online(), w, h);

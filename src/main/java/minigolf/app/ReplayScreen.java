@@ -97,6 +97,17 @@ final class ReplayScreen extends GameScreen {
     }
 
     @Override
+    BallView rolling() {
+        List<BallView> b = balls();
+        return b.isEmpty() ? null : b.get(0);
+    }
+
+    @Override
+    BallView marker() {
+        return null;
+    }
+
+    @Override
     void directCamera(CourseScene scene, float dt, float aspect) {
         StrokeAnimator a = replayer.animator();
         if (a != null) scene.follow(a.x(), a.y(), false);

@@ -7,6 +7,7 @@ import minigolf.physics.Integrator;
 import minigolf.ui.Gui;
 import minigolf.ui.GuiBool;
 import minigolf.ui.GuiInt;
+import minigolf.ui.GuiString;
 import minigolf.ui.Panels;
 import minigolf.ui.Screen;
 
@@ -27,6 +28,7 @@ final class SettingsScreen extends GameScreen {
     private final GuiBool vsync = new GuiBool(true);
     private final GuiBool realistic = new GuiBool(false);
     private final GuiBool hideFriction = new GuiBool(false);
+    private final GuiString classicFolder = new GuiString(512);
     private final GuiInt frameLimit = new GuiInt(60);
     private final GuiInt strokeLimit = new GuiInt(Game.DEFAULT_STROKE_LIMIT);
     private final float[] mouseSpeed = {1f};
@@ -56,6 +58,7 @@ final class SettingsScreen extends GameScreen {
         vsync.set(s.vsync());
         realistic.set(s.noisePosition() > 0 || s.noiseVelocity() > 0);
         hideFriction.set(s.hideFrictionFromBots());
+        classicFolder.set(s.classicFolder());
         frameLimit.set(s.frameLimit());
         strokeLimit.set(s.strokeLimit());
         mouseSpeed[0] = (float) s.mouseSpeed();
@@ -89,6 +92,9 @@ final class SettingsScreen extends GameScreen {
         if (Gui.isItemHovered()) Gui.setTooltip("While aiming, dots show where the ball goes in its first second");
         Gui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
         Gui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
+        Gui.setNextItemWidth(300);
+        Gui.inputText("Classic tracks folder", classicFolder);
+        if (Gui.isItemHovered()) Gui.setTooltip("What minigolf import-tracks wrote; empty: <config>/classic");
         Gui.textColored(1f, 0.85f, 0.3f, 1f, "Display");
         String[] sizeLabels = new String[sizes.length];
         for (int i = 0; i < sizes.length; i++) {
@@ -141,7 +147,7 @@ final class SettingsScreen extends GameScreen {
             UserSettings s = app.settings().withIntegrator(Integrator.values()[integrator.get()])
                     .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
                     .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
-                    .withHideFrictionFromBots(hideFriction.get())
+                    .withHideFrictionFromBots(hideFriction.get()).withClassicFolder(classicFolder.get().strip())
                     .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get())
                     .withFullscreen(fullscreen.get()).withGraphics(UserSettings.GRAPHICS.get(graphics.get()))
                     .withWindowSize(sizes[windowSize.get()][0], sizes[windowSize.get()][1]);

@@ -1,5 +1,7 @@
 package minigolf.app;
 
+import minigolf.theme.Theme;
+
 import java.util.Random;
 
 /**
@@ -24,8 +26,100 @@ public final class SoundSynth {
         CUP,
         /** A hole in one. */
         APPLAUSE,
-        /** Quiet wind and the odd bird, looped. */
+        /** Quiet wind and the odd bird, looped (Meadowbrook's; each world has its own: {@link #ambience(Theme.Ambience)}). */
         AMBIENCE
+    }
+
+    /**
+     * A world's background loop (about six seconds, seamless): Meadowbrook's wind and birds, the
+     * seaside's surf and gulls, the canyon's dry wind whistling over rock, winter's hissing gusts
+     * and a far-off bell; silence for {@link Theme.Ambience#NONE}.
+     */
+    public static short[] ambience(Theme.Ambience a) {
+        return switch (a) {
+            case BIRDS -> ambience();
+            case WAVES -> loop(waves());
+            case DESERT_WIND -> loop(desertWind());
+            case WINTER_WIND -> loop(winterWind());
+            case NONE -> new short[RATE];
+        };
+    }
+
+    /** Surf: noise swelling and breaking every few seconds, low-passed, with two gull cries. */
+    private static float[] waves() {
+        int n = 6 * RATE;
+        float[] out = new float[n];
+        Random r = new Random(11);
+        double lo = 0, lo2 = 0;
+        for (int i = 0; i < n; i++) {
+            double t = i / (double) RATE;
+            lo += 0.05 * ((r.nextDouble() * 2 - 1) - lo);
+            lo2 += 0.05 * (lo - lo2);
+            // Two breakers in the loop: a quick rise, then a long hiss as the water runs back.
+            double phase = (t % 3.0) / 3.0;
+            double swell = phase < 0.15 ? phase / 0.15 : Math.exp(-(phase - 0.15) * 3.2);
+            out[i] = (float) (2.2 * lo2 * (0.25 + 0.75 * swell) + 0.25 * lo * swell);
+        }
+        for (double t0 : new double[]{1.7, 4.4}) { // a gull: a falling, wavering cry
+            int start = (int) (t0 * RATE);
+            for (int i = 0; i < 0.35 * RATE; i++) {
+                double t = i / (double) RATE, f = 1900 - 1400 * t + 120 * Math.sin(2 * Math.PI * 14 * t);
+                out[start + i] += (float) (0.035 * Math.sin(2 * Math.PI * f * t) * Math.sin(Math.PI * t / 0.35));
+            }
+        }
+        return out;
+    }
+
+    /** Dry wind: low rumbling noise with a hollow whistle that rises and falls with the gusts. */
+    private static float[] desertWind() {
+        int n = 6 * RATE;
+        float[] out = new float[n];
+        Random r = new Random(23);
+        double lo = 0, lo2 = 0, bp = 0, bpv = 0;
+        for (int i = 0; i < n; i++) {
+            double t = i / (double) RATE;
+            double noise = r.nextDouble() * 2 - 1;
+            lo += 0.01 * (noise - lo);
+            lo2 += 0.01 * (lo - lo2);
+            double gust = 0.55 + 0.45 * Math.sin(2 * Math.PI * t / 6.0) * Math.sin(2 * Math.PI * t / 3.0);
+            // A resonator (two-pole band-pass) near 420 Hz gliding with the gust: the whistle over rock.
+            double f = 380 + 80 * gust, w = 2 * Math.PI * f / RATE;
+            bpv += w * (noise * 0.02 - bp) - 0.004 * bpv;
+            bp += w * bpv;
+            out[i] = (float) (3.0 * lo2 * gust + 0.8 * bp * gust * gust);
+        }
+        return out;
+    }
+
+    /** Winter wind: a brighter hiss in gusts, and a church bell far away once in the loop. */
+    private static float[] winterWind() {
+        int n = 6 * RATE;
+        float[] out = new float[n];
+        Random r = new Random(37);
+        double lo = 0, hi = 0, prev = 0;
+        for (int i = 0; i < n; i++) {
+            double t = i / (double) RATE;
+            double noise = r.nextDouble() * 2 - 1;
+            lo += 0.06 * (noise - lo);
+            hi = 0.9 * (hi + noise - prev); // a high-pass for the hiss
+            prev = noise;
+            double gust = 0.4 + 0.6 * Math.pow(Math.sin(Math.PI * t / 6.0), 2);
+            out[i] = (float) ((1.2 * lo + 0.08 * hi) * gust);
+        }
+        for (double f : new double[]{392, 784, 1176, 940}) ping(out, 2.5, f, 0.02 / Math.sqrt(f / 392), 1.4);
+        return out;
+    }
+
+    /** Cross-fades the end into the start (a seamless loop) and converts to samples at a quiet peak. */
+    private static short[] loop(float[] out) {
+        int n = out.length, fade = RATE / 10;
+        for (int i = 0; i < fade; i++) {
+            double w = i / (double) fade;
+            out[i] = (float) (out[i] * w + out[n - fade + i] * (1 - w));
+        }
+        float[] looped = new float[n - fade];
+        System.arraycopy(out, 0, looped, 0, n - fade);
+        return pcm(looped);
     }
 
     private SoundSynth() {

@@ -33,6 +33,9 @@ public final class Sounds implements AutoCloseable {
     private final int[] voices = new int[VOICES];
     private int nextVoice;
     private int ambienceSource;
+    /** The world whose loop plays, and its buffer (0 while Meadowbrook's of {@link #buffers} plays). */
+    private minigolf.theme.Theme.Ambience ambience = minigolf.theme.Theme.Ambience.BIRDS;
+    private int worldAmbience;
     private AudioSettings volumes;
 
     private Sounds(AudioSettings volumes) {
@@ -115,6 +118,19 @@ public final class Sounds implements AutoCloseable {
         applyAmbience();
     }
 
+    /** Plays this world's background loop instead (the ambience volume still decides how loud). */
+    public void setAmbience(minigolf.theme.Theme.Ambience a) {
+        if (isSilent() || a == ambience) return;
+        ambience = a;
+        alSourceStop(ambienceSource);
+        alSourcei(ambienceSource, AL_BUFFER, 0);
+        if (worldAmbience != 0) alDeleteBuffers(worldAmbience);
+        worldAmbience = alGenBuffers();
+        alBufferData(worldAmbience, AL_FORMAT_MONO16, SoundSynth.ambience(a), SoundSynth.RATE);
+        alSourcei(ambienceSource, AL_BUFFER, worldAmbience);
+        applyAmbience();
+    }
+
     private void applyAmbience() {
         if (isSilent()) return;
         float gain = (float) (volumes.master() * volumes.ambience() * 0.25);
@@ -143,6 +159,7 @@ public final class Sounds implements AutoCloseable {
         if (context != 0) {
             for (int v : voices) if (v != 0) AL10.alDeleteSources(v);
             if (ambienceSource != 0) AL10.alDeleteSources(ambienceSource);
+            if (worldAmbience != 0) AL10.alDeleteBuffers(worldAmbience);
             for (int b : buffers.values()) AL10.alDeleteBuffers(b);
             ALC10.alcMakeContextCurrent(0);
             ALC10.alcDestroyContext(context);

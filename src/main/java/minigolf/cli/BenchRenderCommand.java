@@ -2,7 +2,12 @@ package minigolf.cli;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
+import minigolf.course.CourseException;
+import minigolf.game.Round;
+import minigolf.game.RoundLoader;
 import minigolf.physics.World;
 import minigolf.render.Offscreen;
 import minigolf.render.OrbitCamera;
@@ -18,13 +23,18 @@ import picocli.CommandLine.Spec;
 import static org.lwjgl.opengl.GL11.*;
 
 @Command(name = "bench-render",
-        description = "Renders N frames of the full scene off-screen (after a warm-up) and prints milliseconds per frame.")
+        description = "Renders N frames of the full scene off-screen (after a warm-up) and prints milliseconds per frame;"
+                + " given a round file, does so for every hole and can write a table (--table).")
 final class BenchRenderCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
+    @Parameters(index = "0", paramLabel = "COURSE|ROUND", description = "A course file, or a round file (every hole is timed).")
     Path course;
+
+    @Option(names = "--table", paramLabel = "FILE.md",
+            description = "Also write a Markdown table of the holes' times, with the load average and the commit (default: none).")
+    Path table;
 
     @Option(names = "--frames", paramLabel = "N", description = "Frames to time after the warm-up (default: ${DEFAULT-VALUE}).")
     int frames = 200;
@@ -64,13 +74,69 @@ final class BenchRenderCommand implements Callable<Integer> {
             throw new UserError("--quality: must be auto, high or software, got '" + quality + "'");
         }
         ImageSize s = ImageSize.parse("--size", size);
-        World world = CourseArgument.load(course);
-        ObjectNode out = Json.object();
+        List<Path> files = new ArrayList<>();
+        List<String> pars = new ArrayList<>();
+        boolean round = isRound(course);
+        if (round) {
+            try {
+                Round r = RoundLoader.load(course);
+                Path folder = course.toAbsolutePath().getParent();
+                for (Round.Hole h : r.holes()) {
+                    files.add(folder.resolve(h.course()).normalize());
+                    pars.add(String.valueOf(h.par()));
+                }
+            } catch (CourseException e) {
+                throw new UserError(e.getMessage());
+            }
+        } else {
+            files.add(course);
+        }
+        double[] load = loadAverage();
         RenderQuality q = chosen != null ? chosen : RenderQuality.probe();
         int msaa = samples != null ? samples : q.samples();
+        List<ObjectNode> results = new ArrayList<>();
+        for (Path file : files) results.add(bench(file, CourseArgument.load(file), s, q, msaa));
+        ObjectNode out;
+        if (round) {
+            out = Json.object();
+            out.put("round", course.getFileName().toString());
+            var holes = out.putArray("holes");
+            results.forEach(holes::add);
+        } else {
+            out = results.get(0);
+        }
+        if (load != null) {
+            var l = out.putArray("loadAverage");
+            for (double v : load) l.add(v);
+            double[] after = loadAverage();
+            if (after != null) {
+                var a = out.putArray("loadAverageAfter");
+                for (double v : after) a.add(v);
+            }
+        }
+        if (table != null) writeTable(files, pars, results, s, q, msaa, load);
+        spec.commandLine().getOut().println(Json.write(out));
+        return 0;
+    }
+
+    /**
+     * Whether the file is a round (a JSON object with "holes") rather than a course. Read as every
+     * file from others is (a regular UTF-8 file under the course limit; never /dev/zero or a FIFO).
+     */
+    static boolean isRound(Path file) {
+        try {
+            String text = minigolf.io.TextFiles.read(file, minigolf.course.Limits.COURSE_FILE_BYTES);
+            return text.contains("\"holes\"") && !text.contains("\"terrain\"");
+        } catch (java.io.IOException | RuntimeException e) {
+            return false; // the course loader reports what is wrong with it
+        }
+    }
+
+    private ObjectNode bench(Path file, World world, ImageSize s, RenderQuality q, int msaa) {
+        ObjectNode out = Json.object();
         try (Offscreen off = new Offscreen(s.width(), s.height(), msaa);
              SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(), TerrainMesh.ColorMode.GREEN, q)) {
-            renderer.setCourseFolder(course.toAbsolutePath().getParent());
+            renderer.setCourseFolder(file.toAbsolutePath().getParent());
             if (waterScale != null) renderer.setWaterTargetScale(waterScale);
             renderer.setWaterReflections(!noReflections);
             renderer.setShadows(!noShadows);
@@ -115,10 +181,50 @@ final class BenchRenderCommand implements Callable<Integer> {
             out.put("shadows", !noShadows);
             out.put("reflections", !noReflections);
             out.put("course", world.course().name());
+            out.put("world", world.course().world());
             out.put("renderer", glGetString(GL_RENDERER));
         }
-        spec.commandLine().getOut().println(Json.write(out));
-        return 0;
+        return out;
+    }
+
+    /** The 1, 5 and 15 minute load averages (Linux), or null. */
+    static double[] loadAverage() {
+        try {
+            String[] f = java.nio.file.Files.readString(Path.of("/proc/loadavg")).trim().split("\\s+");
+            return new double[]{Double.parseDouble(f[0]), Double.parseDouble(f[1]), Double.parseDouble(f[2])};
+        } catch (java.io.IOException | RuntimeException e) {
+            return null;
+        }
+    }
+
+    /** The holes' times as a Markdown table, with how they were measured (size, quality, renderer, load, commit). */
+    private void writeTable(List<Path> files, List<String> pars, List<ObjectNode> results, ImageSize s, RenderQuality q, int msaa,
+                            double[] load) {
+        StringBuilder t = new StringBuilder();
+        String renderer = results.isEmpty() ? "?" : results.get(0).path("renderer").asText();
+        t.append("`minigolf bench-render ").append(course).append(" --quality ").append(q.name()).append(" --size ")
+                .append(s.width()).append('x').append(s.height()).append(" --frames ").append(frames).append("`: ")
+                .append(renderer).append(", ").append(msaa).append("x MSAA, built from commit ").append(VersionInfo.commit())
+                .append(load == null ? "" : String.format(java.util.Locale.ROOT, ", load average %.2f / %.2f / %.2f (1/5/15 min) at the start", load[0], load[1], load[2]))
+                .append(".\n\n");
+        t.append("| hole | course | par | ms a frame | CPU ms a frame | fps |\n|---|---|---:|---:|---:|---:|\n");
+        double worst = 0, worstCpu = 0;
+        for (int i = 0; i < results.size(); i++) {
+            ObjectNode r = results.get(i);
+            double ms = r.path("msPerFrame").asDouble(), cpu = r.path("cpuMsPerFrame").asDouble(Double.NaN);
+            worst = Math.max(worst, ms);
+            if (!Double.isNaN(cpu)) worstCpu = Math.max(worstCpu, cpu);
+            t.append("| ").append(i + 1).append(" | ").append(r.path("course").asText()).append(" | ")
+                    .append(i < pars.size() ? pars.get(i) : "").append(" | ").append(r.path("msPerFrame").asText()).append(" | ")
+                    .append(Double.isNaN(cpu) ? "" : r.path("cpuMsPerFrame").asText()).append(" | ").append(r.path("fps").asText())
+                    .append(" |\n");
+        }
+        t.append(String.format(java.util.Locale.ROOT, "\nSlowest hole: %.2f ms a frame (wall), %.1f ms of CPU a frame.\n", worst, worstCpu));
+        try {
+            minigolf.io.AtomicFile.write(table, t.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        } catch (java.io.IOException e) {
+            throw new UserError("--table: cannot write " + table + ": " + e.getMessage());
+        }
     }
 
     /** One game-like frame: the camera turns slowly, the water moves, the minimap is drawn; the GPU finishes it. */

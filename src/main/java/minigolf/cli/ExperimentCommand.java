@@ -39,7 +39,7 @@ final class ExperimentCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--suite", required = true, paramLabel = "DIR", description = "Folder of course files (*.json).")
+    @Option(names = "--suite", required = true, paramLabel = "DIR", description = "Folder of course files (*.json) and of course folders holding a course.json (as import-tracks writes under courses/).")
     Path suite;
 
     @Option(names = "--bots", paramLabel = "a,b,c|all", description = "Bots to compare (default: ${DEFAULT-VALUE}).")
@@ -227,19 +227,25 @@ final class ExperimentCommand implements Callable<Integer> {
         return names;
     }
 
+    /** The course file of a course folder in a suite. */
+    static final String FOLDER_COURSE = "course.json";
+
     /** Loads the suite's course files (sorted by name) and the SHA-256 of each file's bytes. */
     static void loadSuite(Path dir, List<Experiment.SuiteCourse> courses, List<Manifest.CourseFile> files) {
         if (!Files.isDirectory(dir)) throw new UserError("--suite: " + dir + ": no such folder");
         List<Path> paths;
         try (Stream<Path> listing = Files.list(dir)) {
-            paths = listing.filter(p -> p.getFileName().toString().endsWith(".json")).sorted().toList();
+            // Course files, and folders holding a course.json with its models (as import-tracks writes them).
+            paths = listing.map(p -> Files.isDirectory(p) ? p.resolve(FOLDER_COURSE) : p)
+                    .filter(p -> p.getFileName().toString().endsWith(".json") && Files.isRegularFile(p)).sorted().toList();
         } catch (IOException e) {
             throw new UserError("--suite: " + dir + ": cannot list: " + e.getMessage());
         }
         if (paths.isEmpty()) throw new UserError("--suite: " + dir + ": no course files (*.json)");
         for (Path f : paths) {
             String file = f.getFileName().toString();
-            String name = file.substring(0, file.length() - 5);
+            String name = file.equals(FOLDER_COURSE) && !f.getParent().equals(dir) ? f.getParent().getFileName().toString()
+                    : file.substring(0, file.length() - 5);
             byte[] bytes;
             try {
                 bytes = Files.readAllBytes(f);

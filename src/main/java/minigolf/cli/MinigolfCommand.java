@@ -18,9 +18,9 @@ import minigolf.render.NoOpenGlException;
         description = "3D minigolf: play, simulate shots and benchmark the physics.",
         subcommands = {PlayCommand.class, SimulateCommand.class, BenchPhysicsCommand.class, BenchAccuracyCommand.class,
                 RenderCommand.class,
-                BenchRenderCommand.class, SolveCommand.class, ExperimentCommand.class, ExperimentMergeCommand.class,
+                BenchRenderCommand.class, ParCheckCommand.class, SolveCommand.class, ExperimentCommand.class, ExperimentMergeCommand.class,
                 EditCommand.class, BenchEditorCommand.class, BenchLimitsCommand.class, ServerCommand.class, BenchServerCommand.class,
-                JoinCommand.class})
+                JoinCommand.class, ImportTracksCommand.class, ClassicReportCommand.class})
 public final class MinigolfCommand implements Callable<Integer> {
 
     @Override

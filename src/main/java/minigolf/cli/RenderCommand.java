@@ -15,7 +15,7 @@ import picocli.CommandLine.Parameters;
 
 @Command(name = "render", description = "Renders a still of a course off-screen, saves it as PNG and exits.")
 final class RenderCommand implements Callable<Integer> {
-    enum View { orbit, top }
+    enum View { orbit, top, overview }
 
     @Parameters(index = "0", paramLabel = "COURSE", description = "The course file (JSON).")
     Path course;
@@ -27,7 +27,8 @@ final class RenderCommand implements Callable<Integer> {
     String size = "1280x720";
 
     @Option(names = "--view", paramLabel = "VIEW",
-            description = "orbit: behind the ball towards the hole; top: from above (default: ${DEFAULT-VALUE}).")
+            description = "orbit: behind the ball towards the hole; top: from above; overview: from further back and to the"
+                    + " side, lower, so the course's world and skyline show (default: ${DEFAULT-VALUE}).")
     View view = View.orbit;
 
     @Option(names = "--height-map", description = "Colour the terrain by altitude (default: off).")
@@ -72,6 +73,11 @@ final class RenderCommand implements Callable<Integer> {
             return OrbitCamera.topDown(world.course(), world.terrain(),
                     new Vector3f(cx, cy, (float) Math.max(0, world.terrain().height(cx, cy))), aspect);
         }
-        return OrbitCamera.behindBall(world.course(), world.terrain(), aspect);
+        OrbitCamera cam = OrbitCamera.behindBall(world.course(), world.terrain(), aspect);
+        if (view == View.overview) {
+            cam.rotate(0.5f, -0.18f); // round to the side and lower: the horizon comes into the picture
+            cam.zoom(-4);
+        }
+        return cam;
     }
 }

@@ -14,11 +14,20 @@ public final class VersionInfo implements IVersionProvider {
 
     /** The build's version, or "unknown" when the classes run without the build's resources. */
     public static String version() {
+        return property("version");
+    }
+
+    /** The git commit the classes were built from ("-dirty" with uncommitted changes), or "unknown". */
+    public static String commit() {
+        return property("commit");
+    }
+
+    private static String property(String key) {
         try (InputStream in = VersionInfo.class.getResourceAsStream("/minigolf/version.properties")) {
             if (in == null) return "unknown";
             Properties p = new Properties();
             p.load(in);
-            return p.getProperty("version", "unknown");
+            return p.getProperty(key, "unknown");
         } catch (IOException e) {
             return "unknown";
         }

@@ -11,6 +11,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import minigolf.io.TextFiles;
+import minigolf.theme.Themes;
 
 import java.nio.charset.CharacterCodingException;
 import java.nio.file.AccessDeniedException;
@@ -34,7 +35,7 @@ import java.util.function.Function;
  */
 public final class CourseLoader {
     static final List<String> TOP_FIELDS = List.of(
-            "format", "name", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles");
+            "format", "name", "world", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles");
     static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
     static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction",
             "deletedCells");
@@ -42,7 +43,9 @@ public final class CourseLoader {
     static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model",
             "ballRadius", "ballMass", "dragCoefficient", "airDensity", "groundRestitution");
     static final List<String> HOLE_FIELDS = List.of("position", "radius", "rule", "captureSpeed");
-    static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction");
+    static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction", "hazard");
+    static final List<String> HAZARD_FIELDS = List.of("kind", "when", "returnTo", "penalty");
+    static final List<String> CELLS_FIELDS = List.of("type", "origin", "size", "columns", "rows", "spans");
     static final List<String> RECT_FIELDS = List.of("type", "min", "max");
     static final List<String> CIRCLE_FIELDS = List.of("type", "center", "radius");
     static final List<String> POLYGON_FIELDS = List.of("type", "points");
@@ -223,6 +226,10 @@ public final class CourseLoader {
             knownFields(o, "", TOP_FIELDS);
             String name = string(required(o, "", "name"), "name");
             if (name.isBlank()) throw error("name", "must be a non-empty string");
+            String world = o.has("world") ? string(o.get("world"), "world") : Themes.DEFAULT_ID;
+            if (Themes.byId(world) == null) {
+                throw error("world", "expected one of " + String.join(", ", Themes.ids()) + ", got " + show(o.get("world")));
+            }
             TerrainSpec terrain = terrainReader.terrain(required(o, "", "terrain"), "terrain");
             Bounds bounds = bounds(required(o, "", "bounds"), "bounds");
             PhysicsSettings physics = physics(required(o, "", "physics"), "physics");
@@ -230,7 +237,7 @@ public final class CourseLoader {
             Hole hole = hole(required(o, "", "hole"), "hole");
             List<Zone> zones = obstacleReader.zones(o.get("zones"), "zones");
             List<Obstacle> obstacles = obstacleReader.obstacles(o.get("obstacles"), "obstacles");
-            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles);
+            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles, world);
         }
 
         // ---- terrain ----

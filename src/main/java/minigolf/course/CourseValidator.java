@@ -58,6 +58,22 @@ public final class CourseValidator {
             checkNotDeleted(course.start(), "start", g, sourceName);
             checkNotDeleted(course.hole().position(), "hole.position", g, sourceName);
         }
+        checkNoHazard(course.start(), "start", course, sourceName);
+    }
+
+    /**
+     * The start may not lie in a hazard zone the ball ends in on entering: the first stroke would
+     * end before it began (one it ends in only at rest, as shallow water, is allowed).
+     */
+    private static void checkNoHazard(Vec2 p, String path, Course course, String sourceName) throws CourseException {
+        Zone decisive = null;
+        for (Zone z : course.zones()) {
+            if (z.shape().contains(p.x(), p.y())) decisive = z; // later zones win
+        }
+        if (decisive != null && decisive.hazard() != null && decisive.hazard().when() == Zone.Hazard.When.ENTER) {
+            throw new CourseException(sourceName, path, point(p) + " is in a " + decisive.hazard().kind().jsonName()
+                    + " zone");
+        }
     }
 
     private static void checkNotDeleted(Vec2 p, String path, TerrainSpec.HeightGrid g, String sourceName)

@@ -1,5 +1,7 @@
 package minigolf.course;
 
+import minigolf.theme.Themes;
+
 import com.fasterxml.jackson.core.io.JsonStringEncoder;
 
 import java.io.IOException;
@@ -27,6 +29,8 @@ public final class CourseWriter {
         sb.append("{\n");
         sb.append("  \"format\": ").append(course.format()).append(",\n");
         sb.append("  \"name\": ").append(quote(require(course.name(), "name"))).append(",\n");
+        // The world only where it is not the default: older files stay as they were.
+        if (!Themes.DEFAULT_ID.equals(course.world())) sb.append("  \"world\": ").append(quote(course.world())).append(",\n");
         sb.append("  \"terrain\": ");
         terrain(sb, require(course.terrain(), "terrain"));
         sb.append(",\n");
@@ -74,8 +78,15 @@ public final class CourseWriter {
                 sb.append("    { \"shape\": ");
                 shape(sb, require(z.shape(), zp + ".shape"), zp + ".shape");
                 sb.append(", \"kineticFriction\": ").append(num(z.kineticFriction(), zp + ".kineticFriction"))
-                        .append(", \"staticFriction\": ").append(num(z.staticFriction(), zp + ".staticFriction"))
-                        .append(" }").append(i + 1 < zones.size() ? ",\n" : "\n");
+                        .append(", \"staticFriction\": ").append(num(z.staticFriction(), zp + ".staticFriction"));
+                if (z.hazard() != null) {
+                    Zone.Hazard hz = z.hazard();
+                    sb.append(", \"hazard\": { \"kind\": \"").append(hz.kind().jsonName())
+                            .append("\", \"when\": \"").append(hz.when().jsonName())
+                            .append("\", \"returnTo\": \"").append(hz.returnTo().jsonName())
+                            .append("\", \"penalty\": ").append(hz.penalty()).append(" }");
+                }
+                sb.append(" }").append(i + 1 < zones.size() ? ",\n" : "\n");
             }
             sb.append("  ],\n");
         }
@@ -189,6 +200,18 @@ public final class CourseWriter {
             sb.append("{ \"type\": \"circle\", \"center\": ");
             vec(sb, require(c.center(), path + ".center"), path + ".center");
             sb.append(", \"radius\": ").append(num(c.radius(), path + ".radius")).append(" }");
+        } else if (s instanceof Shape.Cells c) {
+            sb.append("{ \"type\": \"cells\", \"origin\": ");
+            vec(sb, require(c.origin(), path + ".origin"), path + ".origin");
+            sb.append(", \"size\": ").append(num(c.size(), path + ".size"))
+                    .append(", \"columns\": ").append(c.columns()).append(", \"rows\": ").append(c.rows())
+                    .append(", \"spans\": [");
+            int[] spans = c.spans();
+            for (int i = 0; i < spans.length; i += 3) {
+                if (i > 0) sb.append(", ");
+                sb.append('[').append(spans[i]).append(", ").append(spans[i + 1]).append(", ").append(spans[i + 2]).append(']');
+            }
+            sb.append("] }");
         } else {
             Shape.Polygon p = (Shape.Polygon) s;
             sb.append("{ \"type\": \"polygon\", \"points\": [");

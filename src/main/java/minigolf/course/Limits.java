@@ -33,6 +33,10 @@ public final class Limits {
     public static final int POLYGON_POINTS = 1_000;
     /** Points of all polygon zones together (the friction lookup visits them on every step). */
     public static final int ALL_POLYGON_POINTS = 10_000;
+    /** Cells of one cells shape (a classic track's 735 x 375 pixels is 275,625). */
+    public static final int CELLS = 1 << 20;
+    /** Row spans of one cells shape. */
+    public static final int CELL_SPANS = 200_000;
     /** Vertices (v lines) of one .obj model. */
     public static final int MODEL_VERTICES = ObjParser.MAX_VERTICES;
     /** Triangles of one .obj model (after polygons are split). */

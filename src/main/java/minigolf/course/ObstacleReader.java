@@ -39,7 +39,9 @@ final class ObstacleReader extends CourseJsonReader {
             String kp = join(zp, "kineticFriction"), sp = join(zp, "staticFriction");
             double kinetic = nonNegative(number(required(o, zp, "kineticFriction"), kp), kp);
             double stat = nonNegative(number(required(o, zp, "staticFriction"), sp), sp);
-            zones.add(new Zone(shape, kinetic, stat));
+            JsonNode h = o.get("hazard");
+            Zone.Hazard hazard = h == null || h.isNull() ? null : hazard(h, join(zp, "hazard"));
+            zones.add(new Zone(shape, kinetic, stat, hazard));
         }
         return zones;
     }
@@ -49,8 +51,9 @@ final class ObstacleReader extends CourseJsonReader {
         String tp = join(path, "type");
         JsonNode t = required(o, path, "type");
         String type = t.isTextual() ? t.textValue() : null;
-        if (type == null || !(type.equals("rect") || type.equals("circle") || type.equals("polygon"))) {
-            throw error(tp, "expected one of rect, circle, polygon, got " + show(t));
+        if (type == null || !(type.equals("rect") || type.equals("circle") || type.equals("polygon")
+                || type.equals("cells"))) {
+            throw error(tp, "expected one of rect, circle, polygon, cells, got " + show(t));
         }
         switch (type) {
             case "rect" -> {
@@ -66,6 +69,9 @@ final class ObstacleReader extends CourseJsonReader {
                 String rp = join(path, "radius");
                 return new Shape.Circle(center, positive(number(required(o, path, "radius"), rp), rp));
             }
+            case "cells" -> {
+                return cells(o, path);
+            }
             default -> {
                 knownFields(o, path, POLYGON_FIELDS);
                 String pp = join(path, "points");
@@ -80,6 +86,84 @@ final class ObstacleReader extends CourseJsonReader {
                 return new Shape.Polygon(points);
             }
         }
+    }
+
+    /** A cells shape (docs/course-format.md): a grid of square cells, the cells given as row spans. */
+    private Shape.Cells cells(ObjectNode o, String path) throws CourseException {
+        knownFields(o, path, CELLS_FIELDS);
+        Vec2 origin = vec(required(o, path, "origin"), join(path, "origin"));
+        String sp = join(path, "size");
+        double size = positive(number(required(o, path, "size"), sp), sp);
+        int columns = count(required(o, path, "columns"), join(path, "columns"));
+        int rows = count(required(o, path, "rows"), join(path, "rows"));
+        if ((long) columns * rows > Limits.CELLS) {
+            throw error(path, "too many cells: " + columns + " columns of " + rows + " rows = " + (long) columns * rows
+                    + " (the limit is " + Limits.CELLS + ")");
+        }
+        String pp = join(path, "spans");
+        JsonNode spans = required(o, path, "spans");
+        if (!spans.isArray()) throw error(pp, "expected an array of [row, start, end] spans, got " + kind(spans));
+        if (spans.size() > Limits.CELL_SPANS) {
+            throw error(pp, "too many spans: " + spans.size() + " (the limit is " + Limits.CELL_SPANS + ")");
+        }
+        int[] triples = new int[3 * spans.size()];
+        for (int i = 0; i < spans.size(); i++) {
+            JsonNode s = spans.get(i);
+            String ip = pp + "[" + i + "]";
+            if (!s.isArray() || s.size() != 3) throw error(ip, "expected [row, start, end], got " + show(s));
+            int row = index(s.get(0), ip + "[0]"), start = index(s.get(1), ip + "[1]"), end = index(s.get(2), ip + "[2]");
+            if (row >= rows) throw error(ip, "row " + row + " is outside 0.." + (rows - 1));
+            if (!(start < end) || end > columns) {
+                throw error(ip, "columns " + start + ".." + end + " must satisfy start < end <= " + columns);
+            }
+            triples[3 * i] = row;
+            triples[3 * i + 1] = start;
+            triples[3 * i + 2] = end;
+        }
+        return new Shape.Cells(origin, size, columns, rows, triples);
+    }
+
+    private int count(JsonNode n, String path) throws CourseException {
+        int v = index(n, path);
+        if (v < 1) throw error(path, "must be a whole number >= 1, got " + v);
+        return v;
+    }
+
+    /** A whole number from 0 to 2^31 - 1. */
+    private int index(JsonNode n, String path) throws CourseException {
+        if (n == null || !n.isIntegralNumber() || !n.canConvertToInt() || n.intValue() < 0) {
+            throw error(path, "expected a whole number >= 0, got " + show(n));
+        }
+        return n.intValue();
+    }
+
+    private Zone.Hazard hazard(JsonNode n, String path) throws CourseException {
+        ObjectNode o = object(n, path);
+        knownFields(o, path, HAZARD_FIELDS);
+        Zone.Hazard.Kind kind = named(o, path, "kind", Zone.Hazard.Kind.values(), Zone.Hazard.Kind.WATER);
+        Zone.Hazard.When when = named(o, path, "when", Zone.Hazard.When.values(), Zone.Hazard.When.ENTER);
+        Zone.Hazard.ReturnTo to = named(o, path, "returnTo", Zone.Hazard.ReturnTo.values(),
+                Zone.Hazard.ReturnTo.STROKE_START);
+        int penalty = 1;
+        JsonNode p = o.get("penalty");
+        if (p != null) {
+            penalty = index(p, join(path, "penalty"));
+            if (penalty > 1) throw error(join(path, "penalty"), "must be 0 or 1, got " + penalty);
+        }
+        return new Zone.Hazard(kind, when, to, penalty);
+    }
+
+    private <E extends Enum<E> & Zone.Hazard.Named> E named(ObjectNode o, String path, String field, E[] values, E fallback)
+            throws CourseException {
+        JsonNode n = o.get(field);
+        if (n == null) return fallback;
+        String fp = join(path, field);
+        if (n.isTextual()) {
+            for (E e : values) if (e.jsonName().equals(n.textValue())) return e;
+        }
+        StringBuilder names = new StringBuilder();
+        for (E e : values) names.append(names.length() == 0 ? "" : ", ").append(e.jsonName());
+        throw error(fp, "expected one of " + names + ", got " + show(n));
     }
 
     List<Obstacle> obstacles(JsonNode n, String path) throws CourseException {

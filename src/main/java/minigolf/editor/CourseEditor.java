@@ -50,6 +50,7 @@ public final class CourseEditor {
         TerrainSpec.HeightGrid grid = CourseGrids.toGrid(c);
         EditableCourse ec = new EditableCourse(grid, c.bounds(), c.zones(), c.obstacles(),
                 new EditableCourse.Properties(c.name(), c.start(), c.hole(), c.physics()));
+        ec.world = c.world();
         CourseEditor e = new CourseEditor(ec, file);
         // A sampled expression course is not yet a file: it counts as unsaved.
         if (!(c.terrain() instanceof TerrainSpec.HeightGrid)) e.file = null;

@@ -28,6 +28,8 @@ public final class EditableCourse {
     Properties properties;
     final Bounds bounds;
     final List<Zone> zones = new ArrayList<>();
+    /** The themed world the course is set in (kept as loaded; the editor does not change it). */
+    String world = minigolf.theme.Themes.DEFAULT_ID;
 
     /** The course's fields that are not per node or per obstacle. */
     public record Properties(String name, Vec2 start, Hole hole, PhysicsSettings physics) {
@@ -85,7 +87,7 @@ public final class EditableCourse {
     /** A snapshot as an immutable course. */
     public Course toCourse() {
         Properties p = properties;
-        return new Course(Course.FORMAT, p.name(), grid(), bounds, p.physics(), p.start(), p.hole(), zones, obstacles);
+        return new Course(Course.FORMAT, p.name(), grid(), bounds, p.physics(), p.start(), p.hole(), zones, obstacles, world);
     }
 
     public int columns() {

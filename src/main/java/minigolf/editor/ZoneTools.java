@@ -16,9 +16,12 @@ public final class ZoneTools {
             shape = String.format(Locale.ROOT, "rect (%.2f, %.2f)-(%.2f, %.2f)", r.min().x(), r.min().y(), r.max().x(), r.max().y());
         } else if (z.shape() instanceof Shape.Circle c) {
             shape = String.format(Locale.ROOT, "circle (%.2f, %.2f) r %.2f", c.center().x(), c.center().y(), c.radius());
+        } else if (z.shape() instanceof Shape.Cells c) {
+            shape = String.format(Locale.ROOT, "cells (%d spans of %.3f m cells)", c.spanCount(), c.size());
         } else {
             shape = "polygon of " + ((Shape.Polygon) z.shape()).points().size() + " points";
         }
-        return String.format(Locale.ROOT, "%s, mu_k %.2f mu_s %.2f", shape, z.kineticFriction(), z.staticFriction());
+        String hazard = z.hazard() == null ? "" : ", " + z.hazard().kind().jsonName() + " (on " + z.hazard().when().jsonName() + ")";
+        return String.format(Locale.ROOT, "%s, mu_k %.2f mu_s %.2f%s", shape, z.kineticFriction(), z.staticFriction(), hazard);
     }
 }

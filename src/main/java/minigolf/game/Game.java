@@ -11,6 +11,7 @@ import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.Stroke;
+import minigolf.physics.Landing;
 import minigolf.physics.World;
 
 /**
@@ -18,10 +19,11 @@ import minigolf.physics.World;
  * {@link Stroke} that {@link #startShot} hands out, the tests and bots run it to its end; both use
  * the same engine and the same rules.
  *
- * <p>Rules: every hit is a stroke. Water or out of bounds adds one penalty stroke and the ball
- * goes back to where the stroke began. Turn order is golf's: the player farthest from the hole
- * plays next; at equal distance (within a millimetre) the one with fewer strokes, then the lower
- * seat, so at the start the players go in seat order. Holed
+ * <p>Rules: every ball starts on a spot of its own beside the tee ({@link TeeSpots}). Every hit is
+ * a stroke. Water or out of bounds adds one penalty stroke and the ball goes back to where the
+ * stroke began. Turn order is golf's: everyone tees off first, in seat order; then the player
+ * farthest from the hole plays next; at equal distance (within a millimetre) the one with fewer
+ * strokes, then the lower seat. Holed
  * players are skipped. A player whose hits plus penalties reach the stroke limit without holing
  * picks up and scores the limit plus one. The game is over when nobody is still playing. Balls
  * do not collide with each other.
@@ -76,8 +78,10 @@ public final class Game {
         this.noise = noise == null ? NoiseModel.NONE : noise;
         // Without noise the seed means nothing (and a save does not keep it): one state, one save.
         this.noiseSeed = this.noise.isNone() ? 0 : noiseSeed;
-        double sx = world.course().start().x(), sy = world.course().start().y();
-        for (int i = 0; i < players.size(); i++) states.add(new PlayerState(sx, sy, 0, 0, PlayerStatus.PLAYING));
+        // Each ball waits on a spot of its own beside the tee (TeeSpots: checked like a start).
+        for (minigolf.course.Vec2 spot : TeeSpots.of(world, players.size())) {
+            states.add(new PlayerState(spot.x(), spot.y(), 0, 0, PlayerStatus.PLAYING));
+        }
         passedOver = new boolean[players.size()];
     }
 
@@ -183,6 +187,10 @@ public final class Game {
     }
 
     private int farthestPlaying(boolean skipPassedOver) {
+        // Teeing off goes in seat order (the balls beside the tee are at slightly different distances).
+        for (int i = 0; i < states.size(); i++) {
+            if (states.get(i).isPlaying() && !(skipPassedOver && passedOver[i]) && states.get(i).total() == 0) return i;
+        }
         double hx = world.hole().position().x(), hy = world.hole().position().y();
         int best = -1;
         double bestDistance = -1;
@@ -261,11 +269,11 @@ public final class Game {
         if (!stroke.isFinished()) throw new IllegalStateException("the stroke has not finished");
         ShotResult r = stroke.result();
         PlayerState s = states.get(strokePlayer);
-        boolean penalty = r.outcome().isPenalty();
-        double x = penalty ? s.x() : r.endX();
-        double y = penalty ? s.y() : r.endY();
+        Landing landing = Landing.of(world, r, s.x(), s.y());
+        double x = landing.x();
+        double y = landing.y();
         int hits = s.strokes() + 1;
-        int penalties = s.penalties() + (penalty ? 1 : 0);
+        int penalties = s.penalties() + landing.penalty();
         PlayerStatus status = r.outcome() == Outcome.HOLED ? PlayerStatus.HOLED
                 : hits + penalties >= strokeLimit ? PlayerStatus.PICKED_UP : PlayerStatus.PLAYING;
         states.set(strokePlayer, new PlayerState(x, y, hits, penalties, status));

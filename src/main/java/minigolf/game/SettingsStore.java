@@ -24,7 +24,7 @@ public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
             "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "noisePosition", "noiseVelocity",
-            "hideFrictionFromBots", "aimGuide", "antiAliasing", "graphics", "windowWidth", "windowHeight");
+            "hideFrictionFromBots", "aimGuide", "antiAliasing", "graphics", "windowWidth", "windowHeight", "classicFolder");
 
     private final Path directory;
 
@@ -100,7 +100,8 @@ public final class SettingsStore {
                     root.has("antiAliasing") ? f.bool(root, null, "antiAliasing") : d.antiAliasing(),
                     root.has("graphics") ? f.text(root, null, "graphics") : d.graphics(),
                     root.has("windowWidth") ? f.integer(root, null, "windowWidth", 0, 16384) : d.windowWidth(),
-                    root.has("windowHeight") ? f.integer(root, null, "windowHeight", 0, 16384) : d.windowHeight());
+                    root.has("windowHeight") ? f.integer(root, null, "windowHeight", 0, 16384) : d.windowHeight(),
+                    root.has("classicFolder") ? f.text(root, null, "classicFolder") : d.classicFolder());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
         }
@@ -159,6 +160,7 @@ public final class SettingsStore {
         root.put("graphics", s.graphics());
         root.put("windowWidth", s.windowWidth());
         root.put("windowHeight", s.windowHeight());
+        if (!s.classicFolder().isEmpty()) root.put("classicFolder", s.classicFolder());
         ArrayNode names = root.putArray("playerNames");
         s.playerNames().forEach(names::add);
         root.put("noisePosition", s.noisePosition());

@@ -26,18 +26,22 @@ import minigolf.physics.SimulationSettings;
  *                      rasteriser), {@code high} or {@code low} (docs/rendering.md, RenderQuality)
  * @param windowWidth   the window's size when not full screen, pixels; 0 and 0: 1280 x 720
  * @param windowHeight  (both 0, or 640 to 16384 wide and 480 to 16384 high)
+ * @param classicFolder where the course select's "Classic tracks" are read from (what
+ *                      {@code minigolf import-tracks} wrote); empty: {@code <config>/classic}
  */
 public record UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                            double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
                            double noisePosition, double noiseVelocity, boolean hideFrictionFromBots,
                            boolean aimGuide, boolean antiAliasing, String graphics, int windowWidth,
-                           int windowHeight) {
+                           int windowHeight, String classicFolder) {
     /** The graphics qualities a player can choose (before DEFAULTS, which checks against it). */
     public static final List<String> GRAPHICS = List.of("auto", "high", "low");
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
             false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0,
-            false, true, false, "auto", 0, 0);
+            false, true, false, "auto", 0, 0, "");
     public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
+    /** The longest classic-tracks folder name kept. */
+    public static final int MAX_FOLDER_LENGTH = 4096;
     /** Beyond these a putt is a lottery, not "realistic". */
     public static final double MAX_NOISE_POSITION = 0.5, MAX_NOISE_VELOCITY = 1;
     /** What the Settings screen's "Realistic" box turns on: a club golfer's spread (docs/bots.md, "Noise"). */
@@ -47,7 +51,7 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                         double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
         this(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, 0, 0,
-                false, true, false, "auto", 0, 0);
+                false, true, false, "auto", 0, 0, "");
     }
 
     public UserSettings {
@@ -70,6 +74,10 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
             throw new IllegalArgumentException("the window size must be 0 x 0 (the default) or 640 to 16384 x 480 to 16384, got "
                     + windowWidth + " x " + windowHeight);
         }
+        if (classicFolder == null) classicFolder = "";
+        if (classicFolder.length() > MAX_FOLDER_LENGTH || classicFolder.indexOf('\0') >= 0) {
+            throw new IllegalArgumentException("classicFolder must be a folder name of at most " + MAX_FOLDER_LENGTH + " characters");
+        }
         playerNames = List.copyOf(playerNames);
         if (playerNames.isEmpty() || playerNames.size() > Game.MAX_PLAYERS) {
             throw new IllegalArgumentException("playerNames must hold 1 to " + Game.MAX_PLAYERS + " names");
@@ -90,7 +98,7 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings withNoise(double position, double velocity) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, position, velocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public SimulationSettings simulation() {
@@ -100,84 +108,90 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings withIntegrator(Integrator v) {
         return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withDt(double v) {
         return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
-                antiAliasing, graphics, windowWidth, windowHeight);
+                antiAliasing, graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withVsync(boolean v) {
         return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
-                antiAliasing, graphics, windowWidth, windowHeight);
+                antiAliasing, graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withFrameLimit(int v) {
         return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withFullscreen(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withMouseSpeed(double v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withStrokeLimit(int v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withHeightColours(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withHideFrictionFromBots(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, v, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withAimGuide(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, v,
-                antiAliasing, graphics, windowWidth, windowHeight);
+                antiAliasing, graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withAntiAliasing(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, v,
-                graphics, windowWidth, windowHeight);
+                graphics, windowWidth, windowHeight, classicFolder);
     }
 
     public UserSettings withGraphics(String v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, v, windowWidth,
-                windowHeight);
+                windowHeight, classicFolder);
     }
 
     public UserSettings withWindowSize(int width, int height) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, graphics, width,
-                height);
+                height, classicFolder);
+    }
+
+    public UserSettings withClassicFolder(String v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, graphics,
+                windowWidth, windowHeight, v);
     }
 }

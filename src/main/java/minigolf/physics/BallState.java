@@ -45,6 +45,16 @@ final class BallState {
         this.vy = vy;
     }
 
+    /** Whether a ball coming to rest here ends the stroke in a hazard zone. */
+    boolean restsInHazard() {
+        return friction.restsInHazard(x, y);
+    }
+
+    /** Whether the ball's centre here is in a hazard zone it may not enter. */
+    boolean entersHazard() {
+        return friction.entersHazard(x, y);
+    }
+
     /** Samples the terrain and friction under the ball into h, hx, hy, muK. */
     void sampleGround() {
         terrain.sample(x, y, sample);

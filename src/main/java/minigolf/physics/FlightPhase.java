@@ -100,8 +100,8 @@ final class FlightPhase {
             return;
         }
         b.sampleGround();
-        if (b.h < 0) {
-            b.z = 0;
+        if (b.h < 0 || b.entersHazard()) {
+            b.z = b.h < 0 ? 0 : b.h;
             reports.finish(Outcome.WATER, b.x, b.y, b.z);
             return;
         }

@@ -15,6 +15,7 @@ public final class FrictionField {
     private final Zone[] zones;
     private final TerrainSpec.HeightGrid grid;
     private final boolean uniform;
+    private final boolean hazards;
 
     public FrictionField(PhysicsSettings physics, List<Zone> zones, TerrainSpec terrain) {
         this.defaultKinetic = physics.kineticFriction();
@@ -23,6 +24,35 @@ public final class FrictionField {
         this.grid = terrain instanceof TerrainSpec.HeightGrid g
                 && (g.kineticFriction() != null || g.staticFriction() != null) ? g : null;
         this.uniform = this.zones.length == 0 && grid == null;
+        boolean any = false;
+        for (Zone z : this.zones) any |= z.hazard() != null;
+        this.hazards = any;
+    }
+
+    /** Whether some zone is a hazard (water or acid drawn as a zone). */
+    public boolean hasHazards() {
+        return hazards;
+    }
+
+    /**
+     * The hazard of the zone that decides the friction at (x, y), or null (a zone without one
+     * laid over a hazard is a bridge).
+     */
+    public Zone.Hazard hazardAt(double x, double y) {
+        if (!hazards) return null;
+        int zone = zoneAt(x, y);
+        return zone >= 0 ? zones[zone].hazard() : null;
+    }
+
+    /** Whether the ball entering (x, y) ends its stroke in a hazard zone. */
+    public boolean entersHazard(double x, double y) {
+        Zone.Hazard h = hazardAt(x, y);
+        return h != null && h.when() == Zone.Hazard.When.ENTER;
+    }
+
+    /** Whether a ball coming to rest at (x, y) ends its stroke in a hazard zone (any hazard: one it rests in it touches). */
+    public boolean restsInHazard(double x, double y) {
+        return hazardAt(x, y) != null;
     }
 
     /** Whether friction can jump somewhere (zone edges), so that strokes must split steps there. */

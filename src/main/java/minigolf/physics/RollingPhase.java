@@ -82,7 +82,8 @@ final class RollingPhase {
         boolean sentBack = speed == 0 && rest.rollsBack();
         if (sentBack) rest.forget();
         if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.hx, b.hy, b.muK)) {
-            reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : Outcome.STOPPED, b.x, b.y, b.z);
+            reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : b.restsInHazard() ? Outcome.WATER : Outcome.STOPPED,
+                    b.x, b.y, b.z);
             return 0;
         }
         b.pieceTime = tau;

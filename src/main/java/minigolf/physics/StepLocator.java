@@ -32,6 +32,7 @@ final class StepLocator {
     Outcome hazardAt(double qx, double qy) {
         if (!area.contains(qx, qy)) return Outcome.OUT;
         if (terrain.height(qx, qy) < 0) return Outcome.WATER;
+        if (friction.entersHazard(qx, qy)) return Outcome.WATER;
         return null;
     }
 

@@ -101,7 +101,7 @@ public final class Stroke {
         ball.z = ball.h;
         if (!area.contains(ball.x, ball.y)) {
             reports.finish(Outcome.OUT, ball.x, ball.y, ball.z);
-        } else if (ball.h < 0) {
+        } else if (ball.h < 0 || ball.entersHazard()) {
             reports.finish(Outcome.WATER, ball.x, ball.y, ball.z);
         } else if (vz0 > 0 && vz0 > ball.hx * vx0 + ball.hy * vy0) {
             ball.flying = true;

@@ -1,5 +1,7 @@
 package minigolf.render;
 
+import minigolf.texture.Noise;
+
 /**
  * The sky's cloud layer as a tiling texture, made once in code: red is fractal value noise (four
  * octaves, each twice the frequency of the last) for cloud cover, green one octave of value noise at
@@ -49,25 +51,7 @@ public final class CloudNoise {
 
     /** Smooth value noise at lattice coordinates (x, y), repeating every {@code period} cells. */
     public static double noise(double x, double y, int period) {
-        int ix = (int) Math.floor(x), iy = (int) Math.floor(y);
-        double fx = x - ix, fy = y - iy;
-        double sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
-        double a = lattice(ix, iy, period), b = lattice(ix + 1, iy, period);
-        double c = lattice(ix, iy + 1, period), d = lattice(ix + 1, iy + 1, period);
-        return lerp(lerp(a, b, sx), lerp(c, d, sx), sy);
-    }
-
-    /** A pseudo-random value in [0, 1) for a lattice point, the same for points a period apart. */
-    static double lattice(int ix, int iy, int period) {
-        int x = Math.floorMod(ix, period), y = Math.floorMod(iy, period);
-        int h = x * 374761393 + y * 668265263 + period * 1274126177;
-        h = (h ^ (h >>> 13)) * 1274126177;
-        h ^= h >>> 16;
-        return (h & 0xFFFFFF) / (double) 0x1000000;
-    }
-
-    private static double lerp(double a, double b, double t) {
-        return a + (b - a) * t;
+        return Noise.value(x, y, period);
     }
 
     private static byte toByte(double x) {

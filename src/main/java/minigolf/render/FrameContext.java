@@ -16,6 +16,10 @@ public final class FrameContext {
     public final Matrix4f inverseViewProjection = new Matrix4f();
     public final Vector3f eye = new Vector3f();
     public final Sun sun;
+    /** The world's sky and air (fog, sky gradient, clouds); Meadowbrook's unless set. */
+    public Atmosphere atmosphere = Atmosphere.of(minigolf.theme.Themes.MEADOWBROOK);
+    /** The materials' textures (materials.glsl), or null where a pass is drawn without a scene (tests). */
+    MaterialTextures materials;
     public int viewportWidth;
     public int viewportHeight;
     /** Geometry with dot(clipPlane, (world, 1)) < 0 is cut away (GL_CLIP_DISTANCE0 on); (0,0,0,1) keeps all. */
@@ -88,6 +92,8 @@ public final class FrameContext {
      */
     private FrameContext sharedStateOf(FrameContext src) {
         time = src.time;
+        atmosphere = src.atmosphere;
+        materials = src.materials;
         shadowMap = src.shadowMap;
         shadowsOn = src.shadowsOn;
         ballShadowsInline = true;
@@ -120,11 +126,27 @@ public final class FrameContext {
         return this;
     }
 
-    /** One directional light. {@code direction} points from the ground towards the sun (unit length). */
-    public record Sun(Vector3f direction, Vector3f color, Vector3f skyAmbient, Vector3f groundAmbient) {
+    /**
+     * One directional light. {@code direction} points from the ground towards the sun (unit length);
+     * {@code shadowSoftness} widens the shadow filter's footprint (1: 3x3 texels).
+     */
+    public record Sun(Vector3f direction, Vector3f color, Vector3f skyAmbient, Vector3f groundAmbient,
+                      float shadowSoftness) {
+        public Sun(Vector3f direction, Vector3f color, Vector3f skyAmbient, Vector3f groundAmbient) {
+            this(direction, color, skyAmbient, groundAmbient, 1f);
+        }
+
+        /** Meadowbrook's afternoon sun. */
         public static Sun afternoon() {
             return new Sun(new Vector3f(-0.45f, -0.55f, 0.70f).normalize(), new Vector3f(1.0f, 0.96f, 0.88f),
                     new Vector3f(0.40f, 0.46f, 0.56f), new Vector3f(0.24f, 0.22f, 0.16f));
+        }
+
+        /** A world's sun (Meadowbrook's is {@link #afternoon()}, to the rounding of its angles). */
+        public static Sun of(minigolf.theme.Theme.Light light) {
+            double[] d = light.direction();
+            return new Sun(new Vector3f((float) d[0], (float) d[1], (float) d[2]).normalize(), Atmosphere.v(light.sun()),
+                    Atmosphere.v(light.skyAmbient()), Atmosphere.v(light.groundAmbient()), (float) light.shadowSoftness());
         }
     }
 }

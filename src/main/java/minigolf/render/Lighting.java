@@ -15,7 +15,10 @@ final class Lighting {
         shader.set("uSunColor", frame.sun.color());
         shader.set("uSkyAmbient", frame.sun.skyAmbient());
         shader.set("uGroundAmbient", frame.sun.groundAmbient());
-        if (variant != LitShader.Variant.UNSHADOWED) frame.shadowMap.apply(shader);
+        frame.atmosphere.apply(shader);
+        shader.set("uTime", frame.time);
+        if (frame.materials != null) frame.materials.apply(shader);
+        if (variant != LitShader.Variant.UNSHADOWED) frame.shadowMap.apply(shader, frame.sun.shadowSoftness());
         if (variant == LitShader.Variant.MAP_AND_BALLS) {
             shader.set("uBallCount", frame.ballShadowCount);
             shader.setVec4Array("uBalls", frame.ballShadows, frame.ballShadowCount);

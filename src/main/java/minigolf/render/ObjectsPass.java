@@ -38,6 +38,11 @@ public final class ObjectsPass implements RenderPass {
     private List<BallView> balls;
     private AimView aim;
     private Mesh arrow;
+    /** The ring round the current player's ball, and the ball it was built for (null: none). */
+    private Mesh marker;
+    private BallView markerFor;
+    /** The rolling ball's trail, rebuilt each frame it changes; null when none. */
+    private Mesh trail;
     private final Matrix4f model = new Matrix4f();
     private final Matrix3f normalMatrix = new Matrix3f();
 
@@ -114,6 +119,41 @@ public final class ObjectsPass implements RenderPass {
         return aim;
     }
 
+    /** Rings {@code ball} (the current player's) in gold on the ground, or shows no ring for null. */
+    public void setMarker(BallView ball) {
+        if (ball == null ? markerFor == null : ball.equals(markerFor)) return;
+        if (marker != null) marker.close();
+        marker = null;
+        markerFor = ball;
+        if (ball != null) marker = new Mesh(markerMesh(ball, terrain));
+    }
+
+    /** The ball that is ringed, or null. */
+    public BallView marker() {
+        return markerFor;
+    }
+
+    /** The gold ring: just outside the drawn ball, on the ground (or the water's surface) under it. */
+    static MeshData markerMesh(BallView ball, Terrain terrain) {
+        double r = visualBallRadius();
+        return Shapes.drapedRing(ball.x(), ball.y(), 1.35 * r, 1.8 * r, 32, (x, y) -> Math.max(0, terrain.height(x, y)),
+                0.006, 1f, 0.82f, 0.2f);
+    }
+
+    /** The trail behind a rolling ball ({@link BallTrail#path()}) in the ball's colour; null or a short path draws none. */
+    public void setTrail(float[] path, float[] rgb) {
+        if (trail != null) trail.close();
+        trail = null;
+        if (path == null || path.length < 6) return;
+        MeshData m = Shapes.trail(path, 0.45 * visualBallRadius(), (x, y, z) -> Math.max(Math.max(0, z),
+                terrain.height(x, y)) + 0.004, rgb[0], rgb[1], rgb[2]);
+        if (m != null) trail = new Mesh(m);
+    }
+
+    public boolean hasTrail() {
+        return trail != null;
+    }
+
     /** The arrow for an aim: draped over the ground (or the water surface), coloured by power; and the guide's dots. */
     static MeshData arrowMesh(AimView view, Terrain terrain) {
         float power = Math.max(0f, Math.min(1f, view.power01()));
@@ -158,8 +198,11 @@ public final class ObjectsPass implements RenderPass {
         begin(frame);
         draw(cupRim, model.identity(), 0.15f, 16f);
         draw(cup, model.identity(), 0.0f, 8f);
+        program.set("uFlagPole", (float) holeX, (float) holeY);
         draw(flag, model.identity(), 0.3f, 32f);
         if (arrow != null) draw(arrow, model.identity(), 0.2f, 16f);
+        if (marker != null) draw(marker, model.identity(), 0.3f, 16f);
+        if (trail != null) draw(trail, model.identity(), 0.1f, 8f);
         drawBalls((float) visualBallRadius());
         if (effects != null) draw(effects, model.identity(), 0.4f, 24f);
     }
@@ -234,6 +277,8 @@ public final class ObjectsPass implements RenderPass {
         ball.close();
         if (arrow != null) arrow.close();
         if (effects != null) effects.close();
+        if (marker != null) marker.close();
+        if (trail != null) trail.close();
         shader.close();
     }
 }

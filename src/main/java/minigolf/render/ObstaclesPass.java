@@ -29,6 +29,9 @@ public final class ObstaclesPass implements RenderPass {
     private double top = Double.NEGATIVE_INFINITY;
     private int solidTriangles, decorationTriangles;
     private List<ObstacleMeshes.Piece> solidPieces = List.of(), decorationPieces = List.of();
+    private final ObstacleMeshes.Style style;
+    /** Nothing is drawn below this height (the plinth's foot): the rails' footings reach 1 m into the ground. */
+    private final double floor;
 
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
         this(obstacles, ground, false);
@@ -36,8 +39,23 @@ public final class ObstaclesPass implements RenderPass {
 
     /** As above; {@code vertexLit} picks the software rasterisers' shader (object-vertexlit: lighting per vertex). */
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground, boolean vertexLit) {
+        this(obstacles, ground, vertexLit, ObstacleMeshes.Style.CLASSIC);
+    }
+
+    /** As above, walls and boxes in a world's style (colours, materials, rounded rails). */
+    public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground, boolean vertexLit, ObstacleMeshes.Style style) {
+        this(obstacles, ground, vertexLit, style, Double.NEGATIVE_INFINITY);
+    }
+
+    /**
+     * As above, drawn down to {@code floor} only: the course's plinth stands on the ground there, and
+     * the footings below it (collision only) would show under the plinth from a high view.
+     */
+    public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground, boolean vertexLit, ObstacleMeshes.Style style, double floor) {
         this.shader = new LitShader(vertexLit ? "object-vertexlit" : "object");
         this.ground = ground;
+        this.style = style;
+        this.floor = floor;
         try {
             setObstacles(obstacles);
         } catch (RuntimeException e) {
@@ -49,7 +67,12 @@ public final class ObstaclesPass implements RenderPass {
     /** Replaces the drawn obstacles (null or empty: none). */
     public void setObstacles(List<Obstacle> list) {
         obstacles = list == null ? List.of() : List.copyOf(list);
-        ObstacleMeshes.Built built = ObstacleMeshes.build(obstacles, ground, this::materialsOf);
+        ObstacleMeshes.Built built = ObstacleMeshes.build(obstacles, ground, this::materialsOf,
+                ObstacleMeshes.CrownStyle.COURSE, style);
+        if (floor > Double.NEGATIVE_INFINITY) {
+            float[] v = built.solid().vertices();
+            for (int i = 2; i < v.length; i += built.solid().stride()) v[i] = (float) Math.max(v[i], floor);
+        }
         freeMeshes();
         solidTriangles = built.solid().triangleCount();
         decorationTriangles = built.decoration().triangleCount();
@@ -92,7 +115,7 @@ public final class ObstaclesPass implements RenderPass {
     private static double highest(MeshData d) {
         double max = Double.NEGATIVE_INFINITY;
         float[] v = d.vertices();
-        for (int i = 2; i < v.length; i += 9) max = Math.max(max, v[i]);
+        for (int i = 2; i < v.length; i += d.stride()) max = Math.max(max, v[i]);
         return max;
     }
 

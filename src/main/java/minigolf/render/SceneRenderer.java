@@ -3,6 +3,8 @@ package minigolf.render;
 import minigolf.course.Course;
 import minigolf.course.Obstacle;
 import minigolf.terrain.Terrain;
+import minigolf.theme.Theme;
+import minigolf.theme.Themes;
 import org.joml.Vector3f;
 
 import java.nio.file.Path;
@@ -29,10 +31,12 @@ public final class SceneRenderer implements AutoCloseable {
     private final SurroundingsPass surroundings;
     private final WaterPass water;
     private final List<RenderPass> passes;
-    private final FrameContext frame = new FrameContext(FrameContext.Sun.afternoon());
-    private final FrameContext mirrorFrame = new FrameContext(FrameContext.Sun.afternoon());
-    private final FrameContext refractionFrame = new FrameContext(FrameContext.Sun.afternoon());
-    private final FrameContext minimapFrame = new FrameContext(FrameContext.Sun.afternoon());
+    /** The world the course is set in (its light, sky, materials and scenery). */
+    private final Theme theme;
+    private final FrameContext frame;
+    private final FrameContext mirrorFrame;
+    private final FrameContext refractionFrame;
+    private final FrameContext minimapFrame;
     private final Course course;
     private float lastTime;
     private boolean waterReflections = true;
@@ -69,6 +73,7 @@ public final class SceneRenderer implements AutoCloseable {
     private boolean antiAliasing;
     private final int emptyVao;
     private final PassTimer timer = new PassTimer();
+    private final MaterialTextures materials;
 
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode) {
         this(course, surface, mode, RenderQuality.HIGH);
@@ -77,6 +82,14 @@ public final class SceneRenderer implements AutoCloseable {
     /** As above at a chosen quality (shadow map size, water targets; see {@link RenderQuality#current()}). */
     public SceneRenderer(Course course, Terrain surface, TerrainMesh.ColorMode mode, RenderQuality quality) {
         this.course = course;
+        this.theme = Themes.of(course.world());
+        FrameContext.Sun sun = FrameContext.Sun.of(theme.light());
+        Atmosphere air = Atmosphere.of(theme);
+        frame = new FrameContext(sun);
+        mirrorFrame = new FrameContext(sun);
+        refractionFrame = new FrameContext(sun);
+        minimapFrame = new FrameContext(sun);
+        for (FrameContext f : new FrameContext[]{frame, mirrorFrame, refractionFrame, minimapFrame}) f.atmosphere = air;
         this.shadowMapSize = quality.shadowMapSize();
         this.waterTargetScale = quality.waterTargetScale();
         this.shadowsInWater = quality.shadowsInWater();
@@ -89,12 +102,18 @@ public final class SceneRenderer implements AutoCloseable {
         ObjectsPass o = null;
         SurroundingsPass u = null;
         try {
-            s = new SkyPass();
+            s = new SkyPass(!theme.scenery().sea() ? null : new SkyPass.Sea((float) theme.scenery().shoreDistance(),
+                    new float[]{(float) course.bounds().minX(), (float) course.bounds().minY(), (float) course.bounds().maxX(),
+                            (float) course.bounds().maxY()}, theme.materials().water().toArray(), theme.materials().sand().toArray()),
+                    quality.vertexLit() ? -1 : MaterialTextures.groundLayer(theme));
             t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing());
-            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit());
+            // Rounded rails cost a software rasteriser about four times the triangles: square ones there.
+            ObstacleMeshes.Style style = ObstacleMeshes.Style.of(theme);
+            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit(), quality.vertexLit() ? style.squareWalls() : style,
+                    TerrainMesh.skirtBase(t.minHeight(), course.bounds()));
             o = new ObjectsPass(course, surface, quality.vertexLit());
-            u = new SurroundingsPass(course.bounds(), TerrainMesh.skirtBase(t.minHeight(), course.bounds()),
-                    SurroundingsPass.treesFor(quality));
+            u = new SurroundingsPass(course, TerrainMesh.skirtBase(t.minHeight(), course.bounds()), theme,
+                    SurroundingsPass.shareFor(quality));
             water = new WaterPass(course, surface);
         } catch (RuntimeException e) {
             for (RenderPass p : new RenderPass[]{u, o, ob, t, s}) if (p != null) p.close();
@@ -105,7 +124,7 @@ public final class SceneRenderer implements AutoCloseable {
         obstacles = ob;
         objects = o;
         surroundings = u;
-        sky.setGround(u.level(), SurroundingsPass.MEADOW_COLOR, SurroundingsPass.FADE_START, SurroundingsPass.FADE_END);
+        sky.setGround(u.level(), theme.materials().surroundGround().toArray(), SurroundingsPass.FADE_START, SurroundingsPass.FADE_END);
         passes = List.of(terrain, obstacles, objects, surroundings, sky, water);
         ShaderProgram depth = null;
         try {
@@ -128,9 +147,24 @@ public final class SceneRenderer implements AutoCloseable {
             throw e;
         }
         blitShader = blit;
+        MaterialTextures m;
+        try {
+            m = new MaterialTextures(theme);
+            m.setOcclusion(OcclusionMap.of(course.bounds(), course.obstacles(), surface::height));
+        } catch (RuntimeException e) {
+            close();
+            throw e;
+        }
+        materials = m;
+        for (FrameContext f : new FrameContext[]{frame, mirrorFrame, refractionFrame, minimapFrame}) f.materials = m;
         emptyVao = glGenVertexArrays();
         frame.shadowMap = shadowMap;
         minimapFrame.shadowMap = shadowMap;
+    }
+
+    /** The world the course is set in. */
+    public Theme theme() {
+        return theme;
     }
 
     /** The per-pass timer (off by default; the benchmark's --breakdown turns it on). */
@@ -166,6 +200,7 @@ public final class SceneRenderer implements AutoCloseable {
      */
     public void setObstacles(List<Obstacle> list) {
         obstacles.setObstacles(list);
+        materials.setOcclusion(OcclusionMap.of(course.bounds(), list == null ? List.of() : list, terrain.terrain()::height));
         refitShadowMap();
         shadowMapDirty = true;
         minimapDirty = true;
@@ -226,6 +261,16 @@ public final class SceneRenderer implements AutoCloseable {
     /** Shows the aiming arrow on the ground from the ball; null hides it. */
     public void setAim(AimView aim) {
         objects.setAim(aim);
+    }
+
+    /** Rings the current player's ball (null: no ring). */
+    public void setMarker(BallView ball) {
+        objects.setMarker(ball);
+    }
+
+    /** The trail behind the rolling ball ({@link BallTrail#path()}) in its colour; null draws none. */
+    public void setTrail(float[] path, float[] rgb) {
+        objects.setTrail(path, rgb);
     }
 
     /**
@@ -493,6 +538,7 @@ public final class SceneRenderer implements AutoCloseable {
     @Override
     public void close() {
         if (fxaa != null) fxaa.close();
+        if (materials != null) materials.close();
         if (blitShader != null) blitShader.close();
         if (emptyVao != 0) glDeleteVertexArrays(emptyVao);
         minimapCache.close();

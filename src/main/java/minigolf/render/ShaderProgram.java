@@ -170,6 +170,10 @@ public final class ShaderProgram implements AutoCloseable {
         glUniform3f(location(uniform), x, y, z);
     }
 
+    public void set(String uniform, float x, float y, float z, float w) {
+        glUniform4f(location(uniform), x, y, z, w);
+    }
+
     public void set(String uniform, float v) {
         glUniform1f(location(uniform), v);
     }

@@ -145,12 +145,17 @@ public final class ShadowMap implements AutoCloseable {
 
     /** Sets the receiver uniforms of shadow.glsl and binds the map to {@link #UNIT}. */
     void apply(ShaderProgram shader) {
+        apply(shader, 1f);
+    }
+
+    /** As above, the 4-tap filter's taps {@code softness} times as far apart (a hazier sun's softer edges). */
+    void apply(ShaderProgram shader, float softness) {
         glActiveTexture(GL_TEXTURE0 + UNIT);
         glBindTexture(GL_TEXTURE_2D, depth);
         glActiveTexture(GL_TEXTURE0);
         shader.set("uShadowMap", UNIT);
         shader.set("uLightViewProjection", lightViewProjection);
-        shader.set("uShadowTexel", 1f / size);
+        shader.set("uShadowTexel", softness / size);
         shader.set("uShadowNormalOffset", 1.5f * texelMetres);
         // About two millimetres in depth units ([0, 1] over the light's depth range).
         shader.set("uShadowBias", bias());

@@ -227,6 +227,63 @@ public final class Shapes {
         return new MeshData(MeshData.PNC, v, idx);
     }
 
+    /**
+     * A flat ring between {@code inner} and {@code outer} round (cx, cy), draped over a surface at
+     * {@code height(x, y) + lift} (the current player's ball marker).
+     */
+    public static MeshData drapedRing(double cx, double cy, double inner, double outer, int segments,
+                                      DoubleBinaryOperator height, double lift, float r, float g, float b) {
+        float[] v = new float[2 * segments * 9];
+        int p = 0;
+        for (int s = 0; s < segments; s++) {
+            double a = 2 * Math.PI * s / segments, c = Math.cos(a), sn = Math.sin(a);
+            for (double rr : new double[]{inner, outer}) {
+                double x = cx + rr * c, y = cy + rr * sn;
+                p = putPnc(v, p, x, y, height.applyAsDouble(x, y) + lift, 0, 0, 1, r, g, b);
+            }
+        }
+        int[] idx = new int[6 * segments];
+        int q = 0;
+        for (int s = 0; s < segments; s++) {
+            int i0 = 2 * s, o0 = i0 + 1, i1 = 2 * ((s + 1) % segments), o1 = i1 + 1;
+            idx[q++] = i0;
+            idx[q++] = o0;
+            idx[q++] = o1;
+            idx[q++] = i0;
+            idx[q++] = o1;
+            idx[q++] = i1;
+        }
+        return new MeshData(MeshData.PNC, v, idx);
+    }
+
+    /**
+     * Flat round dots at the points of a path ((x, y, z) triplets, oldest first), each at
+     * {@code height.at(x, y, z)}, growing from a fifth of {@code radius} at the old end to
+     * {@code radius} at the new: a trail that fades out behind the ball. Null for fewer than two points.
+     */
+    public static MeshData trail(float[] path, double radius, DotHeight height, float r, float g, float b) {
+        int n = path.length / 3;
+        if (n < 2) return null;
+        int sides = 8;
+        float[] v = new float[n * (sides + 1) * 9];
+        int[] idx = new int[n * sides * 3];
+        int p = 0, q = 0;
+        for (int d = 0; d < n; d++) {
+            double x = path[3 * d], y = path[3 * d + 1], z = height.at(x, y, path[3 * d + 2]);
+            double rad = radius * (0.2 + 0.8 * d / (n - 1));
+            int centre = d * (sides + 1);
+            p = putPnc(v, p, x, y, z, 0, 0, 1, r, g, b);
+            for (int s = 0; s < sides; s++) {
+                double a = 2 * Math.PI * s / sides;
+                p = putPnc(v, p, x + rad * Math.cos(a), y + rad * Math.sin(a), z, 0, 0, 1, r, g, b);
+                idx[q++] = centre;
+                idx[q++] = centre + 1 + s;
+                idx[q++] = centre + 1 + (s + 1) % sides;
+            }
+        }
+        return new MeshData(MeshData.PNC, v, idx);
+    }
+
     static int putPnc(float[] v, int p, double x, double y, double z, double nx, double ny, double nz,
                       float r, float g, float b) {
         v[p++] = (float) x;

@@ -28,8 +28,7 @@ public final class SkyPass implements RenderPass {
     /** Cells whose corners all point further than this from the sun cannot hold its disc (cells span about 3.5 degrees). */
     static final double SUN_CELL_COS = Math.cos(Math.toRadians(12));
     /** The programs per cell group: bit 0 clouds, bit 1 the sun's disc. */
-    private final ShaderProgram[] programs = {ShaderProgram.load("sky"), ShaderProgram.load("sky", "CLOUDS"),
-            ShaderProgram.load("sky", "SUN_DISC"), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC")};
+    private final ShaderProgram[] programs;
     private final Texture clouds = Texture.fromPixels(CLOUD_TEXTURE_SIZE, CLOUD_TEXTURE_SIZE,
             CloudNoise.rgba(CLOUD_TEXTURE_SIZE), true);
     private final int vao = glGenVertexArrays();
@@ -45,7 +44,33 @@ public final class SkyPass implements RenderPass {
     private float[] groundColor = {0, 0, 0};
     private float fadeStart, fadeEnd;
 
+    /** The shore (metres from the course's bounds), the course's bounds, the sea's and the beach's colours: a seaside world. */
+    record Sea(float shore, float[] courseRect, float[] seaColor, float[] beachColor) {
+    }
+
+    private final Sea sea;
+    /** The texture-array layer the ground shows (MaterialPatterns.Layer), or -1 for a plain colour. */
+    private final int groundLayer;
+
     public SkyPass() {
+        this(null, -1);
+    }
+
+    /**
+     * A sky whose ground ends at a beach with the sea beyond (null: ground to the horizon), the ground
+     * showing the material of {@code groundLayer} per pixel (-1: a plain colour). Only the cells wholly
+     * below the horizon get the ground's detail: those with some corner above it lie far away, where
+     * the detail has faded anyway.
+     */
+    SkyPass(Sea sea, int groundLayer) {
+        this.sea = sea;
+        this.groundLayer = groundLayer;
+        String s = sea != null ? "SEA" : "NO_SEA";
+        // Per pixel (the shoreline, the ground's detail) only in the cells wholly below the horizon.
+        String p = sea != null ? "SEA_PIXEL" : "NO_SEA_PIXEL";
+        String g = groundLayer >= 0 ? "GROUND_DETAIL" : "NO_GROUND_DETAIL";
+        programs = new ShaderProgram[]{ShaderProgram.load("sky", s, p, g), ShaderProgram.load("sky", "CLOUDS", s),
+                ShaderProgram.load("sky", "SUN_DISC", s, p, g), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC", s)};
         glBindVertexArray(vao);
         FloatBuffer corners = MemoryUtil.memAllocFloat((GRID_X + 1) * (GRID_Y + 1) * 2);
         try {
@@ -171,6 +196,17 @@ public final class SkyPass implements RenderPass {
         shader.set("uClouds", 0);
         shader.set("uCloudPeriod", (float) CloudNoise.PERIOD);
         shader.set("uCloudTexels", (float) CLOUD_TEXTURE_SIZE);
+        shader.set("uCloudCover", frame.atmosphere.cloudCover());
+        shader.set("uGroundLayer", (float) groundLayer);
+        if (sea != null) {
+            shader.set("uShore", sea.shore());
+            float[] r = sea.courseRect();
+            shader.set("uCourseRect", r[0], r[1], r[2], r[3]);
+            shader.set("uSeaColor", sea.seaColor()[0], sea.seaColor()[1], sea.seaColor()[2]);
+            shader.set("uBeachColor", sea.beachColor()[0], sea.beachColor()[1], sea.beachColor()[2]);
+        }
+        shader.set("uCloudLit", frame.atmosphere.cloudLit());
+        shader.set("uCloudShade", frame.atmosphere.cloudShade());
         glUniform2f(shader.location("uGridStep"), 2f / GRID_X, 2f / GRID_Y);
         shader.set("uGridPixels", (float) frame.viewportWidth / GRID_X);
     }

@@ -1,27 +1,32 @@
 package minigolf.render;
 
 import minigolf.course.Bounds;
+import minigolf.course.Course;
 import minigolf.course.Obstacle;
+import minigolf.scenery.SceneryMesh;
+import minigolf.scenery.SceneryPlan;
+import minigolf.theme.Theme;
 
 import java.util.ArrayList;
 import java.util.List;
 
 /**
- * What stands round the course, so it does not float in an empty sky: a meadow at the foot of the
- * slab's side walls, and decorative trees (the obstacles' trunk and crown meshes) beyond the bounds
- * ({@link TreePlacement}). The meadow is a plane that the sky pass shades below the horizon
+ * What stands round the course, so it does not float in an empty sky: the world's ground at the foot
+ * of the slab's side walls, decorative trees (the obstacles' trunk and crown meshes) beyond the bounds
+ * ({@link TreePlacement}) and the world's other props ({@link SceneryPlan}: rocks, pines, cacti,
+ * flowers, fences, lamp posts, huts, a lighthouse, a castle, buttes on the skyline). The meadow is a plane that the sky pass shades below the horizon
  * ({@link SkyPass#setGround}, per grid corner: a depth-tested disc cost llvmpipe 2 ms a frame for
  * its half of the screen); this pass draws the trees, lit and faded into the sky's colours per
  * vertex (surroundings.vert), after the course's opaque passes and before the sky. Decoration only:
  * physics, the camera's clearance, the shadow map and the minimap never see any of it.
  */
 public final class SurroundingsPass implements RenderPass {
-    /** Duller and darker than the course's grass, and without its mowing stripes. */
-    public static final float[] MEADOW_COLOR = {0.29f, 0.45f, 0.18f};
     /** Horizontal distances from the eye over which the meadow and the trees fade into the sky's haze. */
     public static final float FADE_START = 25f, FADE_END = 125f;
-    /** Trees per quality: llvmpipe pays per triangle (a tree is about 300). */
-    static final int TREES_HIGH = 48, TREES_SOFTWARE = 24;
+    /** The same for the skyline's props (buttes, the castle, the lighthouse): they must still show far away. */
+    public static final float SKYLINE_FADE_START = 60f, SKYLINE_FADE_END = 420f;
+    /** The share of a world's props drawn at software quality: llvmpipe pays per triangle (a tree is about 300). */
+    static final double SOFTWARE_SHARE = 0.5;
 
     private final ShaderProgram shader;
     private final Mesh mesh;
@@ -29,26 +34,59 @@ public final class SurroundingsPass implements RenderPass {
     private final Bounds bounds;
     private final List<Obstacle.Tree> trees;
     private final double level;
+    private final Mesh propMesh;
+    private final SceneryMesh props;
 
-    /** Round a course with these bounds, whose slab stands at height {@code level} (its skirts' base). */
+    /** Round a course with these bounds, whose slab stands at height {@code level} (its skirts' base): Meadowbrook's trees. */
     public SurroundingsPass(Bounds bounds, double level, int treeCount) {
+        this(bounds, level, treeCount, null);
+    }
+
+    /**
+     * Round {@code course} in its world: the world's trees and props, {@code share} of each kind's
+     * count (see {@link #shareFor}).
+     */
+    public SurroundingsPass(Course course, double level, Theme theme, double share) {
+        this(course.bounds(), level, treeCount(theme, share), SceneryMesh.build(SceneryPlan.plan(theme.scenery(), course.bounds(),
+                course.start().x(), course.start().y(), course.hole().position().x(), course.hole().position().y(), share), theme, level));
+    }
+
+    private SurroundingsPass(Bounds bounds, double level, int treeCount, SceneryMesh props) {
         this.level = level;
         this.bounds = bounds;
         this.trees = TreePlacement.around(bounds, treeCount);
+        this.props = props;
         layout = build(level, trees);
         ShaderProgram s = ShaderProgram.load("surroundings");
+        Mesh m = null;
         try {
-            mesh = layout == null ? null : new Mesh(layout.data());
+            m = layout == null ? null : new Mesh(layout.data());
+            propMesh = props == null || props.triangleCount() == 0 ? null
+                    : new Mesh(new MeshData(MeshData.PNC, props.vertices(), props.indices()));
         } catch (RuntimeException e) {
+            if (m != null) m.close();
             s.close();
             throw e;
         }
+        mesh = m;
         shader = s;
     }
 
-    /** The trees' count for a quality. */
-    static int treesFor(RenderQuality quality) {
-        return quality.vertexLit() ? TREES_SOFTWARE : TREES_HIGH;
+    /** The share of each kind of prop drawn at a quality. */
+    static double shareFor(RenderQuality quality) {
+        return quality.vertexLit() ? SOFTWARE_SHARE : 1.0;
+    }
+
+    private static int treeCount(Theme theme, double share) {
+        for (Theme.PropCount p : theme.scenery().props()) {
+            if (p.prop() == Theme.Prop.TREE) return (int) Math.round(p.count() * share);
+        }
+        return 0;
+    }
+
+    /** The props other than trees, or null. */
+    public SceneryMesh props() {
+        return props;
     }
 
     /** The mesh, trunks then crowns; per tree its trunk's and its crown's index runs (with boxes), so a frame can skip trees. */
@@ -82,15 +120,30 @@ public final class SurroundingsPass implements RenderPass {
 
     @Override
     public void render(FrameContext frame) {
-        if (mesh == null) return;
+        if (mesh == null && propMesh == null) return;
         shader.use();
         Lighting.apply(shader, frame);
         shader.set("uViewProjection", frame.viewProjection);
         shader.set("uClipPlane", frame.clipPlane);
         shader.set("uFade", FADE_START, FADE_END);
-        boolean[] drawn = drawnTrees(frame);
-        drawRuns(layout.trunks(), drawn);
-        drawRuns(layout.crowns(), drawn);
+        if (mesh != null) {
+            boolean[] drawn = drawnTrees(frame);
+            drawRuns(layout.trunks(), drawn);
+            drawRuns(layout.crowns(), drawn);
+        }
+        if (propMesh != null) {
+            List<ObstacleMeshes.Piece> near = new ArrayList<>(), skyline = new ArrayList<>();
+            int[] viewport = {0, 0, frame.viewportWidth, frame.viewportHeight};
+            int[] courseRect = courseRect(frame);
+            double edge = TreePlacement.distance(bounds, frame.eye.x, frame.eye.y);
+            for (SceneryMesh.Piece p : props.pieces()) {
+                if (!shown(frame, p.box(), viewport, courseRect, edge)) continue;
+                (p.skyline() ? skyline : near).add(new ObstacleMeshes.Piece(p.first(), p.count(), p.box()));
+            }
+            ObstaclesPass.drawRuns(propMesh, near, p -> true);
+            shader.set("uFade", SKYLINE_FADE_START, SKYLINE_FADE_END);
+            ObstaclesPass.drawRuns(propMesh, skyline, p -> true);
+        }
     }
 
     /**
@@ -98,24 +151,33 @@ public final class SurroundingsPass implements RenderPass {
      * eye than the course's nearest edge and over it on screen), which would hide the play.
      */
     boolean[] drawnTrees(FrameContext frame) {
-        int w = frame.viewportWidth, h = frame.viewportHeight;
-        int[] viewport = {0, 0, w, h};
-        ScreenBounds course = new ScreenBounds(frame.viewProjection, w, h);
-        course.addBox(new float[]{(float) bounds.minX(), (float) bounds.minY(), (float) level,
-                (float) bounds.maxX(), (float) bounds.maxY(), (float) level + 1f});
-        int[] courseRect = course.rect(0, 0);
+        int[] viewport = {0, 0, frame.viewportWidth, frame.viewportHeight};
+        int[] courseRect = courseRect(frame);
         double edge = TreePlacement.distance(bounds, frame.eye.x, frame.eye.y);
         boolean[] drawn = new boolean[layout.trunks().size()];
         for (int i = 0; i < drawn.length; i++) {
             float[] box = union(layout.trunks().get(i).box(), i < layout.crowns().size() ? layout.crowns().get(i).box() : null);
-            ScreenBounds tree = new ScreenBounds(frame.viewProjection, w, h);
-            tree.addBox(box);
-            if (!tree.meets(viewport)) continue;
-            double x = 0.5 * (box[0] + box[3]), y = 0.5 * (box[1] + box[4]);
-            boolean inFront = Math.hypot(x - frame.eye.x, y - frame.eye.y) < edge && courseRect != null && tree.meets(courseRect);
-            drawn[i] = !inFront;
+            drawn[i] = shown(frame, box, viewport, courseRect, edge);
         }
         return drawn;
+    }
+
+    /** The course's rectangle on screen (bounds from the ground up to a metre above it), or null. */
+    private int[] courseRect(FrameContext frame) {
+        ScreenBounds course = new ScreenBounds(frame.viewProjection, frame.viewportWidth, frame.viewportHeight);
+        course.addBox(new float[]{(float) bounds.minX(), (float) bounds.minY(), (float) level,
+                (float) bounds.maxX(), (float) bounds.maxY(), (float) level + 1f});
+        return course.rect(0, 0);
+    }
+
+    /** Whether a prop in this box is drawn: on screen, and not in front of the course (see {@link #drawnTrees}). */
+    private static boolean shown(FrameContext frame, float[] box, int[] viewport, int[] courseRect, double edge) {
+        ScreenBounds prop = new ScreenBounds(frame.viewProjection, frame.viewportWidth, frame.viewportHeight);
+        prop.addBox(box);
+        if (!prop.meets(viewport)) return false;
+        double x = 0.5 * (box[0] + box[3]), y = 0.5 * (box[1] + box[4]);
+        boolean inFront = Math.hypot(x - frame.eye.x, y - frame.eye.y) < edge && courseRect != null && prop.meets(courseRect);
+        return !inFront;
     }
 
     private static float[] union(float[] a, float[] b) {
@@ -134,6 +196,7 @@ public final class SurroundingsPass implements RenderPass {
     @Override
     public void close() {
         if (mesh != null) mesh.close();
+        if (propMesh != null) propMesh.close();
         shader.close();
     }
 }

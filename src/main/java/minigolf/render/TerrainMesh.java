@@ -6,6 +6,9 @@ import minigolf.course.TerrainSpec;
 import minigolf.course.Zone;
 import minigolf.physics.FrictionField;
 import minigolf.terrain.Terrain;
+import minigolf.theme.Rgb;
+import minigolf.theme.Theme;
+import minigolf.theme.Themes;
 
 import java.util.List;
 
@@ -23,6 +26,11 @@ public final class TerrainMesh {
     public static final double SAND_FRICTION = 0.2;
     /** Kinetic friction up to this is drawn as plain grass. */
     public static final double GRASS_FRICTION = 0.12;
+    /** Zones at most this slick are drawn as ice (blended in up to {@link #GRASS_ICE_FRICTION}). */
+    public static final double ICE_FRICTION = 0.03;
+    public static final double GRASS_ICE_FRICTION = 0.06;
+    /** From this kinetic friction on the ground is drawn as mud (the classic tracks' mud is 1.27, their sand 0.51). */
+    public static final double MUD_FRICTION = 1.0;
     /**
      * Vertex layout: position, normal, colour and the mowing stripes' weight (1 on grass, 0 on sand,
      * mud, skirts and the height map). The stripes are drawn per pixel by the terrain shaders
@@ -30,6 +38,8 @@ public final class TerrainMesh {
      * once the level of detail ({@link TerrainLod}) spaced vertices wider than a stripe.
      */
     public static final int[] LAYOUT = {3, 3, 4};
+    /** The fourth colour component of the course's edge (its side walls): materials.glsl draws them in the world's rock or stone. */
+    public static final float EDGE_CODE = 2;
     /** Floats a vertex. */
     public static final int STRIDE = 10;
     /** The mowing stripes' width (m) along x, from the course's minimum x; odd stripes are {@link #STRIPE_SHADE} as bright. */
@@ -108,6 +118,7 @@ public final class TerrainMesh {
         float[] v = new float[(cols * rows + skirtVertices) * STRIDE];
         int[] idx = new int[nx * ny * 6 + 2 * 6 * (nx + ny)];
         float[] rgb = new float[3];
+        Theme.Materials palette = Themes.of(course.world()).materials();
         // Friction as physics sees it: zones, else the grid's per-node values, else the course's.
         FrictionField friction = new FrictionField(course.physics(), course.zones(), course.terrain());
         int p = 0;
@@ -116,7 +127,7 @@ public final class TerrainMesh {
                 int k = j * cols + i;
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 double len = Math.sqrt(gx[k] * gx[k] + gy[k] * gy[k] + 1);
-                double stripes = unstripedColor(mode, friction.kinetic(x, y), x, y, h[k], minH, maxH, rgb);
+                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), friction.hazardAt(x, y), x, y, h[k], minH, maxH, rgb);
                 p = put(v, p, x, y, h[k], -gx[k] / len, -gy[k] / len, 1 / len, rgb, stripes);
             }
         }
@@ -152,10 +163,10 @@ public final class TerrainMesh {
             for (int t = 0; t < e[4]; t++) {
                 int i = e[0] + t * e[2], j = e[1] + t * e[3];
                 double x = b.minX() + i * dx, y = b.minY() + j * dy, top = h[j * cols + i];
-                soil(top, top, rgb);
-                p = put(v, p, x, y, top, e[5], e[6], 0, rgb, 0);
-                soil(top, base, rgb);
-                p = put(v, p, x, y, base, e[5], e[6], 0, rgb, 0);
+                edge(palette, top, top, rgb);
+                p = put(v, p, x, y, top, e[5], e[6], 0, rgb, EDGE_CODE);
+                edge(palette, top, base, rgb);
+                p = put(v, p, x, y, base, e[5], e[6], 0, rgb, EDGE_CODE);
                 vertex += 2;
             }
             for (int t = 0; t + 1 < e[4]; t++) {
@@ -196,6 +207,7 @@ public final class TerrainMesh {
         int j1 = Math.min(rows - 1, (int) Math.ceil((maxY - b.minY()) / dy));
         if (j0 > j1 || maxX < b.minX() || minX > b.maxX()) return null;
         FrictionField friction = new FrictionField(course.physics(), course.zones(), course.terrain());
+        Theme.Materials palette = Themes.of(course.world()).materials();
         float[] v = new float[(j1 - j0 + 1) * cols * STRIDE];
         double[] s = new double[3];
         float[] rgb = new float[3];
@@ -205,7 +217,7 @@ public final class TerrainMesh {
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 terrain.sample(x, y, s);
                 double len = Math.sqrt(s[1] * s[1] + s[2] * s[2] + 1);
-                double stripes = unstripedColor(mode, friction.kinetic(x, y), x, y, s[0], minH, maxH, rgb);
+                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), friction.hazardAt(x, y), x, y, s[0], minH, maxH, rgb);
                 p = put(v, p, x, y, s[0], -s[1] / len, -s[2] / len, 1 / len, rgb, stripes);
             }
         }
@@ -226,9 +238,12 @@ public final class TerrainMesh {
         return q;
     }
 
-    private static void soil(double top, double z, float[] out) {
+    /** The course's edge (the plinth's side) at height z below its top: the world's edge colour, darker lower down. */
+    private static void edge(Theme.Materials palette, double top, double z, float[] out) {
         double t = Math.min(1, Math.max(0, (top - z) / 0.6));
-        set(out, lerp(0.45, 0.26, t), lerp(0.33, 0.18, t), lerp(0.20, 0.11, t));
+        double k = lerp(1.0, 0.58, t);
+        Rgb c = palette.edgeColor();
+        set(out, c.r() * k, c.g() * k, c.b() * k);
     }
 
     /** The colour of the surface at (x, y) with height h, for a terrain spanning [minH, maxH]. */
@@ -238,7 +253,10 @@ public final class TerrainMesh {
         for (Zone z : zones) {
             if (z.shape().contains(x, y)) zone = z; // later zones win
         }
-        surfaceColor(mode, zone != null ? zone.kineticFriction() : 0, x, y, h, minH, maxH, b, out);
+        // Outside every zone: plain grass.
+        double weight = unstripedColor(mode, Themes.MEADOWBROOK.materials(), zone != null ? zone.kineticFriction() : GRASS_FRICTION,
+                zone != null ? zone.hazard() : null, x, y, h, minH, maxH, out);
+        stripe(weight, x, b, out);
     }
 
     /**
@@ -248,8 +266,11 @@ public final class TerrainMesh {
      */
     public static void surfaceColor(ColorMode mode, double kineticFriction, double x, double y, double h,
                                     double minH, double maxH, Bounds b, float[] out) {
-        double weight = unstripedColor(mode, kineticFriction, x, y, h, minH, maxH, out);
-        // Mowing stripes across x, as on a real green (the terrain shaders draw the same per pixel).
+        stripe(unstripedColor(mode, Themes.MEADOWBROOK.materials(), kineticFriction, null, x, y, h, minH, maxH, out), x, b, out);
+    }
+
+    /** Mowing stripes across x, as on a real green (the terrain shaders draw the same per pixel), with this weight. */
+    private static void stripe(double weight, double x, Bounds b, float[] out) {
         double stripe = Math.floorMod((long) Math.floor((x - b.minX()) / STRIPE_WIDTH), 2) == 0 ? 1.0 : STRIPE_SHADE;
         double f = lerp(1, stripe, weight);
         set(out, out[0] * f, out[1] * f, out[2] * f);
@@ -257,10 +278,14 @@ public final class TerrainMesh {
 
     /**
      * The colour without the mowing stripes, into {@code out}; returns the stripes' weight there
-     * (1 - the sand's share on grass, 0 under water and on the height map).
+     * (1 - the sand's share on grass, 0 under water, in hazard zones, on ice and mud and on the
+     * height map).
+     *
+     * @param hazard the hazard of the zone there, or null: water and acid zones (the classic
+     *               tracks' pools) are drawn flat blue and green, shallow ones lighter
      */
-    static double unstripedColor(ColorMode mode, double kineticFriction, double x, double y, double h,
-                                 double minH, double maxH, float[] out) {
+    static double unstripedColor(ColorMode mode, Theme.Materials palette, double kineticFriction, Zone.Hazard hazard,
+                                 double x, double y, double h, double minH, double maxH, float[] out) {
         if (mode == ColorMode.HEIGHT_MAP) {
             heightMapColor(h, minH, maxH, out);
             return 0;
@@ -268,22 +293,45 @@ public final class TerrainMesh {
         if (h < 0) {
             // Lake bed: wet mud, darker with depth.
             double t = Math.min(1, -h / 0.3);
-            set(out, lerp(0.42, 0.24, t), lerp(0.37, 0.20, t), lerp(0.24, 0.12, t));
+            Rgb bed = palette.lakeBed();
+            double k = lerp(1.0, 0.55, t);
+            set(out, bed.r() * k, bed.g() * k, bed.b() * k);
+            return 0;
+        }
+        double ripple = 0.96 + 0.04 * Math.sin(x * 23.0 + y * 7.0);
+        if (hazard != null) {
+            boolean shallow = hazard.when() == Zone.Hazard.When.REST;
+            if (hazard.kind() == Zone.Hazard.Kind.ACID) {
+                set(out, (shallow ? 0.62 : 0.46) * ripple, (shallow ? 0.86 : 0.74) * ripple, (shallow ? 0.30 : 0.10) * ripple);
+            } else {
+                set(out, (shallow ? 0.36 : 0.14) * ripple, (shallow ? 0.62 : 0.40) * ripple, (shallow ? 0.86 : 0.76) * ripple);
+            }
+            return 0;
+        }
+        if (kineticFriction >= MUD_FRICTION) {
+            set(out, 0.42 * ripple, 0.30 * ripple, 0.17 * ripple);
             return 0;
         }
         double sand = Math.min(1, Math.max(0, (kineticFriction - GRASS_FRICTION) / (SAND_FRICTION - GRASS_FRICTION)));
+        double ice = Math.min(1, Math.max(0, (GRASS_ICE_FRICTION - kineticFriction) / (GRASS_ICE_FRICTION - ICE_FRICTION)));
         double grain = 0.97 + 0.03 * Math.sin(x * 41.0) * Math.sin(y * 37.0);
+        Rgb s = palette.sand();
         if (sand >= 1) {
-            set(out, 0.87 * grain, 0.78 * grain, 0.53 * grain);
+            set(out, s.r() * grain, s.g() * grain, s.b() * grain);
             return 0;
         }
         double range = maxH - Math.max(minH, 0);
         double t = range > 1e-6 ? (h - Math.max(minH, 0)) / range : 0.5;
         t = Math.min(1, Math.max(0, t));
-        double gr = lerp(0.13, 0.50, t), gg = lerp(0.38, 0.76, t), gb = lerp(0.11, 0.28, t);
-        set(out, lerp(gr, 0.87 * grain, sand), lerp(gg, 0.78 * grain, sand), lerp(gb, 0.53 * grain, sand));
-        return 1 - sand;
+        Rgb grass = palette.grassLow().mix(palette.grassHigh(), t);
+        // Ice: the grass seen through a pale blue glaze.
+        grass = grass.mix(grass.mix(ICE, 0.75), ice);
+        set(out, lerp(grass.r(), s.r() * grain, sand), lerp(grass.g(), s.g() * grain, sand), lerp(grass.b(), s.b() * grain, sand));
+        return (1 - sand) * (1 - ice);
     }
+
+    /** The colour of ice over grass. */
+    private static final Rgb ICE = Rgb.of(0.78, 0.90, 0.97);
 
     private static final float[][] HEIGHT_STOPS = {
             {0.16f, 0.62f, 0.22f}, // green

@@ -336,6 +336,7 @@ public final class TerrainPass implements RenderPass {
         program.set("uClipPlane", frame.clipPlane);
         program.set("uShininess", 24f);
         program.set("uStripeOrigin", (float) course.bounds().minX());
+        program.set("uStripeShade", (float) minigolf.theme.Themes.of(course.world()).materials().stripeShade());
         program.set("uSpecularStrength", mode == TerrainMesh.ColorMode.GREEN ? 0.10f : 0.05f);
         return program;
     }

@@ -18,26 +18,34 @@ import static org.lwjgl.nuklear.Nuklear.*;
  * that takes no input.
  */
 public final class GuiDrawList {
-    private record Op(int kind, float a, float b, float c, float d, int colour, float thickness, String text) {
+    private record Op(int kind, float a, float b, float c, float d, int colour, float thickness, String text, int plate) {
     }
 
-    private static final int LINE = 0, CIRCLE = 1, DISC = 2, TEXT = 3;
+    private static final int LINE = 0, CIRCLE = 1, DISC = 2, TEXT = 3, LABEL = 4;
     private final List<Op> ops = new ArrayList<>();
 
     public void addLine(float x1, float y1, float x2, float y2, int abgr, float thickness) {
-        ops.add(new Op(LINE, x1, y1, x2, y2, abgr, thickness, null));
+        ops.add(new Op(LINE, x1, y1, x2, y2, abgr, thickness, null, 0));
     }
 
     public void addCircle(float x, float y, float radius, int abgr, int segments, float thickness) {
-        ops.add(new Op(CIRCLE, x, y, radius, 0, abgr, thickness, null));
+        ops.add(new Op(CIRCLE, x, y, radius, 0, abgr, thickness, null, 0));
     }
 
     public void addCircleFilled(float x, float y, float radius, int abgr) {
-        ops.add(new Op(DISC, x, y, radius, 0, abgr, 0, null));
+        ops.add(new Op(DISC, x, y, radius, 0, abgr, 0, null, 0));
     }
 
     public void addText(float x, float y, int abgr, String text) {
-        ops.add(new Op(TEXT, x, y, 0, 0, abgr, 0, text));
+        ops.add(new Op(TEXT, x, y, 0, 0, abgr, 0, text, 0));
+    }
+
+    /**
+     * A label centred on x with its bottom at y, on a rounded plate of {@code plateAbgr} (a name tag
+     * over a ball).
+     */
+    public void addLabel(float x, float y, int textAbgr, int plateAbgr, String text) {
+        ops.add(new Op(LABEL, x, y, 0, 0, textAbgr, 0, text, plateAbgr));
     }
 
     int size() {
@@ -68,6 +76,14 @@ public final class GuiDrawList {
                     case LINE -> nk_stroke_line(canvas, op.a, op.b, op.c, op.d, op.thickness, colour);
                     case CIRCLE -> nk_stroke_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), op.thickness, colour);
                     case DISC -> nk_fill_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), colour);
+                    case LABEL -> {
+                        float w = font.width(op.text) + 2, h = font.height(), pad = 0.25f * h;
+                        int p = op.plate;
+                        NkColor plate = NkColor.malloc(stack).set((byte) p, (byte) (p >> 8), (byte) (p >> 16), (byte) (p >>> 24));
+                        float left = op.a - w / 2, top = op.b - h - pad;
+                        nk_fill_rect(canvas, r.set(left - pad, top - pad, w + 2 * pad, h + 2 * pad), 0.5f * h, plate);
+                        nk_draw_text(canvas, r.set(left, top, w, h), op.text, userFont, none, colour);
+                    }
                     default -> nk_draw_text(canvas, r.set(op.a, op.b, font.width(op.text) + 2, font.height()), op.text,
                             userFont, none, colour);
                 }

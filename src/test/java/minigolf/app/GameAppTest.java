@@ -38,11 +38,14 @@ class GameAppTest {
     @Test
     void scriptedTwoPlayerGameInTheWindow() throws Exception {
         World flat = GameLauncher.loadBundled("/courses/flat.json");
+        // Each ball on its own spot beside the tee (-3, 0).
+        List<minigolf.course.Vec2> tee = minigolf.game.TeeSpots.of(flat, 2);
+        double ax = tee.get(0).x(), ay = tee.get(0).y(), bx = tee.get(1).x(), by = tee.get(1).y();
         List<double[]> shots = List.of(
-                shot(-3, 0, 3, 0.5, 0.5),   // Ann: half-way, stops at (0, 0.25)
-                new double[]{-3.9, 0.1},    // Bob: out of bounds, penalty, back to the start
-                shot(-3, 0, 3, 0.5, 1),     // Bob: holed
-                shot(0, 0.25, 3, 0.5, 1));  // Ann: holed
+                shot(ax, ay, 3, 0.5, 0.5),  // Ann: half-way
+                new double[]{-3.9, 0.1},    // Bob: out of bounds, penalty, back to his spot
+                shot(bx, by, 3, 0.5, 1),    // Bob: holed
+                shot((ax + 3) / 2, (ay + 0.5) / 2, 3, 0.5, 1)); // Ann: holed
         Path shots_ = Path.of(System.getProperty("minigolf.projectDir", "."), "build", "screenshots");
         Files.createDirectories(shots_);
         Path png = shots_.resolve("game-scorecard.png");

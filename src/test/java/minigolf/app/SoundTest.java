@@ -54,6 +54,26 @@ class SoundTest {
         assertTrue(seam <= typical, "seam " + seam + " vs largest step " + typical);
     }
 
+    /** Each world's background loop: its own, deterministic, seamless, at the same peak; Meadowbrook's is the old one. */
+    @Test
+    void everyWorldHasItsOwnSeamlessAmbience() {
+        assertArrayEquals(SoundSynth.make(Sound.AMBIENCE), SoundSynth.ambience(minigolf.theme.Theme.Ambience.BIRDS));
+        java.util.List<short[]> loops = new java.util.ArrayList<>();
+        for (minigolf.theme.Theme.Ambience a : new minigolf.theme.Theme.Ambience[]{minigolf.theme.Theme.Ambience.WAVES,
+                minigolf.theme.Theme.Ambience.DESERT_WIND, minigolf.theme.Theme.Ambience.WINTER_WIND}) {
+            short[] x = SoundSynth.ambience(a);
+            assertArrayEquals(x, SoundSynth.ambience(a), a + " is deterministic");
+            assertEquals(Math.round(0.9 * Short.MAX_VALUE), peak(x), 1, a + " peak");
+            assertTrue(seconds(x) > 5.5 && seconds(x) < 6.1, a + " lasts " + seconds(x));
+            int seam = Math.abs(x[x.length - 1] - x[0]), typical = 0;
+            for (int i = 1; i < x.length; i++) typical = Math.max(typical, Math.abs(x[i] - x[i - 1]));
+            assertTrue(seam <= typical, a + ": seam " + seam + " vs largest step " + typical);
+            for (short[] other : loops) assertFalse(java.util.Arrays.equals(x, other), a + " differs");
+            loops.add(x);
+        }
+        assertEquals(0, peak(SoundSynth.ambience(minigolf.theme.Theme.Ambience.NONE)));
+    }
+
     @Test
     void theDeviceIsOnlyOpenedWhereThereIsSomethingToPlayTo() {
         assertNull(Sounds.reasonToStaySilent(Map.of(), false), "other systems: always try");

@@ -166,7 +166,7 @@ class CourseLoaderTest {
     void unknownFieldListsTheKnownOnes() {
         assertEquals("courses/x.json: physics.frction: unknown field (known: gravity, kineticFriction, staticFriction, maxSpeed, model, ballRadius, ballMass, dragCoefficient, airDensity, groundRestitution)",
                 error(edit("\"gravity\": 9.81,", "\"gravity\": 9.81, \"frction\": 0.1,")));
-        assertEquals("courses/x.json: colour: unknown field (known: format, name, terrain, bounds, physics, start, hole, zones, obstacles)",
+        assertEquals("courses/x.json: colour: unknown field (known: format, name, world, terrain, bounds, physics, start, hole, zones, obstacles)",
                 error(edit("\"name\": \"Lake\",", "\"name\": \"Lake\", \"colour\": \"green\",")));
     }
 
@@ -219,7 +219,7 @@ class CourseLoaderTest {
 
     @Test
     void enumValues() {
-        assertEquals("courses/x.json: zones[0].shape.type: expected one of rect, circle, polygon, got \"star\"",
+        assertEquals("courses/x.json: zones[0].shape.type: expected one of rect, circle, polygon, cells, got \"star\"",
                 error(edit("\"type\": \"rect\"", "\"type\": \"star\"")));
         assertEquals("courses/x.json: physics.model: expected one of classic, complete, got \"fast\"",
                 error(edit("\"model\": \"classic\"", "\"model\": \"fast\"")));

@@ -31,23 +31,27 @@ class GameTest {
     @Test
     void scriptedTwoPlayerGameEndsWithTheRightScores() {
         Game g = twoPlayers();
-        assertEquals(0, g.currentPlayer(), "equal distances: seat order");
+        assertEquals(0, g.currentPlayer(), "teeing off: seat order");
+        // Each ball on its own spot beside the tee (TeeSpots), 0.16 m apart across the line to the hole.
+        PlayerState annTee = g.player(0), bobTee = g.player(1);
+        assertEquals(0.16, Math.hypot(annTee.x() - bobTee.x(), annTee.y() - bobTee.y()), 1e-12);
 
-        double[] half = shot(-3, 0, 3, 0.5, 0.5); // stops half-way: 3.01 m from the hole
+        double[] half = shot(annTee.x(), annTee.y(), 3, 0.5, 0.5); // stops half-way to the hole
         ShotRecord r1 = g.play(half[0], half[1]);
         assertEquals(Outcome.STOPPED, r1.outcome());
         assertEquals(0, r1.player());
-        assertEquals(0.0, g.player(0).x(), 1e-3, "half-way along x from -3 to 3");
-        assertEquals(0.25, g.player(0).y(), 1e-3);
-        assertEquals(1, g.currentPlayer(), "Bob is farther from the hole now");
+        assertEquals((annTee.x() + 3) / 2, g.player(0).x(), 1e-3, "half-way along x from her spot to 3");
+        assertEquals((annTee.y() + 0.5) / 2, g.player(0).y(), 1e-3);
+        assertEquals(1, g.currentPlayer(), "Bob tees off (and is farther from the hole)");
 
         ShotRecord r2 = g.play(-4, 0); // 1 m to the edge at x = -4: out of bounds
         assertEquals(Outcome.OUT, r2.outcome());
         assertEquals(-4.0, r2.endX(), 1e-6, "located where it crossed the bound");
-        assertEquals(new PlayerState(-3, 0, 1, 1, PlayerStatus.PLAYING), g.player(1), "back to the start, one penalty");
+        assertEquals(new PlayerState(bobTee.x(), bobTee.y(), 1, 1, PlayerStatus.PLAYING), g.player(1),
+                "back to his spot, one penalty");
         assertEquals(1, g.currentPlayer(), "Bob is still the farthest");
 
-        double[] full = shot(-3, 0, 3, 0.5, 1);
+        double[] full = shot(bobTee.x(), bobTee.y(), 3, 0.5, 1);
         assertEquals(Outcome.HOLED, g.play(full[0], full[1]).outcome());
         assertEquals(PlayerStatus.HOLED, g.player(1).status());
         assertEquals(0, g.currentPlayer(), "holed players are skipped");
@@ -119,12 +123,13 @@ class GameTest {
     @Test
     void oneStrokeAtATime() {
         Game g = twoPlayers();
+        double x0 = g.player(0).x();
         g.startShot(1, 0);
         assertThrows(IllegalStateException.class, () -> g.startShot(1, 0));
         assertThrows(IllegalStateException.class, g::completeShot, "not finished yet");
         assertEquals(0, g.currentPlayer(), "the rolling ball's owner keeps the turn");
         ShotRecord r = g.finishShotNow();
-        assertEquals(-3 + 1 / (2 * MU_G), g.player(0).x(), 1e-4, "v^2 / (2 mu g) from the start");
+        assertEquals(x0 + 1 / (2 * MU_G), g.player(0).x(), 1e-4, "v^2 / (2 mu g) from Ann's spot");
         assertEquals(Outcome.STOPPED, r.outcome());
     }
 

@@ -11,9 +11,9 @@ class CloudNoiseTest {
         for (int p : new int[]{16, 32, 128}) {
             for (int i = -40; i < 40; i += 3) {
                 for (int j = -40; j < 40; j += 7) {
-                    double v = CloudNoise.lattice(i, j, p);
-                    assertEquals(v, CloudNoise.lattice(i + p, j, p));
-                    assertEquals(v, CloudNoise.lattice(i, j - p, p));
+                    double v = minigolf.texture.Noise.lattice(i, j, p);
+                    assertEquals(v, minigolf.texture.Noise.lattice(i + p, j, p));
+                    assertEquals(v, minigolf.texture.Noise.lattice(i, j - p, p));
                     assertTrue(v >= 0 && v < 1, "lattice value " + v);
                 }
             }
@@ -32,8 +32,8 @@ class CloudNoiseTest {
     @Test
     void noiseInterpolatesTheLatticeAndStaysInRange() {
         // At lattice points the noise is the lattice value; between them it stays within their range.
-        assertEquals(CloudNoise.lattice(3, 5, 16), CloudNoise.noise(3, 5, 16), 1e-15);
-        double a = CloudNoise.lattice(3, 5, 16), b = CloudNoise.lattice(4, 5, 16);
+        assertEquals(minigolf.texture.Noise.lattice(3, 5, 16), CloudNoise.noise(3, 5, 16), 1e-15);
+        double a = minigolf.texture.Noise.lattice(3, 5, 16), b = minigolf.texture.Noise.lattice(4, 5, 16);
         double mid = CloudNoise.noise(3.5, 5, 16);
         assertEquals((a + b) / 2, mid, 1e-12); // the smoothstep weight is exactly 1/2 half way
         double min = 1, max = 0, sum = 0;

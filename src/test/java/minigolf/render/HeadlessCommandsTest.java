@@ -26,6 +26,11 @@ class HeadlessCommandsTest {
     }
 
     private static Result run(List<String> jvmOptions, String... args) throws IOException, InterruptedException {
+        return run(jvmOptions, java.util.Map.of(), args);
+    }
+
+    private static Result run(List<String> jvmOptions, java.util.Map<String, String> env, String... args)
+            throws IOException, InterruptedException {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.add("-Xmx512m");
@@ -39,6 +44,7 @@ class HeadlessCommandsTest {
         pb.environment().remove("WAYLAND_DISPLAY");
         pb.environment().remove("XDG_RUNTIME_DIR");
         pb.environment().remove("MINIGOLF_GL");
+        pb.environment().putAll(env);
         Process p = pb.start();
         p.getOutputStream().close();
         var out = p.getInputStream().readAllBytes();
@@ -49,6 +55,35 @@ class HeadlessCommandsTest {
 
     private static Path projectDir() {
         return Path.of(System.getProperty("minigolf.projectDir", "."));
+    }
+
+    /** The EGL device platform (NVIDIA's path; Mesa offers it too) renders and exits 0 after its teardown. */
+    @Test
+    void renderOnTheEglDevicePlatformExitsZero() throws Exception {
+        Path png = dir.resolve("device.png");
+        Result r = run(List.of(), java.util.Map.of("MINIGOLF_EGL", "device"), "render", "courses/lake.json", "--out", png.toString(),
+                "--size", "160x100");
+        org.junit.jupiter.api.Assumptions.assumeFalse(r.err().contains("no device platform"), "this EGL has no device platform");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(Files.size(png) > 1000);
+    }
+
+    /** bench-render given a round times every hole and writes a table with the load average. */
+    @Test
+    void benchRenderOfARoundTimesEveryHoleAndWritesATable() throws Exception {
+        Path holes = projectDir().resolve("courses/worlds/canyon").toAbsolutePath();
+        Path round = dir.resolve("two.json");
+        Files.writeString(round, "{\"format\": 1, \"name\": \"Two\", \"holes\": [{\"course\": \""
+                + holes.resolve("01-trailhead.json") + "\", \"par\": 2}, {\"course\": \"" + holes.resolve("09-butte-bowl.json")
+                + "\", \"par\": 2}]}");
+        Path table = dir.resolve("table.md");
+        Result r = run(List.of(), "bench-render", round.toString(), "--frames", "2", "--size", "160x100", "--quality", "software",
+                "--table", table.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("\"holes\":[") && r.out().contains("\"course\":\"Trailhead\"") && r.out().contains("\"world\":\"canyon\""), r.out());
+        String t = Files.readString(table);
+        assertTrue(t.contains("| 1 | Trailhead | 2 |") && t.contains("| 2 | Butte Bowl | 2 |"), t);
+        assertTrue(t.contains("load average") && t.contains("Slowest hole"), t);
     }
 
     @Test

@@ -14,6 +14,7 @@ import minigolf.bot.friction.FrictionPrior;
 import minigolf.bot.noise.PlayedStroke;
 import minigolf.bot.noise.ShotNoise;
 import minigolf.bot.search.SearchBot;
+import minigolf.physics.Landing;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
@@ -108,11 +109,11 @@ public final class Playthrough {
             strokes++;
             if (result.outcome() == Outcome.HOLED) {
                 holed = true;
-            } else if (result.outcome().isPenalty()) {
-                strokes++;
             } else {
-                x = result.endX();
-                y = result.endY();
+                Landing landing = Landing.of(world, result, x, y);
+                strokes += landing.penalty();
+                x = landing.x();
+                y = landing.y();
             }
             if (counting.remaining() <= 0 || token.timeUp()) break;
         }

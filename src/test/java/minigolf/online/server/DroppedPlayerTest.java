@@ -77,7 +77,8 @@ class DroppedPlayerTest {
                 assertTrue(ann.await("notice").get("text").asText().contains("Bob is back"));
                 ObjectNode s = back.putt(1, 0);
                 assertEquals(2, s.get("seq").asLong());
-                assertEquals(-3 + ServerPlayTest.ONE_METRE_PER_SECOND_ROLL, s.get("end").get(0).asDouble(), 1e-3);
+                assertEquals(ServerPlayTest.tee(1).x() + ServerPlayTest.ONE_METRE_PER_SECOND_ROLL, s.get("end").get(0).asDouble(),
+                        1e-3);
             }
         }
     }

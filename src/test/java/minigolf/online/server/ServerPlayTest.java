@@ -23,6 +23,11 @@ class ServerPlayTest {
     /** On Flat (friction 0.1, start at (-3, 0)) a 1 m/s putt along x stops after v^2 / (2 mu g) = 0.5097 m. */
     static final double ONE_METRE_PER_SECOND_ROLL = 1.0 / (2 * 0.1 * 9.81);
 
+    /** Where seat {@code seat}'s ball waits beside the flat course's tee (-3, 0) in a two-player room (TeeSpots). */
+    static minigolf.course.Vec2 tee(int seat) {
+        return minigolf.game.TeeSpots.of(minigolf.app.GameLauncher.loadBundled("/courses/flat.json"), 2).get(seat);
+    }
+
     @Test
     void twoPlayersTakeTurnsAndEveryShotIsChecked() throws Exception {
         try (GameServer server = TestServers.start(dir.resolve("s.db").toString());
@@ -54,8 +59,8 @@ class ServerPlayTest {
             assertEquals(1, stroke.get("seq").asLong());
             assertEquals(0, stroke.get("seat").asInt());
             assertEquals("stopped", stroke.get("outcome").asText());
-            assertEquals(-3 + ONE_METRE_PER_SECOND_ROLL, stroke.get("end").get(0).asDouble(), 1e-3);
-            assertEquals(0, stroke.get("end").get(1).asDouble(), 1e-9);
+            assertEquals(tee(0).x() + ONE_METRE_PER_SECOND_ROLL, stroke.get("end").get(0).asDouble(), 1e-3);
+            assertEquals(tee(0).y(), stroke.get("end").get(1).asDouble(), 1e-9);
             // Bob is now farthest from the hole: his turn; both clients settle the stroke where the server put it.
             bob.await(m -> m.path("seq").asLong() == 1 && m.path("type").asText().equals("stroke"), "stroke 1");
             assertEquals(1, stroke.get("turn").asInt());

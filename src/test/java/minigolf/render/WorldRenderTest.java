@@ -1,0 +1,108 @@
+package minigolf.render;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.nio.file.Path;
+import java.util.List;
+import minigolf.course.Course;
+import minigolf.course.Obstacle;
+import minigolf.course.Vec2;
+import org.joml.Vector3f;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Each world renders as its own place (needs an OpenGL context): the ground round the course is grass,
+ * sand or snow, the seaside has the sea below its horizon, and the flag's cloth moves with time.
+ */
+class WorldRenderTest {
+    static final int W = 480, H = 270;
+    static final Obstacle.Wall RAIL = new Obstacle.Wall(new Vec2(-4, -1), new Vec2(4, -1), 0.08, 0.1, 0.75);
+
+    static Pixels shot(String world, OrbitCamera cam, RenderQuality q, float time, String name) {
+        Course course = TestCourses.flat().withObstacles(List.of(RAIL)).withWorld(world);
+        Path png = TestCourses.screenshotDir().resolve(name);
+        try (Offscreen off = new Offscreen(W, H, 0);
+             SceneRenderer r = new SceneRenderer(course, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN, q)) {
+            r.setBalls(List.of());
+            off.bind();
+            r.render(cam, W, H, time);
+            assertEquals(0, org.lwjgl.opengl.GL11.glGetError(), world);
+            off.savePng(png);
+        }
+        return Pixels.read(png);
+    }
+
+    /** A low view along the course's long side: ground on both sides of it, the horizon near the top. */
+    static OrbitCamera low() {
+        return new OrbitCamera(new Vector3f(0, 0, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(10), 14f);
+    }
+
+    @Test
+    void theGroundRoundTheCourseIsEachWorldsOwn() {
+        for (RenderQuality q : new RenderQuality[]{RenderQuality.HIGH, RenderQuality.SOFTWARE}) {
+            // The bottom corners show the ground a few metres beside the course.
+            int[] meadow = mean(shot("meadowbrook", low(), q, 0, "world-meadowbrook-" + q.name() + ".png"));
+            int[] canyon = mean(shot("canyon", low(), q, 0, "world-canyon-" + q.name() + ".png"));
+            int[] winter = mean(shot("winter", low(), q, 0, "world-winter-" + q.name() + ".png"));
+            assertTrue(meadow[1] > meadow[0] + 10 && meadow[1] > meadow[2] + 10, q.name() + " grass " + java.util.Arrays.toString(meadow));
+            assertTrue(canyon[0] > canyon[1] + 20 && canyon[1] > canyon[2] + 10, q.name() + " sand " + java.util.Arrays.toString(canyon));
+            assertTrue(winter[0] > 170 && winter[1] > 170 && winter[2] > 190, q.name() + " snow " + java.util.Arrays.toString(winter));
+        }
+    }
+
+    /** The mean colour of the image's bottom-left and bottom-right 40 x 30 pixels. */
+    private static int[] mean(Pixels p) {
+        long r = 0, g = 0, b = 0, n = 0;
+        for (int y = H - 30; y < H; y++) {
+            for (int x : new int[]{0, W - 40}) {
+                for (int dx = 0; dx < 40; dx++) {
+                    r += p.r(x + dx, y);
+                    g += p.g(x + dx, y);
+                    b += p.b(x + dx, y);
+                    n++;
+                }
+            }
+        }
+        return new int[]{(int) (r / n), (int) (g / n), (int) (b / n)};
+    }
+
+    @Test
+    void theSeasideHasTheSeaBelowItsHorizon() {
+        // From high above the course the shore (14 m off) and the sea beyond it fill the picture's edges:
+        // deep blue-green water in the seaside world only (Meadowbrook's far meadow fades to a light haze).
+        OrbitCamera out = new OrbitCamera(new Vector3f(0, 0, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(35), 30f);
+        Pixels sea = shot("seaside", out, RenderQuality.SOFTWARE, 0, "world-seaside-sea.png");
+        Pixels meadow = shot("meadowbrook", out, RenderQuality.SOFTWARE, 0, "world-meadowbrook-far.png");
+        int seaPixels = 0, meadowPixels = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                if (deepWater(sea, x, y)) seaPixels++;
+                if (deepWater(meadow, x, y)) meadowPixels++;
+            }
+        }
+        assertTrue(seaPixels > W * H / 10, "sea pixels " + seaPixels);
+        assertEquals(0, meadowPixels, "Meadowbrook has no sea");
+    }
+
+    private static boolean deepWater(Pixels p, int x, int y) {
+        return p.b(x, y) > p.r(x, y) + 40 && p.g(x, y) > p.r(x, y) + 20 && p.r(x, y) < 90 && p.b(x, y) < 190;
+    }
+
+    @Test
+    void theFlagWaves() {
+        // From beside the hole (the flat course's hole is at 3.3, 3.0), the cloth is drawn at two moments.
+        OrbitCamera cam = new OrbitCamera(new Vector3f(3.3f, 3.0f, 0.8f), (float) Math.toRadians(-60), (float) Math.toRadians(12), 2.2f);
+        Pixels a = shot("meadowbrook", cam, RenderQuality.HIGH, 0, "flag-t0.png");
+        Pixels b = shot("meadowbrook", cam, RenderQuality.HIGH, 0.4f, "flag-t04.png");
+        int changed = 0, red = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                boolean ra = a.r(x, y) > 120 && a.r(x, y) > 2 * a.g(x, y), rb = b.r(x, y) > 120 && b.r(x, y) > 2 * b.g(x, y);
+                if (ra) red++;
+                if (ra != rb) changed++;
+            }
+        }
+        assertTrue(red > 200, "the cloth is in view: " + red + " red pixels");
+        assertTrue(changed > red / 10, "the cloth moved: " + changed + " of " + red + " pixels changed");
+    }
+}
