@@ -15,14 +15,14 @@ export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}; chmod 700 "$XDG_RUNTIME
 server=$!
 trap 'kill $server 2>/dev/null || true' EXIT
 for _ in $(seq 60); do [ -s "$out/server.out" ] && break; sleep 1; done
-# Each window keeps its settings and remembered seat in a home of its own.
-HOME="$out/ann-home" xvfb-run -n "$da" -s "-screen 0 1600x1000x24" "$bin" play --online "127.0.0.1:$port" --create flat \
+# Each window keeps its settings, high scores and remembered seat in a config folder of its own.
+XDG_CONFIG_HOME="$out/ann-config" xvfb-run -n "$da" -s "-screen 0 1600x1000x24" "$bin" play --online "127.0.0.1:$port" --create flat \
     --seats 2 --name Ann --shots 3.425:0.2854 --frames 6000 --screenshot "$out/ann.png" > "$out/ann.out" 2> "$out/ann.err" &
 ann=$!
 for _ in $(seq 120); do [ -s "$out/ann.out" ] && break; sleep 1; done
 code=$(head -1 "$out/ann.out" | sed 's/.*"room": "\([A-Z0-9]*\)".*/\1/')
 echo "room $code"
-HOME="$out/bob-home" xvfb-run -n "$db" -s "-screen 0 1600x1000x24" "$bin" play --online "127.0.0.1:$port" --room "$code" \
+XDG_CONFIG_HOME="$out/bob-config" xvfb-run -n "$db" -s "-screen 0 1600x1000x24" "$bin" play --online "127.0.0.1:$port" --room "$code" \
     --name Bob --shots 2.5:0.2,2.3497:0.2046 --frames 6000 --screenshot "$out/bob.png" > "$out/bob.out" 2> "$out/bob.err" &
 bob=$!
 wait $ann $bob

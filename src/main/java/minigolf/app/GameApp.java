@@ -317,7 +317,8 @@ public final class GameApp implements WindowApp {
     void startOnline(OnlinePlay.Entry entry) {
         java.nio.file.Path memoryFile = OnlineMemory.file(files.store().directory());
         play.startOnline(new OnlinePlay(entry, this::say, (room, token) -> {
-            OnlineMemory.load(memoryFile).withSeat(room, token).save(memoryFile);
+            // The server and name the seat was taken with (the command line's may differ from the screen's last).
+            OnlineMemory.seat(entry, room, token).save(memoryFile);
             roomCodeListener.accept(room);
         }));
         setScreen(screens.lobby());

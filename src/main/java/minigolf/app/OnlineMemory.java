@@ -43,7 +43,14 @@ record OnlineMemory(String server, String name, String room, String token) {
         }
     }
 
-    OnlineMemory withSeat(String r, String t) {
-        return new OnlineMemory(server, name, r, t);
+    /** The seat {@code r} with token {@code t} taken on {@code entry}'s server under its name. */
+    static OnlineMemory seat(OnlinePlay.Entry entry, String r, String t) {
+        return new OnlineMemory(serverText(entry.server()), entry.name(), r, t);
+    }
+
+    /** A server's address as typed: {@code HOST:PORT} for a plain WebSocket on the game's path, else the whole URI. */
+    static String serverText(java.net.URI uri) {
+        boolean plain = "ws".equals(uri.getScheme()) && Protocol.PATH.equals(uri.getPath()) && uri.getPort() > 0;
+        return plain ? uri.getHost() + ":" + uri.getPort() : uri.toString();
     }
 }

@@ -80,6 +80,8 @@ class OnlineWindowTest {
             // The seat is remembered; the round saves and loads back as hot seat's do.
             OnlineMemory memory = OnlineMemory.load(OnlineMemory.file(config));
             assertEquals(card.get("room").asText(), memory.room());
+            assertEquals("127.0.0.1:" + server.port(), memory.server(), "the server the seat is on, to resume it there");
+            assertEquals("Ann", memory.name());
             assertTrue(minigolf.online.Protocol.TOKEN.matcher(memory.token()).matches(), "the seat's token, to resume it");
             Path save = dir.resolve("online-round.json");
             SavedRounds.save(round, save);
