@@ -64,6 +64,8 @@ public final class CountingSimulator {
     private final boolean primary;
     /** The simulator of the real world (not a variant): all its results are real, for {@link #knownResult}. */
     private final boolean real;
+    /** The watchdog every shot runs under, reused (a shot allocates nothing for it). */
+    private final Watchdog watchdog;
 
     /**
      * @param budget the most simulations allowed in total ({@code Long.MAX_VALUE}: unlimited)
@@ -85,6 +87,7 @@ public final class CountingSimulator {
         this.account = account;
         this.primary = primary;
         this.real = real;
+        this.watchdog = new Watchdog(account.token);
     }
 
     /**
@@ -217,7 +220,19 @@ public final class CountingSimulator {
         Shot limited = limit(shot);
         account.used++;
         if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
-        ShotResult result = play(simulator, x, y, limited, new Watchdog(account.token, listener));
+        Watchdog watchdog = this.watchdog;
+        // A listener that simulates while its shot runs gets a watchdog of its own.
+        if (watchdog.busy) watchdog = new Watchdog(account.token);
+        watchdog.busy = true;
+        watchdog.inner = listener;
+        watchdog.steps = 0;
+        ShotResult result;
+        try {
+            result = play(simulator, x, y, limited, watchdog);
+        } finally {
+            watchdog.inner = null;
+            watchdog.busy = false;
+        }
         // A candidate variant's results are the real world's except where it holes.
         if (primary && (real || result.outcome() != Outcome.HOLED) && x == account.fromX && y == account.fromY) {
             account.results.put(limited, result);
@@ -240,8 +255,7 @@ public final class CountingSimulator {
     public static ShotResult play(Simulator simulator, double x, double y, Shot shot, TrajectoryListener listener) {
         try {
             if (shot.isPutt()) return simulator.simulate(x, y, shot.vx(), shot.vy(), listener);
-            return listener == null ? simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz())
-                    : simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz(), listener);
+            return simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz(), listener, false);
         } catch (minigolf.physics.NonFiniteMotionException e) {
             // The ball's motion overflowed (terrain too steep, or not finite between the loader's
             // samples): out of play, as the game rules it (StrokeAnimator); the ball stays where it was.
@@ -267,12 +281,19 @@ public final class CountingSimulator {
      */
     private static final class Watchdog implements TrajectoryListener {
         private final CancellationToken token;
-        private final TrajectoryListener inner;
-        private int steps;
+        /** The bot's own listener for the shot running, or null. */
+        TrajectoryListener inner;
+        boolean busy;
+        int steps;
 
-        Watchdog(CancellationToken token, TrajectoryListener inner) {
+        Watchdog(CancellationToken token) {
             this.token = token;
-            this.inner = inner;
+        }
+
+        /** Events and the path only if the bot's own listener wants them: a bare watchdog only counts steps. */
+        @Override
+        public boolean wantsDetail() {
+            return inner != null && inner.wantsDetail();
         }
 
         @Override

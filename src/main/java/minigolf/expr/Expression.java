@@ -76,6 +76,11 @@ public final class Expression {
         return BytecodeCompiler.compile(folded, source);
     }
 
+    /** Whether the height is smooth wherever it is finite (no crease, kink or branch cut: {@link Smoothness}). */
+    public boolean isSmooth() {
+        return Smoothness.isSmooth(folded);
+    }
+
     /** A parseable form of the expression. */
     @Override
     public String toString() {

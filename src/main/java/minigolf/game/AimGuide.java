@@ -1,19 +1,17 @@
 package minigolf.game;
 
 import minigolf.physics.Outcome;
-import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
-import minigolf.physics.Simulator;
-import minigolf.physics.TrajectoryListener;
+import minigolf.physics.Stroke;
 import minigolf.physics.World;
 
 import java.util.Arrays;
 
 /**
  * The aim guide for beginners ({@link UserSettings#aimGuide()}): where the ball aimed now would go
- * in its first {@link #SECONDS} seconds, from the real engine ({@link Simulator}, the game's own
+ * in its first {@link #SECONDS} seconds, from the real engine ({@link Stroke}, the game's own
  * integrator and step) cut off at that time. {@code points} are (x, y, z) triplets of the ball's
- * contact point, one per integration step, from the ball's position on; {@code outcome} is how the
+ * contact point, one per frame of dt as the game shows it, from the ball's position on; {@code outcome} is how the
  * stroke ends if it ends within the window (holed, stopped, water, out), else null.
  */
 public record AimGuide(float[] points, Outcome outcome) {
@@ -37,28 +35,14 @@ public record AimGuide(float[] points, Outcome outcome) {
         SimulationSettings cut = new SimulationSettings(settings.integrator(), settings.dt(), Math.min(seconds, settings.maxTime()));
         float[][] buffer = {new float[3 * 64]};
         int[] n = {0};
-        TrajectoryListener recorder = new TrajectoryListener() {
-            @Override
-            public void onStep(double t, double px, double py, double pvx, double pvy) {
-                onState(t, px, py, world.terrain().height(px, py), pvx, pvy, 0);
-            }
-
-            @Override
-            public void onState(double t, double px, double py, double pz, double pvx, double pvy, double pvz) {
-                if (t > seconds + 1e-9) return;
-                add(buffer, n, px, py, pz);
-            }
-        };
         add(buffer, n, x, y, world.terrain().height(x, y));
-        ShotResult r = new Simulator(world, cut).simulate(x, y, vx, vy, vz, recorder);
-        Outcome outcome = r.outcome() == Outcome.TIMEOUT ? null : r.outcome();
-        if (outcome != null) {
-            // The stroke ended inside the window: the guide ends where it ended (the rest point, the water's edge, ...).
-            double z = Double.isFinite(r.endZ()) ? r.endZ() : world.terrain().height(r.endX(), r.endY());
-            int last = 3 * (n[0] - 1);
-            float[] b = buffer[0];
-            if (b[last] != (float) r.endX() || b[last + 1] != (float) r.endY()) add(buffer, n, r.endX(), r.endY(), z);
+        // Frame by frame, as the game shows the ball: the steps themselves may be longer than a frame.
+        Stroke stroke = new Stroke(world, cut, x, y, vx, vy, vz, null, false);
+        while (!stroke.isFinished()) {
+            stroke.step();
+            add(buffer, n, stroke.x(), stroke.y(), stroke.z());
         }
+        Outcome outcome = stroke.result().outcome() == Outcome.TIMEOUT ? null : stroke.result().outcome();
         return new AimGuide(Arrays.copyOf(buffer[0], 3 * n[0]), outcome);
     }
 

@@ -1,7 +1,5 @@
 package minigolf.physics;
 
-import minigolf.terrain.Terrain;
-
 /**
  * The integrator's mutable state, which every piece of a {@link Stroke} reads and rewrites: the
  * ball (position, velocity, time and the terrain sample under it), the start of the last rolling
@@ -10,9 +8,8 @@ import minigolf.terrain.Terrain;
  * fields, as the pieces use them on the hot path; one object per stroke, never shared.
  */
 final class BallState {
-    private final Terrain terrain;
+    private final GroundCache ground;
     private final FrictionField friction;
-    private final double[] sample = new double[3];
 
     // The ball and the terrain sample at it (reused as the first stage of the next step).
     double x, y, vx, vy, t;
@@ -36,13 +33,28 @@ final class BallState {
     Outcome outcome;
     double endX, endY, endZ;
 
-    BallState(Terrain terrain, FrictionField friction, double x, double y, double vx, double vy) {
-        this.terrain = terrain;
+    BallState(GroundCache ground, FrictionField friction) {
+        this.ground = ground;
         this.friction = friction;
+    }
+
+    /** A new stroke: the ball at (x, y) with velocity (vx, vy) on the ground, everything else cleared. */
+    void reset(double x, double y, double vx, double vy) {
         this.x = x;
         this.y = y;
         this.vx = vx;
         this.vy = vy;
+        t = 0;
+        h = hx = hy = muK = 0;
+        steps = 0;
+        z = vz = 0;
+        flying = false;
+        px = py = pvx = pvy = pt = ph = phx = phy = pMuK = 0;
+        resume = false;
+        subPiece = false;
+        pieceTime = 0;
+        outcome = null;
+        endX = endY = endZ = 0;
     }
 
     /** Whether a ball coming to rest here ends the stroke in a hazard zone. */
@@ -57,7 +69,7 @@ final class BallState {
 
     /** Samples the terrain and friction under the ball into h, hx, hy, muK. */
     void sampleGround() {
-        terrain.sample(x, y, sample);
+        double[] sample = ground.at(x, y);
         h = sample[0];
         hx = sample[1];
         hy = sample[2];

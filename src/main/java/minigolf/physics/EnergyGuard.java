@@ -46,7 +46,8 @@ final class EnergyGuard {
     boolean dissipates(RollingStep.Kind kind, double a1x, double a1y) {
         BallState b = ball;
         double e0 = energy(b.pvx, b.pvy, b.ph, b.phx, b.phy);
-        double allowed = e0 - halfFrictionWork(Math.hypot(b.x - b.px, b.y - b.py));
+        double cx = b.x - b.px, cy = b.y - b.py;
+        double allowed = e0 - halfFrictionWork(Math.sqrt(cx * cx + cy * cy));
         double slack = 1e-9 * (Math.abs(e0) + 1);
         double e1 = energy(b.vx, b.vy, b.h, b.hx, b.hy);
         if (e1 <= allowed + slack) return true;

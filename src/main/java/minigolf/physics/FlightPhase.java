@@ -20,13 +20,15 @@ final class FlightPhase {
     private final PathSweep paths;
     private final ObstacleContact contact;
     private final double ballRadius;
+    /** The longest flying step: the base step dt (a flight's landing is looked for at each step's end). */
+    private final double dt;
     private final double maxTime;
     // The state a flight sub-step produced.
     private double fx, fy, fz, fvx, fvy, fvz;
 
     FlightPhase(BallState ball, StrokeReports reports, FlightStep flight, GroundImpact impact, HoleRules hole,
                 RestRule rest, PlayArea area, CollisionScene scene, PathSweep paths, ObstacleContact contact,
-                double ballRadius, double maxTime) {
+                double ballRadius, double dt, double maxTime) {
         this.ball = ball;
         this.reports = reports;
         this.flight = flight;
@@ -38,16 +40,19 @@ final class FlightPhase {
         this.paths = paths;
         this.contact = contact;
         this.ballRadius = ballRadius;
+        this.dt = dt;
         this.maxTime = maxTime;
     }
 
-    /** One flying piece of at most tau seconds; returns the time it took. */
+    /** One flying piece of at most tau seconds (and at most dt); returns the time it took. */
     double piece(double tau) {
         BallState b = ball;
         if (b.t >= maxTime) {
             reports.finish(Outcome.TIMEOUT, b.x, b.y, b.z);
             return 0;
         }
+        boolean cut = tau > Math.min(dt, maxTime - b.t);
+        if (cut) tau = Math.min(dt, maxTime - b.t);
         advance(tau);
         if (!Double.isFinite(fx + fy + fz + fvx + fvy + fvz)) throw NonFiniteMotionException.motion(b.x, b.y);
         double endTau = tau;
@@ -86,6 +91,11 @@ final class FlightPhase {
             land();
         }
         if (b.outcome == null) reports.state();
+        if (cut && !b.resume && b.outcome == null) {
+            // The rest of a long step that began rolling: no contact, so no count towards a wedge.
+            b.resume = true;
+            b.subPiece = true;
+        }
         return endTau;
     }
 

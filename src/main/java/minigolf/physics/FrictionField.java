@@ -2,6 +2,8 @@ package minigolf.physics;
 
 import java.util.List;
 import minigolf.course.PhysicsSettings;
+import minigolf.course.Shape;
+import minigolf.course.Vec2;
 import minigolf.course.TerrainSpec;
 import minigolf.course.Zone;
 
@@ -15,6 +17,8 @@ public final class FrictionField {
     private final Zone[] zones;
     private final TerrainSpec.HeightGrid grid;
     private final boolean uniform;
+    /** Each zone's bounding box: minX, minY, maxX, maxY. */
+    private final double[] boxes;
     private final boolean hazards;
 
     public FrictionField(PhysicsSettings physics, List<Zone> zones, TerrainSpec terrain) {
@@ -24,9 +28,62 @@ public final class FrictionField {
         this.grid = terrain instanceof TerrainSpec.HeightGrid g
                 && (g.kineticFriction() != null || g.staticFriction() != null) ? g : null;
         this.uniform = this.zones.length == 0 && grid == null;
+        this.boxes = new double[4 * this.zones.length];
+        for (int k = 0; k < this.zones.length; k++) box(this.zones[k].shape(), k);
         boolean any = false;
         for (Zone z : this.zones) any |= z.hazard() != null;
         this.hazards = any;
+    }
+
+    private void box(Shape shape, int k) {
+        double[] b = boxes;
+        if (shape instanceof Shape.Rect r) {
+            b[4 * k] = r.min().x();
+            b[4 * k + 1] = r.min().y();
+            b[4 * k + 2] = r.max().x();
+            b[4 * k + 3] = r.max().y();
+        } else if (shape instanceof Shape.Circle c) {
+            b[4 * k] = c.center().x() - c.radius();
+            b[4 * k + 1] = c.center().y() - c.radius();
+            b[4 * k + 2] = c.center().x() + c.radius();
+            b[4 * k + 3] = c.center().y() + c.radius();
+        } else if (shape instanceof Shape.Cells c) {
+            b[4 * k] = c.origin().x();
+            b[4 * k + 1] = c.origin().y();
+            b[4 * k + 2] = c.origin().x() + c.columns() * c.size();
+            b[4 * k + 3] = c.origin().y() + c.rows() * c.size();
+        } else {
+            double minX = Double.POSITIVE_INFINITY, minY = minX, maxX = -minX, maxY = -minX;
+            for (Vec2 p : ((Shape.Polygon) shape).points()) {
+                minX = Math.min(minX, p.x());
+                minY = Math.min(minY, p.y());
+                maxX = Math.max(maxX, p.x());
+                maxY = Math.max(maxY, p.y());
+            }
+            b[4 * k] = minX;
+            b[4 * k + 1] = minY;
+            b[4 * k + 2] = maxX;
+            b[4 * k + 3] = maxY;
+        }
+    }
+
+    /**
+     * Whether friction may change inside the rectangle: a zone's edge may cross it (its bounding
+     * box meets the rectangle, which does not lie inside a rectangular or round zone), or the
+     * grid gives friction per node. False means one friction everywhere in it.
+     */
+    public boolean mayChangeWithin(double minX, double minY, double maxX, double maxY) {
+        if (grid != null) return true;
+        double[] b = boxes;
+        for (int k = 0; k < zones.length; k++) {
+            if (b[4 * k] > maxX || b[4 * k + 2] < minX || b[4 * k + 1] > maxY || b[4 * k + 3] < minY) continue;
+            Shape shape = zones[k].shape();
+            boolean inside = (shape instanceof Shape.Rect || shape instanceof Shape.Circle)
+                    && shape.contains(minX, minY) && shape.contains(maxX, minY)
+                    && shape.contains(minX, maxY) && shape.contains(maxX, maxY);
+            if (!inside) return true;
+        }
+        return false;
     }
 
     /** Whether some zone is a hazard (water or acid drawn as a zone). */

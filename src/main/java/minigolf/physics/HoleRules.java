@@ -31,6 +31,12 @@ final class HoleRules {
         this.captureSpeed = hole.effectiveCaptureSpeed();
     }
 
+    /** Whether the hole comes within {@code reach} of (qx, qy). */
+    boolean within(double qx, double qy, double reach) {
+        double dx = qx - holeX, dy = qy - holeY, r = reach + holeRadius;
+        return dx * dx + dy * dy <= r * r;
+    }
+
     /** Whether (qx, qy) is within the hole's radius: a ball at rest there is holed. */
     boolean isInHole(double qx, double qy) {
         double dx = qx - holeX, dy = qy - holeY;
@@ -62,7 +68,8 @@ final class HoleRules {
                 : Math.max(0, Math.min(1, ((holeX - x) * dx + (holeY - y) * dy) / lengthSquared));
         if (f >= 1 && !pathEndsHere) return false;
         double cx = x + f * dx, cy = y + f * dy;
-        double delta = Math.hypot(holeX - cx, holeY - cy);
+        double ox = holeX - cx, oy = holeY - cy;
+        double delta = Math.sqrt(ox * ox + oy * oy);
         if (delta >= holeRadius) return false;
         double ratio = delta / holeRadius;
         double speedThere = speed0 + f * (speed1 - speed0);

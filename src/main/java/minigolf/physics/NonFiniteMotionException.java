@@ -16,6 +16,11 @@ public final class NonFiniteMotionException extends RuntimeException {
         return new NonFiniteMotionException("the terrain's height or slope is not a finite number", x, y);
     }
 
+    static NonFiniteMotionException unresolved(double x, double y) {
+        return new NonFiniteMotionException(
+                "the ball's path cannot be followed (the ground changes faster than any step can resolve)", x, y);
+    }
+
     static NonFiniteMotionException motion(double x, double y) {
         return new NonFiniteMotionException(
                 "the ball's motion overflows (friction or slope too large, or a terrain that is not finite nearby)", x, y);

@@ -157,7 +157,7 @@ final class PathSweep {
     }
 
     /** The cubic Hermite curve at s in [0, 1] from p0 with tangent m0 to p1 with tangent m1. */
-    private static double hermite(double s, double p0, double m0, double p1, double m1) {
+    static double hermite(double s, double p0, double m0, double p1, double m1) {
         double s2 = s * s, s3 = s2 * s;
         return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (3 * s2 - 2 * s3) * p1 + (s3 - s2) * m1;
     }

@@ -15,6 +15,8 @@ final class RollingPhase {
     private final StrokeReports reports;
     private final RollingStep rolling;
     private final RollingTrial trial;
+    /** The RK4 step's error control; null for the other integrators. */
+    private final StepControl control;
     private final StepLocator locate;
     private final RestRule rest;
     private final TakeOff takeOff;
@@ -28,22 +30,28 @@ final class RollingPhase {
     private final Terrain terrain;
     private final double gravity;
     private final double ballRadius;
+    /** The base step (the frame, 1/60 s by default); longer steps only where {@link #mayStepLong} allows. */
+    private final double dt;
     private final double maxTime;
     /** Whether the course has friction zones, whose edges cut steps. */
     private final boolean zoned;
     /** Whether RK4's error control chooses the steps' lengths. */
     private final boolean controlled;
+    /** Whether the ground is smooth (no crease, no cell edge): only there may steps be longer than dt. */
+    private final boolean smooth;
+    private final FrictionField friction;
     /** Whether the hole's capture rule is checked along every step. */
     private final boolean captureRule;
 
-    RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepLocator locate,
-                 RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy, CollisionScene scene,
-                 Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain, double gravity,
-                 double ballRadius, double maxTime, boolean zoned) {
+    RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepControl control,
+                 StepLocator locate, RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy,
+                 CollisionScene scene, Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain,
+                 FrictionField friction, PlayArea area, double gravity, double ballRadius, double dt, double maxTime) {
         this.ball = ball;
         this.reports = reports;
         this.rolling = rolling;
         this.trial = trial;
+        this.control = control;
         this.locate = locate;
         this.rest = rest;
         this.takeOff = takeOff;
@@ -56,9 +64,12 @@ final class RollingPhase {
         this.terrain = terrain;
         this.gravity = gravity;
         this.ballRadius = ballRadius;
+        this.dt = dt;
         this.maxTime = maxTime;
-        this.zoned = zoned;
-        this.controlled = trial.controlled();
+        this.friction = friction;
+        this.zoned = friction.hasZones();
+        this.controlled = control != null;
+        this.smooth = terrain.isSmooth() && !area.hasDeletedCells();
         this.captureRule = hole.captureRule;
     }
 
@@ -69,6 +80,8 @@ final class RollingPhase {
             reports.finish(Outcome.TIMEOUT, b.x, b.y, b.z);
             return 0;
         }
+        // The time limit ends the stroke exactly (a preview of its first seconds ends there).
+        if (tau > maxTime - b.t) tau = maxTime - b.t;
         double speed = Math.sqrt(b.vx * b.vx + b.vy * b.vy);
         // A ball leaning on an obstacle leaves it at rest, where the ground no longer pulls it
         // towards it, or where the obstacle is out of reach (its end).
@@ -86,7 +99,6 @@ final class RollingPhase {
                     b.x, b.y, b.z);
             return 0;
         }
-        b.pieceTime = tau;
         rolling.acceleration(b.hx, b.hy, b.muK, b.vx, b.vy);
         double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
@@ -99,8 +111,14 @@ final class RollingPhase {
                 ghy = lean.gy;
             }
             double slope = Math.sqrt(ghx * ghx + ghy * ghy);
+            if (controlled && control.isLong(tau)) tau = longestStep(tau, speed, slope, b.muK, leaning, a1x, a1y);
+            b.pieceTime = tau;
+            // The stop looks a fixed time ahead and the slow step is that long, whatever length the
+            // control has chosen: a ball the control keeps at dt/8 must still stop, not creep in
+            // RK4 steps whose stages flip friction (docs/physics.md, "Step control").
+            double ahead = Math.min(controlled ? StepControl.STOP_AHEAD * dt : dt, maxTime - b.t);
             if (decelerationAlongV > 0) {
-                double stop = rest.stopWithin(tau, speed, decelerationAlongV, slope, b.vx, b.vy, ghx, ghy, b.muK);
+                double stop = rest.stopWithin(ahead, speed, decelerationAlongV, slope, b.vx, b.vy, ghx, ghy, b.muK);
                 if (stop >= 0) {
                     finishStep(stop, RollingStep.Kind.STOP, a1x, a1y, speed);
                     return b.pieceTime;
@@ -112,14 +130,23 @@ final class RollingPhase {
             // stages (they can cancel and make the ball creep for ever) and, explicit, it would
             // chatter sideways; gravity and friction change v by at most g (|grad h| + mu_k) dt
             // in a step. Such steps treat friction implicitly (RollingStep.Kind.SLOW).
-            double maxChange = gravity * (slope + b.muK) * tau * (controlled ? StepControl.SLOW_FRACTION : 1);
+            double maxChange = gravity * (slope + b.muK) * dt * (controlled ? StepControl.SLOW_FRACTION : 1);
             if (decelerationAlongV > 0 && speed <= maxChange) {
-                finishStep(tau, RollingStep.Kind.SLOW, a1x, a1y, speed);
+                b.pieceTime = ahead;
+                finishStep(ahead, RollingStep.Kind.SLOW, a1x, a1y, speed);
                 return b.pieceTime;
             }
+        } else if (controlled && control.isLong(tau)) {
+            tau = dt; // starting from rest
         }
         double whole = tau;
-        if (controlled) tau = trial.controlledLength(tau, a1x, a1y);
+        if (controlled) {
+            tau = trial.controlledLength(tau, a1x, a1y);
+            if (control.isLong(tau) && !clearOfHazards(tau)) {
+                control.limit(dt);
+                tau = trial.controlledLength(dt, a1x, a1y);
+            }
+        }
         b.pieceTime = tau;
         finishStep(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y, speed);
         if (tau < whole && !b.resume && b.outcome == null) {
@@ -127,6 +154,52 @@ final class RollingPhase {
             b.subPiece = true;
         }
         return b.pieceTime;
+    }
+
+    /**
+     * The longest step up to tau that may be taken from here (docs/physics.md, "Step control"):
+     * dt, or longer where nothing it could reach needs the step's own length. A long step stays on
+     * smooth ground, clear of obstacles, friction zones' edges and (under the capture rule) the
+     * hole; the ball leans on no obstacle, and is fast enough that it can neither stop within the
+     * step nor come within the rest rule's horizon of a turn. Halved from tau until it qualifies.
+     */
+    private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
+                               double a1x, double a1y) {
+        if (!smooth || leaning) return dt;
+        // Braking at most g (|grad h| + mu_k), it must be left with the speed the rest rule's turn
+        // horizon and a step of dt need (the ground may grow steeper than mu_k within the step).
+        double braking = gravity * (slope + muK);
+        double spare = speed - RestRule.REST_SPEED - braking * (dt + RestRule.TURN_HORIZON);
+        while (control.isLong(tau) && braking * tau >= spare) tau *= 0.5;
+        if (!control.isLong(tau) || !(scene != null || zoned || captureRule)) return control.isLong(tau) ? tau : dt;
+        // From the shortest long step up, each as long as nothing is within its reach: near an
+        // obstacle a single small square is looked at.
+        BallState b = ball;
+        double acceleration = Math.sqrt(a1x * a1x + a1y * a1y);
+        double shortest = 2 * dt, chosen = dt;
+        for (double length = shortest; length <= tau * (1 + 1e-9); length *= 2) {
+            double reach = speed * length + acceleration * length * length;
+            double minX = b.x - reach, minY = b.y - reach, maxX = b.x + reach, maxY = b.y + reach;
+            if (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY)) break;
+            if (zoned && friction.mayChangeWithin(minX, minY, maxX, maxY)) break;
+            if (captureRule && hole.within(b.x, b.y, reach)) break;
+            chosen = length;
+        }
+        return chosen;
+    }
+
+    /**
+     * Whether a long step, integrated into the trial, keeps clear of what a step's end alone would
+     * not show: water or the bounds touched by its stages between its ends, and ground curving
+     * away fast enough to come within a quarter of the take-off threshold.
+     */
+    private boolean clearOfHazards(double tau) {
+        RollingStep r = rolling;
+        if (r.stageLowest < 0 || !locate.inPlay(r.stageMinX, r.stageMinY) || !locate.inPlay(r.stageMaxX, r.stageMaxY)) {
+            return false;
+        }
+        BallState b = ball;
+        return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
 
     /** Completes a step of length tau of the given kind, with events, and commits it. */
@@ -155,10 +228,9 @@ final class RollingPhase {
         boolean stopping = kind == RollingStep.Kind.STOP
                 || (kind == RollingStep.Kind.SLOW && tr.nvx == 0 && tr.nvy == 0);
         double endTau = tau;
-        Outcome event = locate.hazardAt(tr.nx, tr.ny);
+        Outcome event = locate.hazardAtEnd(tr.nx, tr.ny);
         if (event != null) {
             endTau = locate.hazard(tau, kind, a1x, a1y);
-            tr.run(endTau, kind, a1x, a1y);
             event = locate.hazardAt(tr.nx, tr.ny);
         }
         boolean leaves = false;
@@ -196,8 +268,11 @@ final class RollingPhase {
         b.t += endTau;
         b.steps++;
         b.pieceTime = endTau;
+        if (endTau > dt * (1 + 1e-9)) reports.path(b.px, b.py, b.pvx, b.pvy, b.pt, b.x, b.y, tr.nvx, tr.nvy, b.t);
         if (event != null) {
-            b.z = terrain.height(b.x, b.y);
+            // In water the ball floats on its surface (z = 0), as a flying ball that lands there.
+            double h = terrain.height(b.x, b.y);
+            b.z = event == Outcome.WATER && h < 0 ? 0 : h;
             reports.state();
             reports.finish(event, b.x, b.y, b.z);
             return;

@@ -24,6 +24,8 @@ final class RollingStep {
     private final double gravity;
     private final boolean complete;
     private final Integrator integrator;
+    /** Integrator steps longer than this are long steps ({@link #advanceLong}); infinite unless RK4 is controlled. */
+    private final double longFrom;
     private final double[] sample = new double[3];
 
     // The start state of the sub-steps: position, velocity, slope and kinetic friction there.
@@ -42,13 +44,36 @@ final class RollingStep {
     double nx, ny, nvx, nvy;
     // The last RK4 sub-step's fourth-stage velocity and its length, for errorEstimate.
     private double stage4vx, stage4vy, lastTau;
+    /** The last long step ({@link #advanceLong}): the lowest ground its stages sampled, and the box round their points. */
+    double stageLowest, stageMinX, stageMinY, stageMaxX, stageMaxY;
+    /** The last long step's error estimate (position, m). */
+    private double longError;
 
-    RollingStep(Terrain terrain, FrictionField friction, double gravity, boolean complete, Integrator integrator) {
+    /**
+     * @param dt the base step: RK4 steps longer than it are long steps ({@link #advanceLong}); with
+     *           Euler and RK2 every step is theirs
+     */
+    RollingStep(Terrain terrain, FrictionField friction, double gravity, boolean complete, Integrator integrator,
+                double dt) {
         this.terrain = terrain;
         this.friction = friction;
         this.gravity = gravity;
         this.complete = complete;
         this.integrator = integrator;
+        this.longFrom = integrator == Integrator.RK4 ? dt * (1 + 1e-9) : Double.POSITIVE_INFINITY;
+    }
+
+    /** A new stroke: no frozen friction, not leaning. */
+    void reset() {
+        frozenMuK = Double.NaN;
+        leaning = false;
+    }
+
+    /** The shared last terrain sample: a long step's end is sampled by its last stage. */
+    private GroundCache cache;
+
+    void share(GroundCache ground) {
+        this.cache = ground;
     }
 
     /** Sets the start state of the following sub-steps. */
@@ -73,6 +98,10 @@ final class RollingStep {
         }
         if (kind == Kind.SLOW) {
             slowSubStep(tau);
+            return;
+        }
+        if (tau > longFrom) {
+            advanceLong(tau, a1x, a1y);
             return;
         }
         switch (integrator) {
@@ -111,6 +140,82 @@ final class RollingStep {
                 lastTau = tau;
             }
         }
+    }
+
+    // The Dormand-Prince 5(4) pair (Dormand & Prince 1980): stage coefficients, the fifth-order
+    // weights (those of the last stage row) and the error weights (fifth minus fourth order).
+    private static final double A21 = 1.0 / 5;
+    private static final double A31 = 3.0 / 40, A32 = 9.0 / 40;
+    private static final double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
+    private static final double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
+    private static final double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176,
+            A65 = -5103.0 / 18656;
+    private static final double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
+    private static final double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200,
+            E6 = 22.0 / 525, E7 = -1.0 / 40;
+
+    /**
+     * A long step (longer than dt, where nothing is within its reach: docs/physics.md, "Step
+     * control") by the fifth-order Dormand-Prince formula, from the current state into n*; a1 is
+     * the acceleration at the start. Its embedded fourth-order solution gives the error estimate
+     * ({@link #longErrorEstimate}), for which the seventh stage samples the end. The stages'
+     * lowest ground and the box round their points are kept for the hazard checks.
+     */
+    void advanceLong(double tau, double a1x, double a1y) {
+        double h = tau;
+        double p2x = x + h * A21 * vx, p2y = y + h * A21 * vy;
+        double v2x = vx + h * A21 * a1x, v2y = vy + h * A21 * a1y;
+        accelerationAt(p2x, p2y, v2x, v2y);
+        double a2x = ax, a2y = ay, lowest = sample[0];
+        double minX = Math.min(x, p2x), maxX = Math.max(x, p2x), minY = Math.min(y, p2y), maxY = Math.max(y, p2y);
+        double p3x = x + h * (A31 * vx + A32 * v2x), p3y = y + h * (A31 * vy + A32 * v2y);
+        double v3x = vx + h * (A31 * a1x + A32 * a2x), v3y = vy + h * (A31 * a1y + A32 * a2y);
+        accelerationAt(p3x, p3y, v3x, v3y);
+        double a3x = ax, a3y = ay;
+        lowest = Math.min(lowest, sample[0]);
+        double p4x = x + h * (A41 * vx + A42 * v2x + A43 * v3x), p4y = y + h * (A41 * vy + A42 * v2y + A43 * v3y);
+        double v4x = vx + h * (A41 * a1x + A42 * a2x + A43 * a3x), v4y = vy + h * (A41 * a1y + A42 * a2y + A43 * a3y);
+        accelerationAt(p4x, p4y, v4x, v4y);
+        double a4x = ax, a4y = ay;
+        lowest = Math.min(lowest, sample[0]);
+        double p5x = x + h * (A51 * vx + A52 * v2x + A53 * v3x + A54 * v4x);
+        double p5y = y + h * (A51 * vy + A52 * v2y + A53 * v3y + A54 * v4y);
+        double v5x = vx + h * (A51 * a1x + A52 * a2x + A53 * a3x + A54 * a4x);
+        double v5y = vy + h * (A51 * a1y + A52 * a2y + A53 * a3y + A54 * a4y);
+        accelerationAt(p5x, p5y, v5x, v5y);
+        double a5x = ax, a5y = ay;
+        lowest = Math.min(lowest, sample[0]);
+        double p6x = x + h * (A61 * vx + A62 * v2x + A63 * v3x + A64 * v4x + A65 * v5x);
+        double p6y = y + h * (A61 * vy + A62 * v2y + A63 * v3y + A64 * v4y + A65 * v5y);
+        double v6x = vx + h * (A61 * a1x + A62 * a2x + A63 * a3x + A64 * a4x + A65 * a5x);
+        double v6y = vy + h * (A61 * a1y + A62 * a2y + A63 * a3y + A64 * a4y + A65 * a5y);
+        accelerationAt(p6x, p6y, v6x, v6y);
+        double a6x = ax, a6y = ay;
+        lowest = Math.min(lowest, sample[0]);
+        nx = x + h * (B1 * vx + B3 * v3x + B4 * v4x + B5 * v5x + B6 * v6x);
+        ny = y + h * (B1 * vy + B3 * v3y + B4 * v4y + B5 * v5y + B6 * v6y);
+        nvx = vx + h * (B1 * a1x + B3 * a3x + B4 * a4x + B5 * a5x + B6 * a6x);
+        nvy = vy + h * (B1 * a1y + B3 * a3y + B4 * a4y + B5 * a5y + B6 * a6y);
+        accelerationAt(nx, ny, nvx, nvy);
+        if (cache != null) cache.keep(nx, ny, sample[0], sample[1], sample[2]);
+        lowest = Math.min(lowest, sample[0]);
+        double ex = h * (E1 * vx + E3 * v3x + E4 * v4x + E5 * v5x + E6 * v6x + E7 * nvx);
+        double ey = h * (E1 * vy + E3 * v3y + E4 * v4y + E5 * v5y + E6 * v6y + E7 * nvy);
+        longError = Math.sqrt(ex * ex + ey * ey);
+        stageLowest = lowest;
+        minX = Math.min(Math.min(minX, Math.min(p3x, p4x)), Math.min(Math.min(p5x, p6x), nx));
+        maxX = Math.max(Math.max(maxX, Math.max(p3x, p4x)), Math.max(Math.max(p5x, p6x), nx));
+        minY = Math.min(Math.min(minY, Math.min(p3y, p4y)), Math.min(Math.min(p5y, p6y), ny));
+        maxY = Math.max(Math.max(maxY, Math.max(p3y, p4y)), Math.max(Math.max(p5y, p6y), ny));
+        stageMinX = minX;
+        stageMinY = minY;
+        stageMaxX = maxX;
+        stageMaxY = maxY;
+    }
+
+    /** The position error of the last long step: its fifth- minus fourth-order solution. */
+    double longErrorEstimate() {
+        return longError;
     }
 
     /**

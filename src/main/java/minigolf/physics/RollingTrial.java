@@ -23,6 +23,11 @@ final class RollingTrial {
         this.control = control;
     }
 
+    /** A new stroke: nothing held. */
+    void reset() {
+        held = false;
+    }
+
     /** Whether the steps are error-controlled (RK4). */
     boolean controlled() {
         return control != null;

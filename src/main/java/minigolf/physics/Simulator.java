@@ -1,9 +1,15 @@
 package minigolf.physics;
 
-/** Runs whole strokes on one world with one set of settings. Cheap to create; not shared across threads. */
+/**
+ * Runs whole strokes on one world with one set of settings. It builds the parts of a stroke once
+ * and starts them again for every shot, so a shot without listener or events allocates only its
+ * result. Cheap to create; not shared across threads.
+ */
 public final class Simulator {
     private final World world;
     private final SimulationSettings settings;
+    /** The stroke reused for every shot; built on the first. */
+    private Stroke stroke;
 
     public Simulator(World world, SimulationSettings settings) {
         this.world = world;
@@ -19,20 +25,43 @@ public final class Simulator {
     }
 
     public ShotResult simulate(double x0, double y0, double vx, double vy) {
-        return new Stroke(world, settings, x0, y0, vx, vy, null).run();
+        return run(x0, y0, vx, vy, 0, null, false);
     }
 
     public ShotResult simulate(double x0, double y0, double vx, double vy, TrajectoryListener listener) {
-        return new Stroke(world, settings, x0, y0, vx, vy, listener).run();
+        return run(x0, y0, vx, vy, 0, listener, false);
     }
 
     /** A shot with a vertical component (a chip when vz &gt; 0); no events recorded. */
     public ShotResult simulate(double x0, double y0, double vx, double vy, double vz) {
-        return new Stroke(world, settings, x0, y0, vx, vy, vz, null, false).run();
+        return run(x0, y0, vx, vy, vz, null, false);
     }
 
     /** A shot with a vertical component, its events recorded in the result ({@link ShotResult#events()}). */
     public ShotResult simulate(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener) {
-        return new Stroke(world, settings, x0, y0, vx, vy, vz, listener, true).run();
+        return run(x0, y0, vx, vy, vz, listener, true);
+    }
+
+    /** A shot with a vertical component, heard by the listener; its events recorded in the result only if asked. */
+    public ShotResult simulate(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener,
+                               boolean recordEvents) {
+        return run(x0, y0, vx, vy, vz, listener, recordEvents);
+    }
+
+    private ShotResult run(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener,
+                           boolean recordEvents) {
+        Stroke s = stroke;
+        // A listener that simulates on this simulator while its stroke runs gets a stroke of its own.
+        if (s == null || s.running) {
+            s = new Stroke(world, settings);
+            if (stroke == null) stroke = s;
+        }
+        s.running = true;
+        try {
+            s.start(x0, y0, vx, vy, vz, listener, recordEvents, false);
+            return s.run();
+        } finally {
+            s.running = false;
+        }
     }
 }

@@ -10,22 +10,51 @@ import minigolf.terrain.Terrain;
 final class StepLocator {
     /** Bisection halvings when locating an event inside a step: dt / 2^50 is far below 1 mm. */
     static final int LOCATE_ITERATIONS = 50;
+    /**
+     * How far apart (m) the last safe point and the first point in a hazard may lie once located:
+     * a step of dt / 2^50 moves a ball at 5 m/s by 10^-16 m, so anything near this is a path
+     * that jumps.
+     */
+    static final double LOCATE_GAP = 1e-6;
+    /**
+     * A crossing found on the step's cubic is confirmed by trial steps this fraction of the step
+     * either side of it (a ball at 5 m/s in a step of 8 dt: 7e-8 m apart).
+     */
+    static final double CONFIRM = 1e-7;
 
     private final BallState ball;
     private final RollingTrial trial;
     private final RollingStep rolling;
     private final Terrain terrain;
+    private final GroundCache ground;
     private final FrictionField friction;
     private final PlayArea area;
 
-    StepLocator(BallState ball, RollingTrial trial, RollingStep rolling, Terrain terrain, FrictionField friction,
-                PlayArea area) {
+    StepLocator(BallState ball, RollingTrial trial, RollingStep rolling, Terrain terrain, GroundCache ground,
+                FrictionField friction, PlayArea area) {
+        this.ground = ground;
         this.ball = ball;
         this.trial = trial;
         this.rolling = rolling;
         this.terrain = terrain;
         this.friction = friction;
         this.area = area;
+    }
+
+    /** Whether (qx, qy) is in play: inside the bounds, not over a deleted cell. */
+    boolean inPlay(double qx, double qy) {
+        return area.contains(qx, qy);
+    }
+
+    /**
+     * The hazard at a step's end (qx, qy), as {@link #hazardAt}, sampling the ground there fully:
+     * the next step starts with that sample.
+     */
+    Outcome hazardAtEnd(double qx, double qy) {
+        if (!area.contains(qx, qy)) return Outcome.OUT;
+        if (ground.at(qx, qy)[0] < 0) return Outcome.WATER;
+        if (friction.entersHazard(qx, qy)) return Outcome.WATER;
+        return null;
     }
 
     /** The hazard at (qx, qy): OUT outside the bounds, WATER below the water's surface, else null. */
@@ -36,15 +65,63 @@ final class StepLocator {
         return null;
     }
 
-    /** The first sub-step length at which the ball is in a hazard, found by bisection. */
+    /**
+     * The first sub-step length at which the ball is in a hazard; on entry the trial holds the
+     * whole step (whose end is in the hazard), on return the step of the length found. The
+     * crossing is found first on the cubic through the step's ends with their velocities (a
+     * terrain height per try, against a trial step's several samples), then confirmed on the
+     * trial steps a hair either side of it ({@link #CONFIRM}); where that fails, by bisection on
+     * trial steps. The end found must lie within {@link #LOCATE_GAP} of the last point found
+     * safe: otherwise the ball's path jumps there, on ground that changes faster than any step can
+     * follow (a height like 0.2 + 0.01 sin(1e15 x)), and the stroke cannot go on.
+     *
+     * @throws NonFiniteMotionException if the path jumps where the hazard begins
+     */
     double hazard(double tau, RollingStep.Kind kind, double a1x, double a1y) {
+        BallState b = ball;
+        double x0 = b.x, y0 = b.y, mx0 = b.vx * tau, my0 = b.vy * tau;
+        double x1 = trial.nx, y1 = trial.ny, mx1 = trial.nvx * tau, my1 = trial.nvy * tau;
+        double safe = 0, hazard = 1;
+        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
+            double mid = 0.5 * (safe + hazard);
+            double qx = PathSweep.hermite(mid, x0, mx0, x1, mx1), qy = PathSweep.hermite(mid, y0, my0, y1, my1);
+            if (hazardAt(qx, qy) != null) hazard = mid; else safe = mid;
+        }
+        double inside = Math.min(tau, (hazard + CONFIRM) * tau), before = Math.max(0, (hazard - CONFIRM) * tau);
+        trial.run(before, kind, a1x, a1y);
+        double safeX = trial.nx, safeY = trial.ny;
+        if (hazardAt(safeX, safeY) == null) {
+            trial.run(inside, kind, a1x, a1y);
+            if (hazardAt(trial.nx, trial.ny) != null) return confirmed(inside, safeX, safeY);
+        }
+        return bisect(tau, kind, a1x, a1y);
+    }
+
+    /** The hazard's sub-step found by bisection on trial steps from the step's start. */
+    private double bisect(double tau, RollingStep.Kind kind, double a1x, double a1y) {
         double safe = 0, hazard = tau;
+        double safeX = ball.x, safeY = ball.y;
         for (int k = 0; k < LOCATE_ITERATIONS; k++) {
             double mid = 0.5 * (safe + hazard);
             trial.run(mid, kind, a1x, a1y);
-            if (hazardAt(trial.nx, trial.ny) != null) hazard = mid; else safe = mid;
+            if (hazardAt(trial.nx, trial.ny) != null) {
+                hazard = mid;
+            } else {
+                safe = mid;
+                safeX = trial.nx;
+                safeY = trial.ny;
+            }
         }
-        return hazard;
+        trial.run(hazard, kind, a1x, a1y);
+        return confirmed(hazard, safeX, safeY);
+    }
+
+    /** The trial holds the hazard's sub-step of this length: its end must be within LOCATE_GAP of the safe point. */
+    private double confirmed(double length, double safeX, double safeY) {
+        if (!(Math.hypot(trial.nx - safeX, trial.ny - safeY) <= LOCATE_GAP)) {
+            throw NonFiniteMotionException.unresolved(safeX, safeY);
+        }
+        return length;
     }
 
     /** The first sub-step length at which the obstacle the ball leans on is out of its reach, by bisection. */

@@ -35,10 +35,26 @@ public final class Stroke {
     static final double HOP_HEIGHT = 0.001;
 
     private final double dt;
+    private final double maxTime;
+    private final double maxSpeed;
+    private final PlayArea area;
     private final BallState ball;
     private final StrokeReports reports;
+    private final RollingStep steps;
+    private final StepControl control;
+    private final RollingTrial trial;
+    private final RestRule rest;
     private final RollingPhase rolling;
     private final FlightPhase flight;
+    /** The ball at frame times, for the game; the reports held back until the frames reach them. */
+    private final FrameView view;
+    private FrameDelay delay;
+    /** Whether the stroke is driven frame by frame ({@link #step()}): the game's strokes. */
+    private boolean framed;
+    private long frames;
+    private boolean shownEnd;
+    /** Whether a {@link Simulator} is running this stroke now (it reuses one per course). */
+    boolean running;
 
     /**
      * Starts a stroke from (x0, y0) with velocity (vx0, vy0).
@@ -60,15 +76,16 @@ public final class Stroke {
      */
     public Stroke(World world, SimulationSettings settings, double x0, double y0, double vx0, double vy0, double vz0,
                   TrajectoryListener listener, boolean recordEvents) {
+        this(world, settings);
+        start(x0, y0, vx0, vy0, vz0, listener, recordEvents, true);
+    }
+
+    /**
+     * The parts of a stroke on this course, built once: {@link Simulator} keeps one and
+     * {@link #start starts} it again for every shot, so a shot allocates nothing to set up.
+     */
+    Stroke(World world, SimulationSettings settings) {
         PhysicsSettings physics = world.physics();
-        double speed = Math.sqrt(vx0 * vx0 + vy0 * vy0 + vz0 * vz0);
-        if (!Double.isFinite(speed)) {
-            throw new IllegalArgumentException("shot velocity must be finite numbers");
-        }
-        if (speed > physics.maxSpeed() * (1 + 1e-12)) {
-            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
-                    "shot speed %.3f m/s exceeds the course's maxSpeed of %s m/s", speed, physics.maxSpeed()));
-        }
         Terrain terrain = world.terrain();
         FrictionField friction = world.friction();
         PlayArea area = world.playArea();
@@ -78,10 +95,16 @@ public final class Stroke {
         double ballRadius = physics.ballRadius();
         boolean complete = physics.model() == PhysicsModel.COMPLETE;
         this.dt = settings.dt();
-        this.ball = new BallState(terrain, friction, x0, y0, vx0, vy0);
-        this.reports = new StrokeReports(ball, listener, recordEvents);
+        this.maxTime = settings.maxTime();
+        this.maxSpeed = physics.maxSpeed();
+        this.area = area;
+        GroundCache ground = new GroundCache(terrain);
+        this.ball = new BallState(ground, friction);
+        this.reports = new StrokeReports(ball, terrain, dt);
+        this.view = new FrameView(terrain);
 
-        RollingStep steps = new RollingStep(terrain, friction, gravity, complete, settings.integrator());
+        RollingStep steps = new RollingStep(terrain, friction, gravity, complete, settings.integrator(), dt);
+        steps.share(ground);
         StepControl control = settings.integrator() == Integrator.RK4 ? new StepControl(steps, dt) : null;
         RollingTrial trial = new RollingTrial(ball, steps, control);
         RestRule rest = new RestRule(world);
@@ -89,13 +112,48 @@ public final class Stroke {
         Leaning lean = scene == null ? null : new Leaning(scene, terrain, steps, ballRadius, gravity, complete);
         HoleRules hole = new HoleRules(ball, reports, terrain, world.hole());
         ObstacleContact contact = new ObstacleContact(ball, reports, paths.hit, rest, lean, hopSpeed);
-        this.rolling = new RollingPhase(ball, reports, steps, trial,
-                new StepLocator(ball, trial, steps, terrain, friction, area), rest, new TakeOff(terrain, steps, gravity),
+        this.steps = steps;
+        this.control = control;
+        this.trial = trial;
+        this.rest = rest;
+        this.rolling = new RollingPhase(ball, reports, steps, trial, control,
+                new StepLocator(ball, trial, steps, terrain, ground, friction, area), rest, new TakeOff(terrain, steps, gravity),
                 hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete), scene, lean, paths, contact,
-                terrain, gravity, ballRadius, settings.maxTime(), friction.hasZones());
+                terrain, friction, area, gravity, ballRadius, dt, settings.maxTime());
         this.flight = new FlightPhase(ball, reports, new FlightStep(terrain, gravity, physics.dragFactor()),
                 new GroundImpact(physics.groundRestitution(), hopSpeed), hole, rest, area, scene, paths, contact,
-                ballRadius, settings.maxTime());
+                ballRadius, dt, settings.maxTime());
+    }
+
+    /**
+     * (Re)starts the stroke from (x0, y0) on the ground with velocity (vx0, vy0, vz0), as the
+     * constructor describes: every part forgets the last shot. A stroke {@code framed} is driven
+     * frame by frame ({@link #step()}): it shows the ball at frame times and holds the listener's
+     * reports back until the frames reach them; otherwise the listener hears them as they come.
+     *
+     * @throws IllegalArgumentException if the shot is faster than the course's maxSpeed
+     */
+    void start(double x0, double y0, double vx0, double vy0, double vz0, TrajectoryListener listener,
+               boolean recordEvents, boolean framed) {
+        double speed = Math.sqrt(vx0 * vx0 + vy0 * vy0 + vz0 * vz0);
+        if (!Double.isFinite(speed)) {
+            throw new IllegalArgumentException("shot velocity must be finite numbers");
+        }
+        if (speed > maxSpeed * (1 + 1e-12)) {
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+                    "shot speed %.3f m/s exceeds the course's maxSpeed of %s m/s", speed, maxSpeed));
+        }
+        BallState ball = this.ball;
+        ball.reset(x0, y0, vx0, vy0);
+        this.framed = framed;
+        frames = 0;
+        shownEnd = false;
+        delay = framed && listener != null ? new FrameDelay(listener) : null;
+        reports.start(delay != null ? delay : listener, recordEvents);
+        steps.reset();
+        if (control != null) control.reset();
+        trial.reset();
+        rest.forget();
 
         ball.sampleGround();
         ball.z = ball.h;
@@ -108,51 +166,88 @@ public final class Stroke {
             ball.vz = vz0;
             reports.event(StrokeEvent.Type.LAUNCH, Double.NaN, Double.NaN);
         }
+        view.start(ball);
+        if (ball.outcome != null) {
+            showEnd();
+        } else if (delay != null) {
+            delay.release(0);
+        }
     }
 
+    /**
+     * Whether the stroke has ended: for a stroke driven frame by frame, once the frames have
+     * reached its end (the integration may have got there a step earlier).
+     */
     public boolean isFinished() {
-        return ball.outcome != null;
+        return ball.outcome != null && (!framed || shownEnd);
     }
 
     /** The result; only valid once {@link #isFinished()}. */
     public ShotResult result() {
-        if (ball.outcome == null) throw new IllegalStateException("the stroke has not finished");
+        if (!isFinished()) throw new IllegalStateException("the stroke has not finished");
         return new ShotResult(ball.outcome, ball.endX, ball.endY, ball.t, ball.steps, ball.endZ, reports.events());
     }
 
-    public double x() { return ball.x; }
-    public double y() { return ball.y; }
-    public double vx() { return ball.vx; }
-    public double vy() { return ball.vy; }
+    // The ball at the last frame shown (after run(): at its end).
+    public double x() { return view.x; }
+    public double y() { return view.y; }
+    public double vx() { return view.vx; }
+    public double vy() { return view.vy; }
     /** Height of the ball's contact point (its lowest point): the terrain height while it rolls. */
-    public double z() { return ball.z; }
+    public double z() { return view.z; }
     /** Vertical velocity: in flight its own, while rolling the rate at which the ground under it rises. */
-    public double vz() { return ball.verticalSpeed(); }
-    public boolean isFlying() { return ball.flying; }
-    public double time() { return ball.t; }
+    public double vz() { return view.vz; }
+    public boolean isFlying() { return view.flying; }
+    public double time() { return view.t; }
+    /** Integration steps taken so far (they need not end on frames). */
     public int steps() { return ball.steps; }
-    /** The terrain height under the ball. */
-    public double height() { return ball.h; }
 
-    /** Advances the ball by one step (or ends the stroke). Does nothing once finished. */
+    /**
+     * Advances the stroke by one frame of dt: the integrator takes its steps until it has passed
+     * the frame's time, and the ball is shown there ({@link FrameView}). Does nothing once finished.
+     */
     public void step() {
+        if (isFinished()) return;
         BallState b = ball;
-        if (b.outcome != null) return;
-        double remaining = dt;
+        double target = ++frames * dt;
+        while (b.outcome == null && b.t < target) advance();
+        // An end a rounding error past the frame's time (frames * dt against summed steps) is shown there.
+        if (b.outcome != null && b.t <= target + 1e-9 * dt) {
+            showEnd();
+        } else {
+            view.show(target, b);
+            if (delay != null) delay.release(target);
+        }
+    }
+
+    /** One integration step of the length the integrator chooses, as a series of pieces. */
+    private void advance() {
+        BallState b = ball;
+        double remaining = b.flying || control == null ? dt : control.allowed();
         int pieces = 0;
         while (pieces < MAX_PIECES) {
             b.resume = false;
             b.subPiece = false;
+            if (framed) view.mark(b);
             remaining -= b.flying ? flight.piece(remaining) : rolling.piece(remaining);
+            // The pieces stop at the time limit: the stroke ends there, not a step later.
+            if (b.outcome == null && b.t >= maxTime) reports.finish(Outcome.TIMEOUT, b.x, b.y, b.z);
             if (!b.resume || b.outcome != null || remaining <= 1e-9 * dt) return;
             // A sub-step the error control asked for is no contact: it does not count towards a wedge.
             if (!b.subPiece) pieces++;
         }
         // Wedged: more contacts in one step than we follow. The ball stops where it is for the rest of it.
-        b.t += remaining;
         b.vx = 0;
         b.vy = 0;
         b.vz = 0;
+        if (framed) view.mark(b);
+        b.t += remaining;
+    }
+
+    private void showEnd() {
+        shownEnd = true;
+        view.end(ball);
+        if (delay != null) delay.release(Double.POSITIVE_INFINITY);
     }
 
     /**
@@ -162,11 +257,14 @@ public final class Stroke {
      */
     public void endOutOfPlay() {
         if (ball.outcome == null) reports.finish(Outcome.OUT, ball.x, ball.y, ball.z);
+        showEnd();
     }
 
     /** Runs the stroke to its end. */
     public ShotResult run() {
-        while (ball.outcome == null) step();
+        BallState b = ball;
+        while (b.outcome == null) advance();
+        showEnd();
         return result();
     }
 }

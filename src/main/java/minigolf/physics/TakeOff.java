@@ -17,6 +17,7 @@ final class TakeOff {
     private final double gravity;
     private final double[] sample = new double[3];
     private double x, y, vx, vy, h, hx, hy, muK;
+    private double lastX = Double.NaN, lastY = Double.NaN, lastH;
 
     TakeOff(Terrain terrain, RollingStep rolling, double gravity) {
         this.terrain = terrain;
@@ -47,10 +48,31 @@ final class TakeOff {
      */
     boolean takesOff(double tau, double a1x, double a1y) {
         double tangent = h + (hx * vx + hy * vy) * tau;
-        double ground = terrain.height(x + vx * tau, y + vy * tau);
+        double ground = heightAt(x + vx * tau, y + vy * tau);
         if (ground < tangent - 0.5 * gravity * tau * tau - LIFT_TOLERANCE) return true;
         return tangent - ground >= 0.25 * gravity * tau * tau
                 && (curvesAwayWithin(tau, a1x, a1y) || curvesAway(tau, a1x, a1y));
+    }
+
+    /**
+     * Whether the ground along a step of length tau from (x, y) with velocity v curves away within
+     * a quarter of the take-off threshold ({@link #takesOff}'s measure): a step that long is not
+     * taken there (a short crest inside it could hide), the step control's steps of dt are.
+     */
+    boolean near(double x, double y, double vx, double vy, double h, double hx, double hy, double tau) {
+        double tangent = h + (hx * vx + hy * vy) * tau;
+        double ground = heightAt(x + vx * tau, y + vy * tau);
+        return tangent - ground >= 0.125 * gravity * tau * tau;
+    }
+
+    /** The terrain's height at (qx, qy); the last point asked is remembered ({@link #near} and {@link #takesOff} ask the same). */
+    private double heightAt(double qx, double qy) {
+        if (qx != lastX || qy != lastY) {
+            lastH = terrain.height(qx, qy);
+            lastX = qx;
+            lastY = qy;
+        }
+        return lastH;
     }
 
     /**

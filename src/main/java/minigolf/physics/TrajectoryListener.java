@@ -1,6 +1,10 @@
 package minigolf.physics;
 
-/** Receives the ball's state after every integration step (for CSV output and drawing). */
+/**
+ * Receives the ball's state after every integration step and, inside a step longer than dt,
+ * about every dt along its path (for CSV output, drawing and the bots' path tracing), and the
+ * stroke's events.
+ */
 @FunctionalInterface
 public interface TrajectoryListener {
     /** The state in the plane: position and horizontal velocity. */
@@ -16,5 +20,14 @@ public interface TrajectoryListener {
 
     /** An event of the stroke (launch, bounce, collision, ...), in time order. */
     default void onEvent(StrokeEvent event) {
+    }
+
+    /**
+     * Whether the listener wants the stroke's events and the states along a long step's path; true
+     * by default. A listener that only counts steps (a bot's cancellation check) says false: it
+     * then hears each step's end only, and no event is built for it.
+     */
+    default boolean wantsDetail() {
+        return true;
     }
 }

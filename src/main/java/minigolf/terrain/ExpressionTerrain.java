@@ -7,11 +7,18 @@ import minigolf.expr.Expression;
 public final class ExpressionTerrain implements Terrain {
     private final Expression expression;
     private final CompiledExpression compiled;
+    private final boolean smooth;
 
     /** @throws minigolf.expr.ExpressionException if the source is not a valid expression */
     public ExpressionTerrain(String source) {
         this.expression = Expression.parse(source);
         this.compiled = expression.compile();
+        this.smooth = expression.isSmooth();
+    }
+
+    @Override
+    public boolean isSmooth() {
+        return smooth;
     }
 
     public Expression expression() {

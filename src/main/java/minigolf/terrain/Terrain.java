@@ -9,4 +9,12 @@ public interface Terrain {
 
     /** Writes h, dh/dx and dh/dy at (x, y) into out[0], out[1], out[2]. */
     void sample(double x, double y, double[] out);
+
+    /**
+     * Whether the surface is smooth wherever it is finite (no crease, no cell edge where the
+     * curvature jumps): the engine takes long steps only there. False unless known.
+     */
+    default boolean isSmooth() {
+        return false;
+    }
 }

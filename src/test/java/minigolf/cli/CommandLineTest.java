@@ -46,12 +46,15 @@ class CommandLineTest {
     @Test
     void simulateOnTerrainThatIsNotFiniteOrFrictionThatOverflowsExitsTwoWithOneLine(@TempDir Path dir) throws IOException {
         String flat = java.nio.file.Files.readString(Path.of(course("flat.json")));
-        Path nan = dir.resolve("nan.json"), huge = dir.resolve("huge.json");
+        Path nan = dir.resolve("nan.json"), huge = dir.resolve("huge.json"), fast = dir.resolve("fast.json");
+        // Ground that changes faster than any step can follow: it ended "out" 4.5 m past the bounds with exit 0.
+        java.nio.file.Files.writeString(fast, flat.replace("\"height\": \"0.1\"", "\"height\": \"0.2+0.01*sin(1e15*x)\""));
         java.nio.file.Files.writeString(nan, flat.replace("\"height\": \"0.1\"", "\"height\": \"sqrt(abs(x - 0.1) - 0.01) + 1\""));
         java.nio.file.Files.writeString(huge, flat.replaceAll("\"kineticFriction\": [0-9.]+", "\"kineticFriction\": 1e308")
                 .replaceAll("\"staticFriction\": [0-9.]+", "\"staticFriction\": 1e308"));
-        for (Path file : new Path[] {nan, huge}) {
-            CliRun r = run("simulate", file.toString(), "--velocity", "4,0");
+        for (Path file : new Path[] {nan, huge, fast}) {
+            // At 2 m/s the ball on the fast ground ended "out" at x = -8.5 (the bounds end at -4).
+            CliRun r = run("simulate", file.toString(), "--velocity", file == fast ? "2,0" : "4,0");
             assertEquals(2, r.code(), r.out() + r.err());
             assertEquals("", r.out(), "no JSON with NaN or Infinity");
             assertEquals(1, r.err().strip().lines().count(), r.err());
@@ -128,6 +131,14 @@ class CommandLineTest {
         assertEquals(0, r.code(), r.err());
         assertEquals(200, r.json().get("shots").asInt());
         assertTrue(r.json().get("shotsPerSecond").asDouble() > 0);
+        // Shared by three threads, each with its own simulator, the shots end exactly the same.
+        CliRun three = run("bench-physics", course("lake.json"), "--shots", "300", "--threads", "3");
+        CliRun one = run("bench-physics", course("lake.json"), "--shots", "300");
+        assertEquals(0, three.code(), three.err());
+        assertEquals(3, three.json().get("threads").asInt());
+        assertEquals(one.json().get("checksum").asText(), three.json().get("checksum").asText());
+        assertEquals(one.json().get("meanSteps").asDouble(), three.json().get("meanSteps").asDouble());
+        assertTrue(three.json().get("bytesPerShot").asDouble() < 700, three.out());
         // CPU time never exceeds the wall time of the same thread.
         assertTrue(r.json().get("shotsPerCpuSecond").asDouble() >= 0.9 * r.json().get("shotsPerSecond").asDouble(), r.out());
     }

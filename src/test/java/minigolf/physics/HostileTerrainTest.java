@@ -17,9 +17,16 @@ import org.junit.jupiter.params.provider.ValueSource;
  * from random points all end long before the time limit, with short event lists.
  */
 class HostileTerrainTest {
-    /** Steps of 1/60 s: 100 s of simulated time, a sixth of the guard. */
+    /** Steps of up to 1/60 s on these terrains (none is smooth): 100 s of simulated time, a sixth of the guard. */
     private static final int MAX_STEPS = 6000;
-    private static final int MAX_EVENTS = 40;
+    /**
+     * Down the pits' 80-degree walls a fast ball leaves the ground and lands again within a
+     * millisecond, several times in a row (the ground there curves away faster than gravity, cell
+     * by cell): the longest list of the 3,500 shots has 43 events (25 before steps and frames
+     * were decoupled; the lists' distribution is otherwise the same), an endless chatter would
+     * have thousands.
+     */
+    private static final int MAX_EVENTS = 50;
 
     @ParameterizedTest
     @ValueSource(strings = {"ridge", "pits", "v-valley", "cone", "terraces"})
@@ -48,7 +55,9 @@ class HostileTerrainTest {
             shots++;
         }
         assertTrue(stopped > 100, name + ": only " + stopped + " shots came to rest on the course");
-        assertTrue(steps / shots < 1500, name + ": " + steps / shots + " steps a shot on average");
+        // The cone's spirals are long (docs/physics.md): about 1,480 steps a shot with the stop
+        // looking a frame's remainder ahead, 1,506 with it looking dt/4 ahead.
+        assertTrue(steps / shots < 1600, name + ": " + steps / shots + " steps a shot on average");
     }
 
     @Test
@@ -90,5 +99,36 @@ class HostileTerrainTest {
             }
         }
         return max;
+    }
+
+    /**
+     * Ground that changes faster than any step can follow (0.2 + 0.01 sin(1e15 x): slopes of
+     * 10^13 over a wavelength of 6e-15 m). The ball's path jumps metres within a step, so a
+     * hazard located by bisection lay far from where the ball was last safe: shots ended "out"
+     * up to 4.5 m past the bounds. Now a stroke either ends where the ball leaves the bounds (on
+     * their edge, to a micrometre) or is refused as a path that cannot be followed.
+     */
+    @Test
+    void groundFasterThanAnyStepIsRefusedInsteadOfEndingFarOutOfBounds() throws Exception {
+        String json = java.nio.file.Files.readString(Path.of("courses/flat.json"))
+                .replace("\"height\": \"0.1\"", "\"height\": \"0.2+0.01*sin(1e15*x)\"");
+        World world = World.parse(json, "fast.json");
+        minigolf.course.Bounds bounds = world.bounds();
+        Simulator simulator = new Simulator(world, SimulationSettings.DEFAULT);
+        SplittableRandom random = new SplittableRandom(15);
+        int refused = 0;
+        for (int shot = 0; shot < 50; shot++) {
+            double angle = random.nextDouble(2 * Math.PI), speed = random.nextDouble(0.1, 4);
+            try {
+                ShotResult r = simulator.simulate(-3, 0, speed * Math.cos(angle), speed * Math.sin(angle));
+                double outside = Math.max(Math.max(bounds.minX() - r.endX(), r.endX() - bounds.maxX()),
+                        Math.max(bounds.minY() - r.endY(), r.endY() - bounds.maxY()));
+                assertTrue(outside <= 1e-6, "shot " + shot + " ended " + outside + " m outside the bounds: " + r);
+            } catch (NonFiniteMotionException e) {
+                assertTrue(e.getMessage().contains("cannot be followed"), e.getMessage());
+                refused++;
+            }
+        }
+        assertTrue(refused > 0, "no shot was refused");
     }
 }

@@ -46,9 +46,9 @@ class StepAccuracyTest {
         assertTrue(error < 1e-3, course + ": " + error * 1e3 + " mm from the reference");
     }
 
-    /** The step control works inside the frame: every step() still advances the ball by exactly dt. */
+    /** Frames are not steps: every step() shows the ball exactly dt later, whatever steps the control took. */
     @Test
-    void theFrameStaysTheOuterStep() throws CourseException {
+    void everyFrameIsDtLaterWhateverTheSteps() throws CourseException {
         World grid = EngineAgreementTest.course("grid-256.json");
         double dt = SimulationSettings.DEFAULT.dt();
         Stroke stroke = new Stroke(grid, SimulationSettings.DEFAULT, grid.course().start().x(),
