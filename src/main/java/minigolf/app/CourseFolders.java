@@ -81,22 +81,47 @@ final class CourseFolders {
         return store.directory().resolve("classic");
     }
 
+    /**
+     * The single holes offered for practice: every hole of the rounds, in their order (each file
+     * once), the practice holes of the course elements ({@code courses/practice/}), then the
+     * player's own courses. The loose courses beside the rounds are the engine's
+     * test terrains (a plane, sine hills, a 256 x 256 grid, 200 obstacles): {@code minigolf play
+     * FILE} plays them, a player's list does not offer them.
+     */
     static List<CourseEntry> list(SettingsStore store) {
-        Set<Path> shipped = shippedFolders();
         List<CourseEntry> out = new ArrayList<>();
         Set<Path> seen = new LinkedHashSet<>();
-        for (Path dir : shipped) add(dir, false, out, seen);
-        add(store.directory().resolve("courses"), true, out, seen);
+        for (RoundEntry r : rounds(store)) {
+            Path folder = r.file().toAbsolutePath().getParent();
+            for (int i = 0; i < r.round().size(); i++) {
+                Path f = folder.resolve(r.round().hole(i).course()).normalize();
+                if (!seen.add(f)) continue;
+                try {
+                    out.add(new CourseEntry(CourseLoader.load(f).name(), f, false));
+                } catch (CourseException e) {
+                    // a hole that does not load is not offered (its round says why when played)
+                }
+            }
+        }
+        // The practice holes, one course element each (docs/course-format.md, "Practice holes").
+        Set<Path> practice = new LinkedHashSet<>();
+        for (Path dir : shippedFolders()) add(dir.resolve(PRACTICE), false, out, practice, PRACTICE);
+        add(store.directory().resolve("courses"), true, out, new LinkedHashSet<>(), null);
         return out;
     }
 
-    private static void add(Path dir, boolean own, List<CourseEntry> out, Set<Path> seen) {
+    /** The shipped courses' folder of practice holes. */
+    static final String PRACTICE = "practice";
+
+    /** Adds the courses of {@code dir}; a file name seen already (under the same {@code folder}) is offered once. */
+    private static void add(Path dir, boolean own, List<CourseEntry> out, Set<Path> seen, String folder) {
         if (!Files.isDirectory(dir)) return;
         try (Stream<Path> files = Files.list(dir)) {
             for (Path f : files.filter(p -> p.toString().endsWith(".json")).sorted().toList()) {
                 try {
                     String name = CourseLoader.load(f).name();
-                    if (seen.add(f.getFileName())) out.add(new CourseEntry(name, f, own));
+                    Path key = folder == null ? f.getFileName() : Path.of(folder).resolve(f.getFileName());
+                    if (seen.add(key)) out.add(new CourseEntry(name, f, own));
                 } catch (CourseException e) {
                     // not a loadable course: not offered
                 }

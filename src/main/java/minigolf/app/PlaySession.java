@@ -4,7 +4,6 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.List;
-import java.util.Locale;
 import java.util.function.Consumer;
 import minigolf.course.CourseException;
 import minigolf.game.AimModel;
@@ -22,6 +21,7 @@ import minigolf.game.SavedRounds;
 import minigolf.game.ShotPlanner;
 import minigolf.game.ShotRecord;
 import minigolf.game.StrokeAnimator;
+import minigolf.game.StrokeNews;
 import minigolf.game.UserSettings;
 import minigolf.physics.TrajectoryListener;
 import minigolf.physics.World;
@@ -66,6 +66,12 @@ final class PlaySession {
     private Game game;
     private StrokeAnimator animator;
     private BotTurn botTurn;
+    /** A bot's shot waiting for its planned moment (the course clock runs on until then), and how long yet. */
+    private double[] botShot;
+    /** The course clock the waiting bot's shot is to be hit at. */
+    private double botMoment;
+    /** Where the view's clock starts when no game is played (the moving obstacles turn behind the menus). */
+    private final long idleStart = System.nanoTime();
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
     private final BotSeats botSeats = new BotSeats();
     private ShotRecord lastStroke;
@@ -141,13 +147,18 @@ final class PlaySession {
             round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
             showHole();
             say.accept(roundToPlay.name() + ", hole 1 of " + roundToPlay.size() + " (par " + roundToPlay.hole(0).par() + "): "
-                    + players.get(0).name() + " tees off.");
+                    + teeOff(players.get(0)));
             return;
         }
         round = null;
         // The "realistic" noise, drawn from a new seed each game (saved with the game, so a resumed game goes on alike).
         game = new Game(world, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
-        say.accept(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
+        say.accept(teeOff(players.get(0)));
+    }
+
+    /** "Ann tees off: drag back from the ball to aim, release to hit"; a bot only tees off (nobody aims for it). */
+    static String teeOff(Player first) {
+        return first.name() + " tees off" + (first.isBot() ? "." : ": drag back from the ball to aim, release to hit; ESC pauses.");
     }
 
     /** The round's next hole; false after the last (its final card is due). */
@@ -181,7 +192,7 @@ final class PlaySession {
         roundToPlay = null;
         round = null;
         game = null;
-        say.accept("course: " + world.course().name());
+        say.accept(world.course().name() + " chosen: Play starts it");
     }
 
     /** Resumes a saved round or game where it was left, a stroke in flight included; false (and said why) when it cannot. */
@@ -195,7 +206,7 @@ final class PlaySession {
                 roundToPlay = round.round();
                 showHole();
                 resumeStroke();
-                say.accept("loaded " + file.getFileName() + ": " + round.round().name() + ", hole " + (round.holeIndex() + 1));
+                say.accept("Round resumed: " + round.round().name() + ", hole " + (round.holeIndex() + 1) + " of " + round.round().size());
                 return true;
             }
             SavedGames.Loaded loaded = save.game();
@@ -205,10 +216,10 @@ final class PlaySession {
             coursePath = null;
             game = loaded.resume();
             resumeStroke();
-            say.accept("loaded " + file.getFileName());
+            say.accept("Game resumed: " + world.course().name());
             return true;
         } catch (SaveGameException e) {
-            say.accept(e.getMessage());
+            say.accept("That save could not be loaded: " + e.problem());
             return false;
         }
     }
@@ -266,10 +277,14 @@ final class PlaySession {
             if (animator.isFinished()) {
                 lastStroke = game.completeShot();
                 animator = null;
-                say.accept(game.players().get(lastStroke.player()).name() + ": " + describe(lastStroke));
+                int seat = lastStroke.player();
+                say.accept(StrokeNews.of(lastStroke, game.player(seat), game.players().get(seat).name(),
+                        game.players().size() > 1, round != null ? round.hole().par() : null,
+                        world.hole().position().x(), world.hole().position().y()));
                 if (game.isOver()) {
                     if (round != null) files.recordScores(round, round.finishHole());
                     else if (classicKey != null) files.recordClassic(classicKey, game);
+                    else files.recordPractice(game);
                     return Progress.OVER;
                 }
                 progress = Progress.STROKE_ENDED;
@@ -278,6 +293,21 @@ final class PlaySession {
         if (game.isShotInFlight() || game.isOver()) return progress;
         int seat = game.currentPlayer();
         Player p = game.players().get(seat);
+        if (botShot != null) {
+            // The bot's shot waits for its planned moment: the clock runs on to it exactly, then it is hit.
+            if (game.clock() + elapsed * timeScale < botMoment) {
+                game.advanceClock(elapsed * timeScale);
+            } else {
+                game.advanceClockTo(botMoment);
+                double[] shot = botShot;
+                botShot = null;
+                hit(shot[0], shot[1], shot[2]);
+            }
+            return progress;
+        }
+        // The course clock runs while players aim; it stands still while a bot thinks (its shot is
+        // planned for the moment it was asked at).
+        if (botTurn == null && progress != Progress.STROKE_ENDED) game.advanceClock(elapsed * timeScale);
         if (p.isBot()) {
             if (botTurn == null) {
                 ShotPlanner planner = botSeats.planner(seat, p.bot(), game.world());
@@ -291,7 +321,10 @@ final class PlaySession {
             } else if (botTurn.isDone()) {
                 BotTurn done = botTurn;
                 botTurn = null;
-                if (done.shot() != null) {
+                if (done.shot() != null && done.waitSeconds() > 0) {
+                    botShot = done.shot();
+                    botMoment = game.clock() + done.waitSeconds();
+                } else if (done.shot() != null) {
                     hit(done.shot()[0], done.shot()[1], done.shot()[2]);
                 } else {
                     say.accept(p.name() + ": " + done.failure());
@@ -389,21 +422,21 @@ final class PlaySession {
         return true;
     }
 
+    /** The view's course clock when no game is played (seconds since the session began). */
+    double idleClock() {
+        return (System.nanoTime() - idleStart) * 1e-9;
+    }
+
+    /** Seconds until a bot's planned shot is hit, or NaN when none waits. */
+    double botWaitLeft() {
+        return botShot == null || game == null ? Double.NaN : Math.max(0, botMoment - game.clock());
+    }
+
     /** Stops the bot thinking now (its Cancel button); the bots of this hole are asked afresh. */
     void cancelBot() {
         if (botTurn != null) botTurn.cancel();
         // A cancelled worker may still be ending: its bot must not be asked again.
         botSeats.clear();
-    }
-
-    private static String describe(ShotRecord r) {
-        return switch (r.outcome()) {
-            case HOLED -> "in the hole!";
-            case STOPPED -> String.format(Locale.ROOT, "stopped at (%.2f, %.2f)", r.endX(), r.endY());
-            case WATER -> "in the water: one penalty stroke, back to where the stroke began";
-            case OUT -> "out of bounds: one penalty stroke, back to where the stroke began";
-            case TIMEOUT -> "still rolling after the time limit; it stays where it is";
-        };
     }
 
     /** The round's current hole is what is played and shown. */
@@ -422,6 +455,7 @@ final class PlaySession {
     private void stopPlay() {
         cancelBot();
         botTurn = null;
+        botShot = null;
         animator = null;
         rolling = null;
     }

@@ -42,7 +42,7 @@ final class BenchAccuracyCommand implements Callable<Integer> {
     @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator under test (default: ${DEFAULT-VALUE}).")
     String integrator = "rk4";
 
-    @Option(names = "--dt", paramLabel = "S", description = "Time step under test in seconds (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
+    @Option(names = "--dt", paramLabel = "S", description = "Time step under test in seconds, 1/1000 to 1/30 (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
     double dt = SimulationSettings.DEFAULT_DT;
 
     @Option(names = "--seed", paramLabel = "S", description = "Seed of the random shots (default: ${DEFAULT-VALUE}).")
@@ -53,7 +53,7 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         Integrator chosen = Integrator.fromName(integrator);
         if (chosen == null) throw new UserError("--integrator: expected rk4, rk2 or euler, got '" + integrator + "'");
         if (shots < 1) throw new UserError("--shots: must be at least 1, got " + shots);
-        if (!(dt > 0) || dt > 0.1) throw new UserError("--dt: must be in (0, 0.1] seconds, got " + dt);
+        if (SimulationSettings.dtProblem(dt) != null) throw new UserError("--dt: " + SimulationSettings.dtProblem(dt));
         World world = CourseArgument.load(course);
         Simulator tested = new Simulator(world, SimulationSettings.DEFAULT.withIntegrator(chosen).withDt(dt));
         ReferenceSimulator reference = new ReferenceSimulator(world);
@@ -65,17 +65,23 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         ObjectNode worst = null;
         double worstError = -1;
         double x0 = world.course().start().x(), y0 = world.course().start().y();
+        // With moving obstacles each shot is played at a random moment of their longest period.
+        double period = 0;
+        for (var o : world.course().obstacles()) {
+            if (o instanceof minigolf.course.Obstacle.Moving m) period = Math.max(period, m.motion().period());
+        }
         for (int i = 0; i < shots; i++) {
             double[] v = random.next();
-            ReferenceResult b = reference.simulate(x0, y0, v[0], v[1]);
+            double clock = period > 0 ? random.clock(period) : 0;
+            ReferenceResult b = reference.simulateAt(clock, x0, y0, v[0], v[1], 0);
             if (!b.covered()) {
                 notCovered.merge(b.note(), 1, Integer::sum);
                 continue;
             }
             covered++;
-            ShotResult a = tested.simulate(x0, y0, v[0], v[1]);
+            ShotResult a = tested.simulateAt(clock, x0, y0, v[0], v[1], 0);
             double error = Math.hypot(a.endX() - b.endX(), a.endY() - b.endY());
-            double spread = Conditioning.spread(reference, x0, y0, v[0], v[1], b);
+            double spread = Conditioning.spread(reference, clock, x0, y0, v[0], v[1], b);
             if (Conditioning.illConditioned(spread)) {
                 ObjectNode shot = illConditioned.addObject();
                 shot.put("shot", i);
@@ -94,6 +100,7 @@ final class BenchAccuracyCommand implements Callable<Integer> {
             if (error > worstError) {
                 worstError = error;
                 worst = worstShot(i, v, a, b, error);
+                if (period > 0) worst.put("clock", clock);
             }
         }
         double[] sorted = Arrays.copyOf(errors, compared);

@@ -42,15 +42,37 @@ class ObstacleLoaderTest {
         assertEquals(0.5 * 1.2 * Math.PI * 0.02135 * 0.02135 / (2 * 0.04593), p.dragFactor(), 1e-15);
     }
 
+    /** One box per wall tile, as the classic online game's tracks convert: the largest of 334 plain tracks has 1,788. */
+    @Test
+    void aClassicTrackDrawnTileByTileFitsTheObstacleLimit() throws CourseException {
+        assertEquals(1_788, CourseLoader.parse(withObstacles(tiles(1_788)), "x.json").obstacles().size());
+        assertEquals(2_500, CourseLoader.parse(withObstacles(tiles(2_500)), "x.json").obstacles().size());
+        CourseException e = org.junit.jupiter.api.Assertions.assertThrows(CourseException.class,
+                () -> CourseLoader.parse(withObstacles(tiles(2_501)), "x.json"));
+        assertEquals("x.json: obstacles: too many obstacles: 2501 (the limit is 2500)", e.getMessage());
+    }
+
+    /** {@code n} boxes of 0.1 m on a 50-wide grid of tiles. */
+    private static String tiles(int n) {
+        StringBuilder sb = new StringBuilder();
+        for (int k = 0; k < n; k++) {
+            double x = 0.1 * (k % 50) - 2.5, y = 0.1 * (k / 50) - 2.5;
+            if (k > 0) sb.append(", ");
+            sb.append(String.format(java.util.Locale.ROOT, "{\"type\": \"box\", \"min\": [%.1f, %.1f, 0], \"max\": [%.1f, %.1f, 0.1]}",
+                    x, y, x + 0.1, y + 0.1));
+        }
+        return sb.toString();
+    }
+
     @Test
     void badObstacleDataGivesOneLineErrors() {
         assertEquals("courses/x.json: obstacles[0]: from and to are the same point and thickness is 0: the wall has no extent",
                 error(withObstacles("{ \"type\": \"wall\", \"from\": [1, 1], \"to\": [1, 1], \"thickness\": 0, \"height\": 0.1 }")));
         assertEquals("courses/x.json: obstacles[0].radius: must be > 0, got -0.2",
                 error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": -0.2, \"height\": 2 }")));
-        assertEquals("courses/x.json: obstacles[0].restitution: must be between 0 and 1, got 1.5",
-                error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": 0.2, \"height\": 2, \"restitution\": 1.5 }")));
-        assertEquals("courses/x.json: obstacles[0].type: expected one of wall, tree, box, model, got \"rock\"",
+        assertEquals("courses/x.json: obstacles[0].restitution: must be between 0 and 2, got 2.5",
+                error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": 0.2, \"height\": 2, \"restitution\": 2.5 }")));
+        assertEquals("courses/x.json: obstacles[0].type: expected one of wall, tree, box, model, bumper, gate, got \"rock\"",
                 error(withObstacles("{ \"type\": \"rock\" }")));
         assertEquals("courses/x.json: obstacles[0]: min must be < max in all three axes, got min (0, 0, 1), max (1, 1, 1)",
                 error(withObstacles("{ \"type\": \"box\", \"min\": [0, 0, 1], \"max\": [1, 1, 1] }")));
@@ -58,7 +80,7 @@ class ObstacleLoaderTest {
                 error(withObstacles("{ \"type\": \"box\", \"min\": [0, 0, 1], \"max\": [1, 1] }")));
         assertEquals("courses/x.json: obstacles[0].thickness: expected a number, got a string",
                 error(withObstacles("{ \"type\": \"wall\", \"from\": [1, 1], \"to\": [2, 1], \"thickness\": \"NaN\", \"height\": 0.1 }")));
-        assertEquals("courses/x.json: obstacles[0].colour: unknown field (known: type, position, radius, height, restitution)",
+        assertEquals("courses/x.json: obstacles[0].colour: unknown field (known: type, position, radius, height, restitution, motion)",
                 error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": 0.2, \"height\": 2, \"colour\": 1 }")));
         assertEquals("courses/x.json: physics.ballRadius: must be > 0, got 0",
                 error(edit("\"model\": \"classic\" }", "\"model\": \"classic\", \"ballRadius\": 0 }")));

@@ -224,7 +224,7 @@ public final class PlannerBot extends SearchBot {
                     if (shot != null) return shot;
                 }
                 // Last: many landings, each with a brute-force putt search (only where the budget is
-                // large); on later strokes too (tuning 777-27: 4 -> 3), each within its share of the time left.
+                // large); on later strokes too (tuning 777-27: 4 -> 3), each within its simulations (SearchBounds).
                 TwoStrokeSearch search = new TwoStrokeSearch(stroke, onePuttMap(stroke));
                 shot = search.search();
                 if (shot != null) return shot;
@@ -292,7 +292,8 @@ public final class PlannerBot extends SearchBot {
             Course c = world.course();
             Hole h = c.hole();
             Course probe = new Course(c.format(), c.name(), c.terrain(), c.bounds(), c.physics(), c.start(),
-                    new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones(), c.obstacles());
+                    new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones(), c.obstacles(), c.pushZones(),
+                    c.magnets(), c.teleports());
             probeWorld = new World(probe, world.terrain());
             probeSource = world;
         }

@@ -80,6 +80,8 @@ public final class EditorApp implements WindowApp {
     private boolean problemsStale = true;
     private double lastValidation = -1;
     Dialog dialog = Dialog.NONE;
+    /** Why the recovery dialog offers a course: a session that did not close, or a save that did not finish. */
+    String recoveryReason = "The editor did not close cleanly last time.";
     BotCheck botCheck;
     final GuiInt botChoice = new GuiInt(0);
     private Path playFile;
@@ -89,6 +91,8 @@ public final class EditorApp implements WindowApp {
     long fieldsVersion = -1;
     int selected = -1;
     int selectedZone = -1;
+    /** The selected push zone, magnet or teleport: an index into ElementPanels' combined list, or -1. */
+    int selectedElement = -1;
     float time;
     /** The loop's clock at this pass (autosave and validation pace themselves by it). */
     private double now;
@@ -117,7 +121,12 @@ public final class EditorApp implements WindowApp {
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
             try (NuklearLayer ui = new NuklearLayer(window.handle(), scale, minigolf.ui.UiFont.EDITOR_SIZE_PIXELS)) {
                 uiLayer = ui;
-                if (recovery.start()) {
+                boolean waiting = recovery.start();
+                if (!waiting && recovery.adoptUnfinishedSave(editor.file())) {
+                    waiting = true;
+                    recoveryReason = "A save of " + editor.file().getFileName() + " did not finish last time.";
+                }
+                if (waiting) {
                     if (options.frames() <= 0) {
                         dialog = Dialog.RECOVERY;
                     } else {
@@ -197,7 +206,10 @@ public final class EditorApp implements WindowApp {
                 // The sun's shadow map and the minimap are redrawn once, when the stroke ends and the
                 // scene is rebuilt: redrawing them for every dab would cost more than the dab itself.
             }
-            if (changes.obstaclesChanged()) renderer.setObstacles(editor.course().obstacles());
+            if (changes.obstaclesChanged()) {
+                renderer.setObstacles(editor.course().obstacles());
+                renderer.setElements(editor.world().course());
+            }
         }
         // Validation (A* included) after the course settles, at most twice a second.
         if (problemsStale && !editor.isStroking() && now - lastValidation > 0.5) {
@@ -304,6 +316,14 @@ public final class EditorApp implements WindowApp {
                 new BotCheck.Conditions(user.noise(), user.hideFrictionFromBots()));
     }
 
+    /** Opens a course file in the editor; returns whether a save of it that did not finish is now offered. */
+    boolean openFile(Path file) throws CourseException {
+        replaceEditor(CourseEditor.open(file));
+        if (!recovery.adoptUnfinishedSave(file)) return false;
+        recoveryReason = "A save of " + file.getFileName() + " did not finish last time.";
+        return true;
+    }
+
     void replaceEditor(CourseEditor next) {
         editor.endStroke();
         editor = next;
@@ -311,6 +331,7 @@ public final class EditorApp implements WindowApp {
         camera = null;
         selected = -1;
         selectedZone = -1;
+        selectedElement = -1;
         fieldsVersion = -1;
         problemsStale = true;
         rebuildScene = true;
@@ -320,6 +341,8 @@ public final class EditorApp implements WindowApp {
 
     private void drawFrame(int fw, int fh) {
         if (message != null && glfwGetTime() > messageUntil) message = null;
+        // The moving obstacles run on the window's clock: the designer sees them move as they will in play.
+        renderer.setClock(time);
         renderer.render(camera, fw, fh, time);
         int mini = minimapSize(fw, fh);
         renderer.renderMinimap(fw - MINIMAP_MARGIN - mini, MINIMAP_TOP, mini, fw, fh);
