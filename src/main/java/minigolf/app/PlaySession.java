@@ -390,8 +390,11 @@ final class PlaySession {
             animator = null;
             rolling = null;
             lastStroke = e.stroke();
-            say.accept(game.players().get(e.seat()).name() + ": " + describe(lastStroke));
-            if (settleOnline(e)) return Progress.OVER;
+            boolean holeOver = settleOnline(e);
+            // The same news as hot seat's, told on the settled game (where the server put the ball).
+            say.accept(StrokeNews.of(lastStroke, game.player(e.seat()), game.players().get(e.seat()).name(),
+                    game.players().size() > 1, round.hole().par(), world.hole().position().x(), world.hole().position().y()));
+            if (holeOver) return Progress.OVER;
             progress = Progress.STROKE_ENDED;
         }
         minigolf.online.RoomEvent e = online.nextEvent();
