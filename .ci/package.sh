@@ -11,7 +11,6 @@ fail() { echo "package: FAILED: $*"; exit 1; }
 need=()
 command -v fakeroot >/dev/null || need+=(fakeroot)
 command -v dpkg-deb >/dev/null || need+=(dpkg-dev)
-command -v xdg-desktop-menu >/dev/null || need+=(xdg-utils)
 [ -e /usr/lib/x86_64-linux-gnu/libEGL_mesa.so.0 ] || [ -e /usr/lib/aarch64-linux-gnu/libEGL_mesa.so.0 ] \
     || need+=(libegl1 libegl-mesa0)
 sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
@@ -29,10 +28,20 @@ deb=$(ls build/package/minigolf_*.deb 2>/dev/null | head -1)
 [ -n "$deb" ] || fail "no .deb in build/package"
 echo "package: built $deb ($(du -h "$deb" | cut -f1))"
 contents=$(dpkg-deb -c "$deb")
-for f in ./opt/minigolf/bin/minigolf ./opt/minigolf/lib/minigolf.png ./opt/minigolf/lib/minigolf-minigolf.desktop \
+for f in ./opt/minigolf/bin/minigolf ./opt/minigolf/lib/app/desktop/minigolf.png ./opt/minigolf/lib/app/desktop/minigolf.desktop \
          ./opt/minigolf/lib/runtime/lib/libjava.so ./opt/minigolf/lib/app/courses/lake.json; do
     grep -q " $f\$" <<<"$contents" || fail "$f is not in the package"
 done
+# dpkg -i on a minimal Debian stopped on the missing xdg-utils (issue 29): the package needs none.
+depends=$(dpkg-deb -f "$deb" Depends)
+grep -q 'xdg-utils' <<<"$depends" && fail "the package depends on xdg-utils: $depends"
+control=$(mktemp -d)
+dpkg-deb -e "$deb" "$control"
+grep -q 'usr/share/applications/minigolf.desktop' "$control/postinst" || fail "the postinst does not install the menu entry"
+rm -rf "$control"
+if command -v desktop-file-validate >/dev/null; then
+    desktop-file-validate src/packaging/linux/minigolf.desktop || fail "the menu entry does not validate"
+fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -41,6 +50,8 @@ if [ "${CI:-}" = "true" ] && [ "$(id -u)" -eq 0 ]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "./$deb" >"$work/apt.log" 2>&1 \
         || { tail -20 "$work/apt.log"; fail "apt-get install ./$deb"; }
     installed=system
+    [ -f /usr/share/applications/minigolf.desktop ] && [ -f /usr/share/icons/hicolor/256x256/apps/minigolf.png ] \
+        || fail "no menu entry or icon after apt-get install"
     minigolf=/usr/bin/minigolf
     courses=/opt/minigolf/lib/app/courses
 else
@@ -71,7 +82,8 @@ check "minigolf render (no display)" render "$courses/lake.json" --out "$work/la
 
 if [ "$installed" = system ]; then
     DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq minigolf >/dev/null 2>&1 || { echo "package: could not remove minigolf"; status=1; }
-    [ ! -e /opt/minigolf ] && [ ! -e /usr/bin/minigolf ] || { echo "package: files left after removal"; status=1; }
+    [ ! -e /opt/minigolf ] && [ ! -e /usr/bin/minigolf ] && [ ! -e /usr/share/applications/minigolf.desktop ] \
+        || { echo "package: files left after removal"; status=1; }
 fi
 [ "$status" -eq 0 ] || fail "the installed minigolf"
 echo "package: the .deb installs and its minigolf works (--version, simulate, render without a display)"

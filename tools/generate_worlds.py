@@ -98,12 +98,12 @@ def seaside():
     ridge = "0.1 + 0.15*exp(-(x-0.2)^2/0.12)*(1-0.85*exp(-(y-0.45)^2/0.05))"
     h.append(("02-dune-ridge", course("Dune Ridge", ridge, lane(-3.5, 3.5, 0.9), (-3.0, -0.3), (2.85, -0.55),
                                       [box(2.2, 0.25, 0.5, 0.12, 0.0, 0.2, 25), box(1.3, -0.3, 0.35, 0.35, 0.0, 0.2, 45, 0.9)]
-                                      + pocket(2.5, -0.9, 3.1, -0.15), world=SEA), 2))
+                                      + pocket(2.5, -0.9, 3.1, -0.15), world=SEA), 3))
     # 3. Tidal Pool: a pool fills the middle of a wide fairway, its banks sloping in. The long way
     # round the top is wide; the bottom shore is short and narrow.
     pool = "0.12 - 0.36*" + g(0.2, -0.1, 1.3, 0.4)
-    h.append(("03-tidal-pool", course("Tidal Pool", pool, lane(-4, 4, 1.4), (-3.4, 0), (3.3, -0.2),
-                                      [pillar(2.5, 0.6, 0.12, 0.5)], world=SEA), 3))
+    h.append(("03-tidal-pool", course("Tidal Pool", pool, lane(-4, 4, 1.4), (-3.4, 0), (3.3, 1.15),
+                                      [pillar(2.5, 0.6, 0.12, 0.5)] + pocket(3.0, 1.4, 3.75, 0.75), world=SEA), 3))
     # 4. Pot Bunkers: three pots guard the cup; a ball-wide gap between the front two is the ace line.
     pots = [zone(circle(1.55, 0.36, 0.3), SAND), zone(circle(1.55, -0.36, 0.3), SAND), zone(circle(3.0, 0.55, 0.28), SAND),
             zone(circle(3.0, -0.5, 0.25), SAND)]
@@ -113,19 +113,19 @@ def seaside():
     # the straight putt a bank, the safe play a lay-up before it.
     h.append(("05-sea-breeze", course("Sea Breeze", "0.25 + 0.07*y + 0.015*sin(1.3*x)", lane(-5, 5, 0.85),
                                       (-4.4, 0.4), (4.2, 0.45),
-                                      wall([(0.6, -0.85), (0.6, 0.35)], 0.1) + wall([(3.2, 0.85), (3.2, -0.2)], 0.1), world=SEA), 4))
+                                      wall([(0.6, -0.85), (0.6, 0.35)], 0.1) + wall([(3.2, 0.85), (3.2, -0.2)], 0.1), world=SEA), 3))
     # 6. Lighthouse: a round tower stands between tee and cup; the cup is tucked behind it. Go
     # round either side (two putts) or bank off the side rail for the ace.
-    # The cup hides in the keeper's yard behind the tower, open only towards the end rail.
-    yard = wall([(2.45, 0.3), (1.75, 0.3), (1.75, -0.3), (2.45, -0.3)])
-    h.append(("06-lighthouse", course("Lighthouse", "0.1", lane(-3.0, 3.0, 1.1), (-2.5, 0.0), (2.05, 0.0),
-                                      [pillar(1.0, 0.0, 0.35, 0.8, 0.55)] + yard, world=SEA), 2))
+    # The cup hides in the keeper's yard in the corner beyond the tower, its gate by the end rail.
+    h.append(("06-lighthouse", course("Lighthouse", "0.1", lane(-3.0, 3.0, 1.1), (-2.5, 0.0), (2.35, -0.75),
+                                      [pillar(1.0, 0.0, 0.35, 0.8, 0.55)] + pocket(2.0, -1.1, 2.7, -0.4), world=SEA), 2))
     # 7. Jetty: the cup at the end of a jetty over the water: rails on the jetty, water each side of
     # its neck. Lay up on the landing, then putt along the jetty.
     jetty = [(-3.5, -1.0), (0.0, -1.0), (0.0, -0.3), (3.2, -0.3), (3.2, 0.3), (0.0, 0.3), (0.0, 1.0), (-3.5, 1.0)]
     sea = "0.1 + 0.02*exp(-(x-1.6)^2/0.2) - 0.4*" + step("x-0.08", 25) + "*" + step("abs(y)-0.42", 25)
-    h.append(("07-jetty", course("Jetty", sea, jetty, (-3.0, 0.5), (2.85, 0.0),
-                                 [pillar(1.0, 0.08, 0.1, 0.5), pillar(2.0, -0.08, 0.1, 0.5)], world=SEA, slope_region=jetty), 3))
+    h.append(("07-jetty", course("Jetty", sea, jetty, (-3.0, 0.5), (2.6, 0.13),
+                                 [pillar(1.2, 0.06, 0.1, 0.5)] + pocket(2.4, 0.3, 2.75, -0.05),
+                                 world=SEA, slope_region=jetty), 3))
     # 8. Switchback: a Z of two doglegs; each corner is a bank.
     z = [(-3.5, -1.5), (1.0, -1.5), (1.0, 0.5), (3.5, 0.5), (3.5, 1.5), (-0.2, 1.5), (-0.2, -0.5), (-3.5, -0.5)]
     h.append(("08-switchback", course("Switchback", "0.1", z, (-3.0, -1.0), (3.0, 1.0),
@@ -135,10 +135,9 @@ def seaside():
     h.append(("09-shell-bowl", course("Shell Bowl", bowl, lane(-2.8, 2.8, 1.5), (-2.3, -0.9), (1.5, 0.8),
                                       [box(0.0, 0.0, 0.3, 0.3, 0.0, 0.3, 45, 0.9)], world=SEA), 2))
     # 10. Rock Pools: four small pools to weave between; the straight line skirts two of them.
-    rockpools = "0.1 - 0.25*(" + "+".join([g(-1.2, 0.45, 0.15, 0.15), g(0.0, -0.4, 0.16, 0.16), g(1.1, 0.45, 0.15, 0.15),
-                                           g(2.0, -0.3, 0.13, 0.13)]) + ")"
-    h.append(("10-rock-pools", course("Rock Pools", rockpools, lane(-3.5, 3.5, 1.1), (-3.0, 0.0), (3.0, 0.1),
-                                      [pillar(-0.6, 0.0, 0.09, 0.4)], world=SEA), 3))
+    rockpools = "0.1 - 0.2*(" + "+".join([g(-1.2, 0.45, 0.14, 0.14), g(0.0, -0.45, 0.14, 0.14), g(1.2, 0.45, 0.14, 0.14)]) + ")"
+    h.append(("10-rock-pools", course("Rock Pools", rockpools, lane(-3.5, 3.5, 1.1), (-3.0, 0.0), (2.8, -0.75),
+                                      [pillar(-0.6, 0.0, 0.09, 0.4)] + pocket(2.5, -1.1, 3.05, -0.4), world=SEA), 3))
     # 11. Beach Huts: painted huts stand in the lane as lively bumpers; find the alley between them.
     huts = [box(-1.0, 0.35, 0.45, 0.45, 0.0, 0.35, 0, 0.9), box(0.2, -0.35, 0.45, 0.45, 0.0, 0.35, 0, 0.9),
             box(1.4, 0.35, 0.45, 0.45, 0.0, 0.35, 0, 0.9), box(2.3, -0.3, 0.3, 0.3, 0.0, 0.35, 45, 0.9),
@@ -147,16 +146,17 @@ def seaside():
                                       world=SEA), 3))
     # 12. Lagoon Carry: a lagoon lies across the lane; a narrow causeway runs along the lower rail,
     # or chip straight over onto the green.
-    lagoon = "0.12 - 0.4*exp(-(x-0.3)^2/0.35)*" + step("y+0.5", 4)
-    h.append(("12-lagoon-carry", course("Lagoon Carry", lagoon, lane(-3.5, 3.5, 1.0), (-3.0, 0.3), (2.8, 0.2),
-                                        [pillar(2.3, -0.3, 0.09, 0.4)], world=SEA,
+    lagoon = "0.12 - 0.4*exp(-(x-0.3)^2/0.35)*" + step("y+0.4", 4)
+    h.append(("12-lagoon-carry", course("Lagoon Carry", lagoon, lane(-3.5, 3.5, 1.0), (-3.0, 0.3), (2.85, 0.65),
+                                        [pillar(2.3, -0.3, 0.09, 0.4)] + pocket(2.5, 1.0, 3.2, 0.3), world=SEA,
                                         slope_region=[(-3.5, -1.0), (3.5, -1.0), (3.5, 1.0), (-3.5, 1.0)]), 3))
     # 13. Slipway: a long ramp down to a shelf above the water; the cup is on the shelf, the water
     # beyond the end rail's gap. Pace is everything.
     slip = "0.45 - 0.09*(x+3) + 0.09*(x-1.2)*" + step("x-1.2", 8) + " - 0.5*" + step("x-3.6", 10)
     # A gate on the shelf's edge, off the line to the cup.
-    h.append(("13-slipway", course("Slipway", slip, lane(-3.5, 3.3, 0.75), (-3.0, 0.0), (2.45, -0.35),
-                                   [box(1.7, -0.3, 0.1, 0.9, 0.0, 0.2), box(1.7, 0.565, 0.1, 0.37, 0.0, 0.2)], world=SEA,
+    h.append(("13-slipway", course("Slipway", slip, lane(-3.5, 3.3, 0.75), (-3.0, 0.0), (2.75, -0.45),
+                                   [box(1.7, -0.3, 0.1, 0.9, 0.0, 0.2), box(1.7, 0.565, 0.1, 0.37, 0.0, 0.2)]
+                                   + pocket(2.5, -0.75, 3.0, -0.15), world=SEA,
                                    slope_region=lane(-3.5, 3.3, 0.75)), 3))
     # 14. Breakwater: staggered walls make a chicane; bank through it.
     chic = wall([(-1.2, -0.9), (-1.2, 0.35)]) + wall([(0.6, 0.9), (0.6, -0.35)]) + wall([(2.0, -0.9), (2.0, 0.2)])
@@ -164,23 +164,23 @@ def seaside():
                                       world=SEA), 3))
     # 15. Twin Greens: two tiers split by a wall with one gap; the cup is on the upper tier.
     tiers = "0.1 + 0.12*" + step("x-0.8", 5)
-    h.append(("15-twin-greens", course("Twin Greens", tiers, lane(-3.0, 3.0, 1.0), (-2.5, 0.5), (2.3, -0.5),
-                                       wall([(0.8, 1.0), (0.8, 0.2)]) + wall([(0.8, -0.15), (0.8, -1.0)]) + [pillar(1.45, 0.02, 0.1, 0.4)],
-                                       world=SEA), 2))
+    h.append(("15-twin-greens", course("Twin Greens", tiers, lane(-3.0, 3.0, 1.0), (-2.5, 0.5), (2.45, -0.68),
+                                       wall([(0.8, 1.0), (0.8, 0.3)]) + wall([(0.8, -0.25), (0.8, -1.0)]) + pocket(2.2, -1.0, 2.7, -0.35),
+                                       world=SEA), 3))
     # 16. Sandbar: a strip of sand across the whole lane; roll through it hard or chip over.
     h.append(("16-sandbar", course("Sandbar", "0.1 + 0.01*x", lane(-3.5, 3.5, 0.8), (-3.0, 0.0), (2.95, 0.5),
                                    pocket(2.6, 0.8, 3.2, 0.2), [zone(polygon([(-0.3, -0.8), (0.6, -0.8), (0.9, 0.8), (0.0, 0.8)]), SAND)],
                                    world=SEA), 3))
     # 17. Crab Walk: the green steps up in terraces across the lane; the cup sits high on the left.
     terr = "0.1 + 0.1*" + step("y-0.3", 9) + " + 0.05*" + step("x-1.5", 6)
-    h.append(("17-crab-walk", course("Crab Walk", terr, lane(-3.5, 3.5, 1.1), (-3.0, -0.6), (1.6, 0.65),
-                                     wall([(-0.5, 0.15), (2.5, 0.15)]), world=SEA), 3))
+    h.append(("17-crab-walk", course("Crab Walk", terr, lane(-3.5, 3.5, 1.1), (-3.0, -0.6), (2.95, 0.8),
+                                     wall([(-0.5, 0.15), (2.2, 0.15)]) + pocket(2.7, 1.1, 3.2, 0.5), world=SEA), 3))
     # 18. Lighthouse Point: the finale: a long lane with the windmill, a pool and a ridge before the
     # cup at the point.
     fin = "0.3 - 0.025*x - 0.34*" + g(1.7, -0.65, 0.35, 0.2) + " + 0.1*exp(-(x-3.3)^2/0.1)*(1-0.9*exp(-(y-0.6)^2/0.06))"
     h.append(("18-lighthouse-point", course("Lighthouse Point", fin, lane(-5, 5, 1.3), (-4.4, 0.0), (4.3, 0.0),
                                             [windmill(-1.5, 0.0, 0.3 + 0.025 * 1.5, 90, 0.7), pillar(0.9, 0.6, 0.12, 0.6)],
-                                            world=SEA), 4))
+                                            world=SEA), 3))
     return h
 
 
@@ -193,10 +193,9 @@ def canyon():
     h = []
     # 1. Trailhead: the lane lies in a shallow trough; a rock pillar blocks the straight line, and the
     # trough's banks curve a ball round it.
-    trough = "0.1 + 0.22*y^2 + 0.01*x"
-    h.append(("01-trailhead", course("Trailhead", trough, lane(-3.5, 3.5, 0.85), (-3.0, 0.0), (2.75, 0.0),
-                                     [pillar(0.4, 0.0, 0.16, 0.6), pillar(2.3, 0.09, 0.07, 0.5), pillar(2.3, -0.09, 0.07, 0.5)],
-                                     world=CANYON), 2))
+    trough = "0.1 + 0.22*y^2*" + step("2.2-x", 4) + " + 0.01*x"
+    h.append(("01-trailhead", course("Trailhead", trough, lane(-3.5, 3.5, 0.85), (-3.0, 0.0), (2.9, 0.55),
+                                     [pillar(0.4, 0.0, 0.16, 0.6)] + pocket(2.6, 0.85, 3.2, 0.25), world=CANYON), 2))
     # 2. Dry Wash: the wash winds like a snake; the ball follows its floor, a straight putt climbs the bank.
     wash = "0.1 + 0.25*(y-0.45*sin(0.8*x))^2"
     h.append(("02-dry-wash", course("Dry Wash", wash, lane(-3.5, 3.5, 1.0), (-3.0, -0.3), (2.9, 0.33),
@@ -209,9 +208,9 @@ def canyon():
                                     world=CANYON), 3))
     # 4. Cactus Garden: a slalom of saguaros; the cup hides behind the last pair.
     cacti = [tree(-1.6, 0.3, 0.1, 1.8), tree(-0.6, -0.35, 0.1, 2.2), tree(0.4, 0.35, 0.1, 1.9), tree(1.4, -0.3, 0.1, 2.0),
-             tree(2.3, 0.1, 0.09, 1.7), tree(2.3, -0.1, 0.09, 1.6)]
+             tree(2.3, 0.2, 0.09, 1.7)]
     h.append(("04-cactus-garden", course("Cactus Garden", "0.1 + 0.01*sin(2*x)", lane(-3.5, 3.5, 0.9), (-3.0, 0.0),
-                                         (2.75, 0.0), cacti, world=CANYON), 3))
+                                         (2.9, -0.6), cacti + pocket(2.6, -0.9, 3.2, -0.3), world=CANYON), 3))
     # 5. Red Sand: a wide trap of red sand crosses the lane on a slant; a grass causeway runs along the top rail.
     trap = [zone(polygon([(-1.4, -1.0), (0.6, -1.0), (1.6, 0.45), (-0.4, 0.45)]), REDSAND), zone(circle(2.6, -0.6, 0.3), REDSAND)]
     h.append(("05-red-sand", course("Red Sand", "0.1 - 0.015*y", lane(-3.5, 3.5, 1.0), (-3.0, -0.5), (2.9, -0.6),
@@ -251,9 +250,10 @@ def canyon():
                                          boulders + [box(2.5, -0.2, 0.3, 0.3, -0.05, 0.3, 45, 0.7)], world=CANYON), 3))
     # 12. Oasis: a spring fills the middle; cacti stand on its shores. Round it on either shore (they
     # lean towards the water), or chip straight over it.
-    pool = "0.12 - 0.34*" + g(0.4, 0.0, 1.0, 0.35)
+    pool = "0.12 - 0.3*" + g(0.4, 0.0, 1.0, 0.25)
     palms = [tree(0.2, 0.95, 0.1, 2.3), tree(1.9, 0.85, 0.1, 2.6), tree(-0.3, -0.95, 0.1, 2.4), tree(2.3, -0.2, 0.09, 1.8)]
-    h.append(("12-oasis", course("Oasis", pool, lane(-3.5, 3.5, 1.2), (-3.0, 0.0), (2.9, 0.1), palms, world=CANYON), 3))
+    h.append(("12-oasis", course("Oasis", pool, lane(-3.5, 3.5, 1.2), (-3.0, 0.0), (2.9, 0.87),
+                                 palms + pocket(2.6, 1.2, 3.2, 0.55), world=CANYON), 3))
     # 13. Sidewinder: the lane tilts one way, then the other, like a snake's track.
     side = "0.25 + 0.08*y*sin(0.9*x)"
     h.append(("13-sidewinder", course("Sidewinder", side, lane(-4.5, 4.5, 0.8), (-4.0, 0.0), (4.0, -0.35),
@@ -267,10 +267,10 @@ def canyon():
                                           world=CANYON, slope_region=[(-3.5, 0.55), (3.5, 0.55), (3.5, 1.0), (-3.5, 1.0)]), 3))
     # 15. Funnel Rock: the ground funnels towards a gap between two rocks; the cup waits beyond.
     fun = "0.1 + 0.06*abs(y)^1.5*" + step("0.8-x", 3) + " - 0.01*x"
-    h.append(("15-funnel-rock", course("Funnel Rock", fun, lane(-3.0, 3.0, 1.1), (-2.5, 0.7), (2.3, 0.3),
-                                       [pillar(1.2, 0.3, 0.18, 0.6), pillar(1.2, -0.3, 0.18, 0.6), pillar(1.75, 0.0, 0.1, 0.5)],
-                                       world=CANYON,
-                                       slope_region=lane(-3.0, 3.0, 1.1)), 2))
+    h.append(("15-funnel-rock", course("Funnel Rock", fun, lane(-3.0, 3.0, 1.1), (-2.5, 0.7), (2.4, 0.78),
+                                       [pillar(1.2, 0.3, 0.18, 0.6), pillar(1.2, -0.3, 0.18, 0.6), pillar(1.75, 0.0, 0.1, 0.5)]
+                                       + pocket(2.1, 1.1, 2.7, 0.45), world=CANYON,
+                                       slope_region=lane(-3.0, 3.0, 1.1)), 3))
     # 16. Ridge Run: the cup is on a ridge's crest; miss the crest and the ball runs down either flank.
     ridge = "0.1 + 0.2*exp(-y^2/0.18)*" + step("x+1.0", 4)
     h.append(("16-ridge-run", course("Ridge Run", ridge, lane(-3.5, 3.5, 1.0), (-3.0, 0.0), (2.6, 0.05),
@@ -308,13 +308,14 @@ def winter():
     # 1. Gatehouse: a castle wall across the lane with one gate, off the straight line; the cup is
     # just inside, to the other side.
     gate = [block(0.0, -1.0, 0.25, -0.05), block(0.0, 0.3, 0.25, 1.0), pillar(0.125, -0.05, 0.1, 0.45), pillar(0.125, 0.3, 0.1, 0.45)]
-    h.append(("01-gatehouse", course("Gatehouse", "0.1", lane(-3.5, 3.5, 1.0), (-3.0, -0.4), (2.6, -0.55), gate,
-                                     world=WINTER), 2))
+    h.append(("01-gatehouse", course("Gatehouse", "0.1", lane(-3.5, 3.5, 1.0), (-3.0, -0.4), (2.9, -0.68),
+                                     gate + pocket(2.6, -1.0, 3.2, -0.35),
+                                     world=WINTER), 3))
     # 2. Frozen Pond: a sheet of ice lies before the cup; the ball glides, so the pace must be soft;
     # a snowbank behind the cup forgives a little.
-    ice = [zone(circle(0.9, 0.0, 1.0), ICE), zone(rect(3.0, -0.8, 3.5, 0.8), SNOW)]
-    h.append(("02-frozen-pond", course("Frozen Pond", "0.1 - 0.01*x", lane(-3.5, 3.5, 0.8), (-3.0, 0.3), (2.6, -0.3),
-                                       [pillar(0.9, 0.0, 0.12, 0.5)], ice, world=WINTER), 2))
+    ice = [zone(circle(0.9, 0.0, 1.0), ICE), zone(rect(3.0, -0.8, 3.5, 0.2), SNOW)]
+    h.append(("02-frozen-pond", course("Frozen Pond", "0.1 - 0.01*x", lane(-3.5, 3.5, 0.8), (-3.0, 0.3), (2.7, 0.5),
+                                       [pillar(0.9, 0.0, 0.12, 0.5)] + pocket(2.4, 0.8, 3.0, 0.2), ice, world=WINTER), 2))
     # 3. Moat: the cup is in a walled courtyard ringed by a moat; the drawbridge leads to the gate.
     moat = "0.12 - 0.35*exp(-(sqrt((x-1.8)^2+y^2)-1.05)^2/0.025)*" + step("abs(y)-0.27", 30)
     court = [block(1.05, -0.75, 1.2, -0.18), block(1.05, 0.18, 1.2, 0.75), block(1.05, 0.6, 2.55, 0.75), block(1.05, -0.75, 2.55, -0.6),
@@ -325,18 +326,19 @@ def winter():
                                 world=WINTER, slope_region=[(-3.2, -0.16), (3.3, -0.16), (3.3, 0.16), (-3.2, 0.16)]), 3))
     # 4. Snow Banks: deep snow along both rails and a drift in the middle; the clear path is a
     # narrow S between them.
-    banks = [zone(rect(-1.5, 0.35, 0.5, 1.0), SNOW), zone(rect(0.2, -1.0, 2.0, -0.3), SNOW), zone(circle(2.8, 0.6, 0.3), SNOW)]
+    banks = [zone(rect(-1.5, 0.35, 0.5, 1.0), SNOW), zone(rect(0.2, -1.0, 2.0, -0.3), SNOW)]
     drift = "0.1 + 0.08*" + g(0.0, -0.2, 0.1, 0.08)
-    h.append(("04-snow-banks", course("Snow Banks", drift, lane(-3.5, 3.5, 1.0), (-3.0, 0.0), (2.8, 0.0), [], banks,
+    h.append(("04-snow-banks", course("Snow Banks", drift, lane(-3.5, 3.5, 1.0), (-3.0, 0.0), (2.9, 0.68),
+                                      pocket(2.6, 1.0, 3.2, 0.35), banks,
                                       world=WINTER), 2))
     # 5. Round Tower: a tower stands in the lane with the cup in its lee; bank round it.
-    h.append(("05-round-tower", course("Round Tower", "0.1", lane(-3.0, 3.0, 1.1), (-2.5, 0.0), (2.0, 0.05),
-                                       [pillar(1.0, 0.0, 0.38, 0.9), block(2.55, -0.35, 2.7, 0.35, 0.2)], world=WINTER), 2))
+    h.append(("05-round-tower", course("Round Tower", "0.1", lane(-3.0, 3.0, 1.1), (-2.5, 0.0), (2.35, 0.78),
+                                       [pillar(1.0, 0.0, 0.38, 0.9)] + pocket(2.0, 1.1, 2.7, 0.45), world=WINTER), 2))
     # 6. Battlements: a wall of merlons across the lane; three crenels let the ball through, and the
     # cup is straight behind a merlon.
-    merlons = [block(0.5, -1.0, 0.7, -0.55), block(0.5, -0.35, 0.7, 0.05), block(0.5, 0.25, 0.7, 0.6), block(0.5, 0.8, 0.7, 1.0)]
+    merlons = [block(0.5, -1.0, 0.7, -0.6), block(0.5, -0.3, 0.7, 0.0), block(0.5, 0.3, 0.7, 0.55), block(0.5, 0.85, 0.7, 1.0)]
     h.append(("06-battlements", course("Battlements", "0.1 + 0.006*x", lane(-3.0, 3.0, 1.0), (-2.5, 0.2), (2.3, -0.15),
-                                       merlons, world=WINTER), 2))
+                                       merlons, world=WINTER), 3))
     # 7. Ice Slide: a chute of ice runs downhill to a snowy green; the snow stops the ball, the pace
     # must be just enough.
     chute = "0.35 - 0.08*(x+3)*" + step("-(x-0.5)", 5)
@@ -355,33 +357,36 @@ def winter():
     h.append(("09-portcullis", course("Portcullis", "0.1", lane(-3.0, 3.2, 1.0), (-2.5, -0.5), (2.6, 0.5), port,
                                       world=WINTER), 3))
     # 10. Sledge Run: a curving run banked like a toboggan track.
-    run = "0.1 + 0.24*(y-0.5*sin(0.7*x+0.6))^2"
-    h.append(("10-sledge-run", course("Sledge Run", run, lane(-4.0, 4.0, 1.0), (-3.5, -0.2), (3.5, 0.0),
-                                      [pillar(0.6, 0.35, 0.1, 0.45)], world=WINTER), 3))
+    run = "0.1 + 0.24*(y-0.5*sin(0.7*x+0.6))^2*" + step("2.9-x", 5)
+    h.append(("10-sledge-run", course("Sledge Run", run, lane(-4.0, 4.0, 1.0), (-3.5, -0.2), (3.35, -0.68),
+                                      [pillar(0.6, 0.35, 0.1, 0.45)] + pocket(3.0, -1.0, 3.7, -0.35), world=WINTER), 3))
     # 11. Frozen Fountain: the cup tops a mound ringed with ice; soft balls slide back, hard ones fly off.
-    mound = "0.1 + 0.18*" + g(1.6, 0.0, 0.6, 0.6)
+    mound = "0.1 + 0.14*" + g(1.6, 0.0, 0.6, 0.6)
     h.append(("11-frozen-fountain", course("Frozen Fountain", mound, lane(-3.0, 3.0, 1.3), (-2.5, -0.5), (1.6, 0.0), [],
-                                           [zone(circle(1.6, 0.0, 1.0), ICE), zone(circle(1.6, 0.0, 0.55), (0.1, 0.2))],
+                                           [zone(circle(1.6, 0.0, 0.8), ICE), zone(circle(1.6, 0.0, 0.6), (0.1, 0.2))],
                                            world=WINTER), 3))
     # 12. Armoury: shields (lively blocks) hang across the lane at angles; find the alley.
     shields = [box(-1.2, 0.35, 0.5, 0.1, -0.05, 0.3, 30, 0.9), box(-0.2, -0.4, 0.5, 0.1, -0.05, 0.3, -30, 0.9),
                box(0.8, 0.3, 0.5, 0.1, -0.05, 0.3, 40, 0.9), box(1.8, -0.3, 0.5, 0.1, -0.05, 0.3, -40, 0.9)]
-    h.append(("12-armoury", course("Armoury", "0.1", lane(-3.0, 3.2, 0.9), (-2.5, 0.0), (2.75, 0.1),
-                                   shields + [box(2.35, 0.1, 0.1, 0.5, -0.05, 0.3, 0, 0.9)],
+    h.append(("12-armoury", course("Armoury", "0.1", lane(-3.0, 3.2, 0.9), (-2.5, 0.0), (2.65, -0.6),
+                                   shields + pocket(2.4, -0.9, 2.9, -0.3),
                                    world=WINTER), 3))
     # 13. Drawbridge: a narrow bridge over the moat with low rails; miss it and the ball is in the water.
     moat2 = "0.12 - 0.4*exp(-(x-0.2)^2/0.3)*" + step("abs(y)-0.36", 30)
     br = wall([(-0.9, 0.3), (1.3, 0.3)], 0.06, 0.07) + wall([(-0.9, -0.3), (1.3, -0.3)], 0.06, 0.07)
-    h.append(("13-drawbridge", course("Drawbridge", moat2, lane(-3.0, 3.0, 1.1), (-2.5, 0.6), (2.3, -0.5), br,
-                                      world=WINTER, slope_region=[(-3.0, -0.25), (3.0, -0.25), (3.0, 0.25), (-3.0, 0.25)]), 2))
+    h.append(("13-drawbridge", course("Drawbridge", moat2, lane(-3.0, 3.0, 1.1), (-2.5, 0.6), (2.4, -0.85),
+                                      br + pocket(2.15, -1.1, 2.75, -0.5),
+                                      world=WINTER, slope_region=[(-3.0, -0.25), (3.0, -0.25), (3.0, 0.25), (-3.0, 0.25)]), 3))
     # 14. Snowdrifts: soft mounds lie across the lane; thread the gaps or ride over them.
     drifts = "0.1 + 0.12*(" + "+".join([g(-1.0, 0.35, 0.15, 0.15), g(0.0, -0.3, 0.18, 0.15), g(1.0, 0.3, 0.15, 0.18),
                                         g(1.9, -0.25, 0.12, 0.12)]) + ")"
-    h.append(("14-snowdrifts", course("Snowdrifts", drifts, lane(-3.0, 3.0, 0.9), (-2.5, 0.0), (2.5, 0.2), [],
+    h.append(("14-snowdrifts", course("Snowdrifts", drifts, lane(-3.0, 3.0, 0.9), (-2.5, 0.0), (2.5, 0.6),
+                                      pocket(2.3, 0.9, 2.7, 0.3),
                                       world=WINTER), 2))
     # 15. Great Hall: two rows of columns down a long hall; the cup is past the last pair.
     cols = [pillar(x, y, 0.1, 0.8) for x in (-2.0, -0.8, 0.4, 1.6) for y in (-0.4, 0.4)] + [pillar(2.6, 0.0, 0.12, 0.8)]
-    h.append(("15-great-hall", course("Great Hall", "0.1", lane(-4.0, 4.0, 1.0), (-3.5, 0.0), (3.3, 0.45), cols,
+    h.append(("15-great-hall", course("Great Hall", "0.1", lane(-4.0, 4.0, 1.0), (-3.5, 0.0), (3.35, 0.68),
+                                      cols + pocket(3.0, 1.0, 3.7, 0.35),
                                       world=WINTER), 3))
     # 16. Icicle Alley: bands of ice and snow across the lane: fast, slow, fast, slow.
     bands = [zone(rect(x, -0.8, x + 0.6, 0.8), ICE if k % 2 == 0 else SNOW) for k, x in enumerate((-2.2, -1.2, -0.2, 0.8, 1.8))]

@@ -81,12 +81,28 @@ final class CourseFolders {
         return store.directory().resolve("classic");
     }
 
+    /**
+     * The single holes offered for practice: every hole of the rounds, in their order (each file
+     * once), then the player's own courses. The loose courses beside the rounds are the engine's
+     * test terrains (a plane, sine hills, a 256 x 256 grid, 200 obstacles): {@code minigolf play
+     * FILE} plays them, a player's list does not offer them.
+     */
     static List<CourseEntry> list(SettingsStore store) {
-        Set<Path> shipped = shippedFolders();
         List<CourseEntry> out = new ArrayList<>();
         Set<Path> seen = new LinkedHashSet<>();
-        for (Path dir : shipped) add(dir, false, out, seen);
-        add(store.directory().resolve("courses"), true, out, seen);
+        for (RoundEntry r : rounds(store)) {
+            Path folder = r.file().toAbsolutePath().getParent();
+            for (int i = 0; i < r.round().size(); i++) {
+                Path f = folder.resolve(r.round().hole(i).course()).normalize();
+                if (!seen.add(f)) continue;
+                try {
+                    out.add(new CourseEntry(CourseLoader.load(f).name(), f, false));
+                } catch (CourseException e) {
+                    // a hole that does not load is not offered (its round says why when played)
+                }
+            }
+        }
+        add(store.directory().resolve("courses"), true, out, new LinkedHashSet<>());
         return out;
     }
 

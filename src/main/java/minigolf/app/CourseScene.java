@@ -6,8 +6,8 @@ import minigolf.game.UserSettings;
 import minigolf.physics.World;
 import minigolf.render.AimView;
 import minigolf.render.BallTrail;
-import minigolf.render.BallView;
 import minigolf.render.CameraClearance;
+import minigolf.render.BallView;
 import minigolf.render.CupDrop;
 import minigolf.render.OrbitCamera;
 import minigolf.render.Particles;
@@ -96,8 +96,8 @@ final class CourseScene implements AutoCloseable {
                 settings.heightColours() ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, quality);
         if (coursePath != null) renderer.setCourseFolder(coursePath.toAbsolutePath().getParent());
         renderer.setAntiAliasing(settings.antiAliasing() && quality.samples() == 0); // FXAA only without MSAA
-        camera = OrbitCamera.behindBall(world.course(), world.terrain(), (float) Math.max(1, width) / Math.max(1, height));
-        camera.setClearance(CameraClearance.of(world.course(), world.terrain()::height));
+        // Behind the ball, facing the hole, steeper where the windmill would hide the cup.
+        camera = OrbitCamera.opening(world.course(), world.terrain(), (float) Math.max(1, width) / Math.max(1, height));
         followTarget.set(camera.target());
         onCard = false; // a new camera, with its own clearance
         cardClearance = null;

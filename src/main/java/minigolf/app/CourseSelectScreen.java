@@ -3,9 +3,13 @@ package minigolf.app;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import minigolf.classic.ClassicIndex;
+import minigolf.game.HighScores;
+import minigolf.game.Round;
 import minigolf.ui.Gui;
 import minigolf.ui.GuiInt;
 import minigolf.ui.GuiString;
@@ -16,11 +20,12 @@ import minigolf.ui.Panels;
 import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
 
 /**
- * Choosing what to play: the rounds, then the single holes for practice, each with a preview
- * rendered by the game's renderer (one a frame, so the screen stays responsive), then the classic
- * tracks imported with {@code minigolf import-tracks} (searched by name and category, the human
- * average and best beside the players' own best). The folders are read again each time the
- * screen opens: a course the editor saved a moment ago is listed.
+ * Choosing what to play: the rounds (holes, par, the best round anyone played), then the single
+ * holes for practice, each with a preview rendered by the game's renderer (one a frame, so the
+ * screen stays responsive), its par where it is a hole of a round, and the best score on it, then
+ * the classic tracks imported with {@code minigolf import-tracks} (searched by name and category,
+ * the human average and best beside the players' own best). The folders are read again each time
+ * the screen opens: a course the editor saved a moment ago is listed.
  */
 final class CourseSelectScreen extends GameScreen {
     /** Classic tracks listed a page at a time. */
@@ -28,6 +33,11 @@ final class CourseSelectScreen extends GameScreen {
     static final String[] CATEGORIES = {"all", "basic", "traditional", "modern", "hio", "short", "long"};
     private List<CourseFolders.CourseEntry> courses;
     private List<CourseFolders.RoundEntry> rounds;
+    /** Each course file that is a hole of a round: the round and the hole's number (0-based) and par. */
+    private Map<Path, List<RoundHole>> holes;
+
+    private record RoundHole(Round round, int hole) {
+    }
     private ClassicIndex.Index classic;
     private String classicProblem;
     private final GuiString classicSearch = new GuiString(64);
@@ -42,6 +52,7 @@ final class CourseSelectScreen extends GameScreen {
     public void show() {
         courses = null;
         rounds = null;
+        holes = null;
         classic = null;
         classicProblem = null;
     }
@@ -88,7 +99,16 @@ final class CourseSelectScreen extends GameScreen {
 
     @Override
     public void update(double elapsed) {
-        app.thumbnails().renderNext(courses(), 200, 120);
+        // The rounds' previews (their first hole) first, then the single courses'; one a frame.
+        List<CourseFolders.CourseEntry> previews = new ArrayList<>();
+        for (CourseFolders.RoundEntry r : rounds()) previews.add(new CourseFolders.CourseEntry(r.round().name(), firstHole(r), false));
+        previews.addAll(courses());
+        app.thumbnails().renderNext(previews, 200, 120);
+    }
+
+    /** The file of a round's first hole (its preview stands for the round). */
+    private static Path firstHole(CourseFolders.RoundEntry r) {
+        return r.file().toAbsolutePath().getParent().resolve(r.round().hole(0).course()).normalize();
     }
 
     @Override
@@ -97,10 +117,16 @@ final class CourseSelectScreen extends GameScreen {
         Gui.setNextWindowSize(Math.min(w - 40, 760), Math.min(h - 40, 560));
         Gui.begin("Select course", GuiWindowFlags.NoCollapse | GuiWindowFlags.NoMove | GuiWindowFlags.NoResize);
         Panels.heading("Rounds");
+        HighScores scores = app.files().highScores();
         for (CourseFolders.RoundEntry r : rounds()) {
-            String label = String.format(Locale.ROOT, "%s  (%d holes, par %d)##%s", r.round().name(), r.round().size(),
-                    r.round().par(), r.file());
-            if (Gui.button(label, 420, 0)) {
+            HighScores.Best best = scores == null ? null : scores.bestRound(r.round().name());
+            String label = String.format(Locale.ROOT, "%s  -  %d holes, par %d  -  %s##%s", r.round().name(), r.round().size(),
+                    r.round().par(), best == null ? "not played yet" : "best " + best.score() + " (" + best.name() + ")", r.file());
+            int tex = app.thumbnails().texture(firstHole(r));
+            boolean chosen = tex != 0 ? Gui.imageButton(tex, 100, 60) : Gui.button("...##" + r.file(), 108, 68);
+            Gui.sameLine();
+            chosen |= Gui.button(label, 520, 68);
+            if (chosen) {
                 app.play().chooseRound(r.round());
                 app.setScreen(app.screens().newGame());
             }
@@ -129,12 +155,41 @@ final class CourseSelectScreen extends GameScreen {
                 if (i > 0) Gui.sameLine(i * (cell + Gui.itemSpacingX()));
                 Gui.text(c.name() + (c.own() ? " (yours)" : ""));
             }
+            for (int i = 0; i < three.size(); i++) {
+                if (i > 0) Gui.sameLine(i * (cell + Gui.itemSpacingX()));
+                Gui.textDisabled(parAndBest(three.get(i), scores));
+            }
         }
         Gui.separator();
         classicSection();
         Gui.separator();
         if (Gui.button("Back")) app.setScreen(app.screens().mainMenu());
         Gui.end();
+    }
+
+    /** "par 3  -  best 2 (Ann)": the par where the course is a hole of a round, the best anyone scored on it (in a round or alone). */
+    String parAndBest(CourseFolders.CourseEntry c, HighScores scores) {
+        List<RoundHole> in = holesByFile().getOrDefault(c.file().toAbsolutePath().normalize(), List.of());
+        String par = in.isEmpty() ? "no par" : "par " + in.get(0).round().hole(in.get(0).hole()).par();
+        HighScores.Best best = scores == null ? null : scores.bestOnHole(HighScores.practiceKey(c.name()), 0);
+        for (RoundHole h : in) {
+            HighScores.Best b = scores == null ? null : scores.bestOnHole(h.round().name(), h.hole());
+            if (b != null && (best == null || b.score() < best.score())) best = b;
+        }
+        return par + "  -  " + (best == null ? "not played yet" : "best " + best.score() + " (" + best.name() + ")");
+    }
+
+    private Map<Path, List<RoundHole>> holesByFile() {
+        if (holes != null) return holes;
+        holes = new HashMap<>();
+        for (CourseFolders.RoundEntry r : rounds()) {
+            Path folder = r.file().toAbsolutePath().getParent();
+            for (int i = 0; i < r.round().size(); i++) {
+                Path course = folder.resolve(r.round().hole(i).course()).normalize();
+                holes.computeIfAbsent(course, k -> new ArrayList<>()).add(new RoundHole(r.round(), i));
+            }
+        }
+        return holes;
     }
 
     private void classicSection() {
@@ -145,8 +200,9 @@ final class CourseSelectScreen extends GameScreen {
             return;
         }
         if (index.tracks().isEmpty()) {
-            Gui.textWrapped("None imported: minigolf import-tracks DIR reads the classic game's .track files into "
-                    + CourseFolders.classicFolder(app.files().store(), app.settings()) + " (docs/classic-tracks.md).");
+            // No folder named here: a player's view shows no file paths (where they go: docs/classic-tracks.md).
+            Gui.textWrapped("None imported yet: the command minigolf import-tracks reads the classic game's track files"
+                    + " (see docs/classic-tracks.md).");
             return;
         }
         Gui.setNextItemWidth(220);
@@ -194,7 +250,7 @@ final class CourseSelectScreen extends GameScreen {
             app.play().selectCourse(e.course(), scoreKey(e));
             app.setScreen(app.screens().mainMenu());
         } catch (minigolf.course.CourseException ex) {
-            app.say(ex.getMessage());
+            app.say("That track could not be loaded: " + ex.problem());
         }
     }
 
@@ -203,7 +259,7 @@ final class CourseSelectScreen extends GameScreen {
             app.play().selectCourse(c.file());
             app.setScreen(app.screens().mainMenu());
         } catch (minigolf.course.CourseException e) {
-            app.say(e.getMessage());
+            app.say("That course could not be loaded: " + e.problem());
         }
     }
 

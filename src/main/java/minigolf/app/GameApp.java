@@ -46,6 +46,9 @@ public final class GameApp implements WindowApp {
     public record Screens(MainMenuScreen mainMenu, CourseSelectScreen courseSelect, NewGameScreen newGame,
                           PlayingScreen playing, TestBotScreen testBot, PauseScreen pause, SettingsScreen settings,
                           ScorecardScreen scorecard, RoundCardScreen roundCard, ReplayScreen replay, HelpScreen help) {
+        List<Screen> all() {
+            return List.of(mainMenu, courseSelect, newGame, playing, testBot, pause, settings, scorecard, roundCard, replay, help);
+        }
     }
 
     private final Options options;
@@ -72,7 +75,9 @@ public final class GameApp implements WindowApp {
         this.files = new PlayerFiles(options.store(), this::say);
         this.settings = files.loadedSettings();
         // Shown until dismissed (a timed message would expire before the window exists).
-        if (files.settingsProblem() != null) toasts.setNotice("Settings ignored, the defaults are used: " + files.settingsProblem());
+        if (files.settingsProblem() != null) {
+            toasts.setNotice("Your settings could not be read (" + files.settingsProblem() + "); the defaults are used");
+        }
         this.play = new PlaySession(world, options.coursePath(), options.scriptedShots(), files, this::say);
         this.screens = new Screens(new MainMenuScreen(this), new CourseSelectScreen(this), new NewGameScreen(this),
                 new PlayingScreen(this), new TestBotScreen(this), new PauseScreen(this), new SettingsScreen(this),
@@ -117,7 +122,7 @@ public final class GameApp implements WindowApp {
                     play.cancelBot();
                     thumbnails.close();
                     scene.close();
-                    screens.replay().dispose();
+                    for (Screen s : screens.all()) s.dispose();
                 }
             }
         }
@@ -349,13 +354,26 @@ public final class GameApp implements WindowApp {
     public void applySettings(UserSettings newSettings) {
         UserSettings old = settings;
         settings = newSettings;
-        window.setVsync(settings.vsync() && options.frames() <= 0);
-        if (settings.fullscreen() != window.isFullscreen()) window.toggleFullscreen();
-        if (!window.isFullscreen() && settings.windowWidth() > 0
-                && (settings.windowWidth() != old.windowWidth() || settings.windowHeight() != old.windowHeight())) {
-            glfwSetWindowSize(window.handle(), settings.windowWidth(), settings.windowHeight());
+        if (window != null) { // before the window opens (tests), only the settings change
+            window.setVsync(settings.vsync() && options.frames() <= 0);
+            if (settings.fullscreen() != window.isFullscreen()) window.toggleFullscreen();
+            if (!window.isFullscreen() && settings.windowWidth() > 0
+                    && (settings.windowWidth() != old.windowWidth() || settings.windowHeight() != old.windowHeight())) {
+                glfwSetWindowSize(window.handle(), settings.windowWidth(), settings.windowHeight());
+            }
         }
         scene.applySettings(old, settings);
+        files.saveSettings(settings);
+    }
+
+    /** Keeps the names typed in New game (in the settings file), to be offered the next time. */
+    void rememberPlayerNames(List<String> names) {
+        if (names.equals(settings.playerNames())) return;
+        try {
+            settings = settings.withPlayerNames(names);
+        } catch (IllegalArgumentException e) {
+            return; // a name the settings cannot keep (the game itself refused it already)
+        }
         files.saveSettings(settings);
     }
 

@@ -83,8 +83,8 @@ abstract class GameScreen implements Screen {
         return ball(game, game.currentPlayer());
     }
 
-    /** A name tag drawn: the player's name, where its plate's bottom centre stands (interface pixels), whether gold. */
-    record NameTag(String name, float x, float y, boolean current) {
+    /** A name tag drawn: the player's name, where its plate's bottom centre stands and its size (interface pixels), whether gold. */
+    record NameTag(String name, float x, float y, float width, float height, boolean current) {
     }
 
     /** The tags drawn by the last {@link #nameTags()} (for tests). */
@@ -94,24 +94,46 @@ abstract class GameScreen implements Screen {
         return lastTags;
     }
 
-    /** Draws a name tag over every ball in play, the current player's in gold (for the screens that show the game). */
+    /**
+     * Draws a name tag over every ball in play, the current player's in gold (for the screens that
+     * show the game); tags that would cover each other are stacked (NameTagLayout).
+     */
     void nameTags() {
         List<NameTag> tags = new ArrayList<>();
         lastTags = tags;
         Game game = app.play().game();
         if (game == null) return;
         double lift = 3.2 * minigolf.render.ObjectsPass.visualBallRadius();
+        List<Integer> seats = new ArrayList<>();
+        List<float[]> at = new ArrayList<>();
         for (int i = 0; i < game.players().size(); i++) {
             BallView b = ball(game, i);
             if (b == null) continue;
             float[] p = app.toScreen(b.x(), b.y(), b.z() + lift);
             if (p == null) continue;
-            boolean current = i == game.currentPlayer() && !game.isOver();
+            seats.add(i);
+            at.add(p);
+        }
+        int n = seats.size(), first = -1;
+        float[] x = new float[n], y = new float[n], w = new float[n], h = new float[n];
+        for (int k = 0; k < n; k++) {
+            float[] plate = minigolf.ui.Gui.labelPlate(game.players().get(seats.get(k)).name());
+            x[k] = at.get(k)[0];
+            y[k] = at.get(k)[1];
+            w[k] = plate[0];
+            h[k] = plate[1];
+            if (seats.get(k) == game.currentPlayer() && !game.isOver()) first = k;
+        }
+        float[] placed = NameTagLayout.place(x, y, w, h, first);
+        for (int k = 0; k < n; k++) {
+            int i = seats.get(k);
+            boolean current = k == first;
             float[] c = PlayerColors.of(i);
             int text = current ? abgr(0.1f, 0.08f, 0.02f, 1f) : abgr(c[0], c[1], c[2], 1f);
             int plate = current ? abgr(1f, 0.82f, 0.2f, 0.92f) : abgr(0.08f, 0.1f, 0.08f, 0.72f);
-            minigolf.ui.Gui.getBackgroundDrawList().addLabel(p[0], p[1], text, plate, game.players().get(i).name());
-            tags.add(new NameTag(game.players().get(i).name(), p[0], p[1], current));
+            String name = game.players().get(i).name();
+            minigolf.ui.Gui.getBackgroundDrawList().addLabel(x[k], placed[k], text, plate, name);
+            tags.add(new NameTag(name, x[k], placed[k], w[k], h[k], current));
         }
     }
 

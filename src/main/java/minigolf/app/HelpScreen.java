@@ -21,6 +21,7 @@ final class HelpScreen extends GameScreen {
             {"Reset the camera", "R"},
             {"Skip the rolling ball", "SPACE"},
             {"Height colours", "H"},
+            {"Practice mode (type a shot's velocity, the ball's physics)", "V"},
             {"Pause / back", "ESC"},
             {"Full screen", "F11"},
             {"This help", "F1"},

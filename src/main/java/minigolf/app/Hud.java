@@ -21,8 +21,9 @@ import minigolf.ui.PlayerColors;
 
 /**
  * The HUD while a game is on, over the playing screen and the screens opened from it: the round,
- * hole and par, whose turn, every player's strokes, the power while aiming, the loft, a details
- * readout (position, velocity, acceleration, slope, friction), and a bot's progress with Cancel.
+ * hole and par, whose turn, every player's strokes, the power while aiming, the loft, in practice
+ * mode a details readout (position, velocity, acceleration, slope, friction), and a bot's progress
+ * with Cancel.
  */
 final class Hud {
     private final GameApp app;
@@ -47,8 +48,7 @@ final class Hud {
         if (g != null) {
             int cur = g.currentPlayer();
             if (cur >= 0) {
-                Player p = g.players().get(cur);
-                Gui.textColored(1f, 0.85f, 0.3f, 1f, p.name() + (p.isBot() ? " (bot: " + p.bot() + ")" : "") + " to play");
+                Gui.textColored(1f, 0.85f, 0.3f, 1f, turnLine(g.players().get(cur)));
             }
             Gui.beginTable("##players", 2, GuiTableFlags.SizingFixedFit); // names of any width line up
             for (int i = 0; i < g.players().size(); i++) {
@@ -61,7 +61,7 @@ final class Hud {
                 Gui.text(String.format(Locale.ROOT, "strokes %d%s%s%s", s.total(),
                         rg != null ? " (par " + rg.hole().par() + ")" : "",
                         s.penalties() > 0 ? " (" + s.penalties() + " penalty)" : "",
-                        s.status() == PlayerStatus.PLAYING ? "" : ", " + s.status().jsonName()));
+                        s.status() == PlayerStatus.PLAYING ? "" : ", " + words(s.status())));
             }
             Gui.endTable();
         }
@@ -69,9 +69,14 @@ final class Hud {
             double max = play.world().physics().maxSpeed();
             Gui.progressBar((float) (aimSpeed / max), 260, 0, String.format(Locale.ROOT, "power %.0f%%", 100 * aimSpeed / max));
         }
-        if (g != null && !g.isOver()) Gui.text(Loft.describe(loftDegrees) + "   (wheel while aiming, Up/Down)");
-        if (g != null) Gui.checkbox("details", details);
-        BallReadout r = details.get() ? readout() : null;
+        // The stroke being set up, on a person's turn only (a bot chooses its own).
+        if (g != null && !g.isOver() && g.currentPlayer() >= 0 && !g.players().get(g.currentPlayer()).isBot()) {
+            Gui.text(Loft.describe(loftDegrees) + "  -  mouse wheel or Up / Down to " + (loftDegrees == 0 ? "chip" : "change"));
+        }
+        // The physics readout is for practice (expert) mode: a player's HUD shows no coordinates.
+        boolean practice = app.settings().practice();
+        if (g != null && practice) Gui.checkbox("details", details);
+        BallReadout r = practice && details.get() ? readout() : null;
         if (r != null) {
             Gui.separator();
             Gui.text(String.format(Locale.ROOT, "position  (%.3f, %.3f, %.3f) m", r.x(), r.y(), r.z()));
@@ -87,12 +92,26 @@ final class Hud {
             PlanOverlay.draw(Gui.getBackgroundDrawList(), bot.plan(), p -> app.toScreen(p[0], p[1]));
             Gui.setNextWindowPos(w * 0.5f, h - 60, GuiCond.Always, 0.5f, 1f);
             Gui.begin("##bot", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
-            Gui.text("Bot thinking: " + bot.message());
+            Game game = play.game();
+            String who = game != null && game.currentPlayer() >= 0 ? game.players().get(game.currentPlayer()).name() : "The bot";
+            // The bot's phase and simulations are for practice mode; a player sees that it is thinking.
+            Gui.text(who + " is thinking" + (app.settings().practice() ? ": " + bot.message() : "..."));
             Gui.progressBar((float) bot.progress(), 320, 0);
             Gui.sameLine();
             if (Gui.button("Cancel")) play.cancelBot();
             Gui.end();
         }
+    }
+
+    /** "Ann to play"; a bot says it is one once ("Robo to play (computer)"; "Bot (planner) to play" as it is). */
+    static String turnLine(Player p) {
+        boolean named = p.name().toLowerCase(java.util.Locale.ROOT).contains("bot");
+        return p.name() + " to play" + (p.isBot() && !named ? " (computer)" : "");
+    }
+
+    /** A player's status in words: "holed", "picked up". */
+    static String words(PlayerStatus s) {
+        return s.jsonName().replace('-', ' ');
     }
 
     /** The ball under the HUD: the rolling one, else the current player's. */

@@ -13,7 +13,7 @@ import minigolf.ui.Panels;
 
 /** The main menu: play, choose a round or a hole, watch a bot, create a course, load a saved game, settings, help, quit. */
 final class MainMenuScreen extends GameScreen {
-    private final GuiInt testBot = new GuiInt(0);
+    private final GuiInt testBot = new GuiInt(Math.max(0, BotCatalog.levels().indexOf(BotCatalog.DEFAULT_OPPONENT)));
 
     MainMenuScreen(GameApp app) {
         super(app);
@@ -30,16 +30,18 @@ final class MainMenuScreen extends GameScreen {
         float bw = 300, bh = 0;
         if (Gui.button("Play", bw, bh)) app.setScreen(app.screens().newGame());
         if (Gui.button("Rounds and practice holes", bw, bh)) app.setScreen(app.screens().courseSelect());
-        List<String> botNames = BotCatalog.names();
-        if (Gui.button("Test bot", bw, bh) && !botNames.isEmpty()) {
+        // Watch an opponent play the hole alone: the levels; in practice mode every bot by its algorithm's name.
+        List<String> botNames = app.settings().practice() ? BotCatalog.names() : BotCatalog.levels();
+        if (Gui.button("Watch a computer player", bw, bh) && !botNames.isEmpty()) {
             String bot = botNames.get(Math.min(testBot.get(), botNames.size() - 1));
-            app.startGame(List.of(Player.bot(bot, bot)));
+            String name = "Bot (" + BotCatalog.label(bot) + ")";
+            app.startGame(List.of(Player.bot(name, bot)));
             app.setScreen(app.screens().testBot());
-            app.say("watching " + bot + " play; ESC stops");
+            app.say("Watching " + name + " play; ESC stops");
         }
         Gui.sameLine();
         Gui.setNextItemWidth(120);
-        Gui.combo("##testbot", testBot, botNames.toArray(new String[0]));
+        Gui.combo("##testbot", testBot, botNames.stream().map(BotCatalog::label).toArray(String[]::new));
         if (Gui.button("Create course", bw, bh)) app.createCourse();
         List<Path> saved = app.savedGames();
         if (!saved.isEmpty()) {

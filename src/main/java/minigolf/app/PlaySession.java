@@ -4,7 +4,6 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.List;
-import java.util.Locale;
 import java.util.function.Consumer;
 import minigolf.course.CourseException;
 import minigolf.game.AimModel;
@@ -22,6 +21,7 @@ import minigolf.game.SavedRounds;
 import minigolf.game.ShotPlanner;
 import minigolf.game.ShotRecord;
 import minigolf.game.StrokeAnimator;
+import minigolf.game.StrokeNews;
 import minigolf.game.UserSettings;
 import minigolf.physics.TrajectoryListener;
 import minigolf.physics.World;
@@ -135,13 +135,18 @@ final class PlaySession {
             round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
             showHole();
             say.accept(roundToPlay.name() + ", hole 1 of " + roundToPlay.size() + " (par " + roundToPlay.hole(0).par() + "): "
-                    + players.get(0).name() + " tees off.");
+                    + teeOff(players.get(0)));
             return;
         }
         round = null;
         // The "realistic" noise, drawn from a new seed each game (saved with the game, so a resumed game goes on alike).
         game = new Game(world, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
-        say.accept(players.get(0).name() + " tees off. Drag back from the ball to aim; ESC pauses.");
+        say.accept(teeOff(players.get(0)));
+    }
+
+    /** "Ann tees off: drag back from the ball to aim, release to hit"; a bot only tees off (nobody aims for it). */
+    static String teeOff(Player first) {
+        return first.name() + " tees off" + (first.isBot() ? "." : ": drag back from the ball to aim, release to hit; ESC pauses.");
     }
 
     /** The round's next hole; false after the last (its final card is due). */
@@ -174,7 +179,7 @@ final class PlaySession {
         roundToPlay = null;
         round = null;
         game = null;
-        say.accept("course: " + world.course().name());
+        say.accept(world.course().name() + " chosen: Play starts it");
     }
 
     /** Resumes a saved round or game where it was left, a stroke in flight included; false (and said why) when it cannot. */
@@ -187,7 +192,7 @@ final class PlaySession {
                 roundToPlay = round.round();
                 showHole();
                 resumeStroke();
-                say.accept("loaded " + file.getFileName() + ": " + round.round().name() + ", hole " + (round.holeIndex() + 1));
+                say.accept("Round resumed: " + round.round().name() + ", hole " + (round.holeIndex() + 1) + " of " + round.round().size());
                 return true;
             }
             SavedGames.Loaded loaded = save.game();
@@ -197,10 +202,10 @@ final class PlaySession {
             coursePath = null;
             game = loaded.resume();
             resumeStroke();
-            say.accept("loaded " + file.getFileName());
+            say.accept("Game resumed: " + world.course().name());
             return true;
         } catch (SaveGameException e) {
-            say.accept(e.getMessage());
+            say.accept("That save could not be loaded: " + e.problem());
             return false;
         }
     }
@@ -250,10 +255,14 @@ final class PlaySession {
             if (animator.isFinished()) {
                 lastStroke = game.completeShot();
                 animator = null;
-                say.accept(game.players().get(lastStroke.player()).name() + ": " + describe(lastStroke));
+                int seat = lastStroke.player();
+                say.accept(StrokeNews.of(lastStroke, game.player(seat), game.players().get(seat).name(),
+                        game.players().size() > 1, round != null ? round.hole().par() : null,
+                        world.hole().position().x(), world.hole().position().y()));
                 if (game.isOver()) {
                     if (round != null) files.recordScores(round, round.finishHole());
                     else if (classicKey != null) files.recordClassic(classicKey, game);
+                    else files.recordPractice(game);
                     return Progress.OVER;
                 }
                 progress = Progress.STROKE_ENDED;
@@ -294,16 +303,6 @@ final class PlaySession {
         if (botTurn != null) botTurn.cancel();
         // A cancelled worker may still be ending: its bot must not be asked again.
         botSeats.clear();
-    }
-
-    private static String describe(ShotRecord r) {
-        return switch (r.outcome()) {
-            case HOLED -> "in the hole!";
-            case STOPPED -> String.format(Locale.ROOT, "stopped at (%.2f, %.2f)", r.endX(), r.endY());
-            case WATER -> "in the water: one penalty stroke, back to where the stroke began";
-            case OUT -> "out of bounds: one penalty stroke, back to where the stroke began";
-            case TIMEOUT -> "still rolling after the time limit; it stays where it is";
-        };
     }
 
     /** The round's current hole is what is played and shown. */

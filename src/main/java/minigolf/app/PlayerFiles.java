@@ -7,7 +7,9 @@ import java.time.LocalDate;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
 import minigolf.game.AudioSettings;
@@ -39,17 +41,24 @@ final class PlayerFiles {
     PlayerFiles(SettingsStore store, Consumer<String> say) {
         this.store = store;
         this.say = say;
-        String[] problem = new String[1];
         store.removeStaleTemporaries();
-        loadedSettings = store.loadOrDefaults(problem);
-        settingsProblem = problem[0];
-        if (problem[0] != null) System.err.println("minigolf: settings ignored, the defaults are used: " + problem[0]);
+        UserSettings settings;
+        String problem = null;
+        try {
+            settings = store.load();
+        } catch (SaveGameException e) {
+            settings = UserSettings.DEFAULTS;
+            problem = e.detail(); // the player's view names no file; the terminal's line does
+            System.err.println("minigolf: settings ignored, the defaults are used: " + e.getMessage());
+        }
+        loadedSettings = settings;
+        settingsProblem = problem;
         AudioSettings volumes;
         try {
             volumes = AudioSettings.load(AudioSettings.file(store.directory()));
         } catch (SaveGameException e) {
             volumes = AudioSettings.DEFAULTS;
-            say.accept("volumes ignored: " + e.getMessage());
+            say.accept("Your sound volumes could not be read (" + e.problem() + "); the defaults are used");
         }
         audio = volumes;
         HighScores scores;
@@ -57,7 +66,7 @@ final class PlayerFiles {
             scores = HighScores.load(HighScores.file(store.directory()));
         } catch (SaveGameException e) {
             scores = null;
-            say.accept("high scores ignored: " + e.getMessage());
+            say.accept("The high scores could not be read (" + e.problem() + "); they are not kept this time");
         }
         highScores = scores;
     }
@@ -72,7 +81,7 @@ final class PlayerFiles {
         return loadedSettings;
     }
 
-    /** Why the settings file was ignored at start, or null. */
+    /** Why the settings file was ignored at start (without the file's name), or null. */
     String settingsProblem() {
         return settingsProblem;
     }
@@ -81,7 +90,7 @@ final class PlayerFiles {
         try {
             store.save(s);
         } catch (SaveGameException e) {
-            say.accept("settings not saved: " + e.getMessage());
+            say.accept("Your settings could not be saved: " + e.problem());
         }
     }
 
@@ -94,7 +103,7 @@ final class PlayerFiles {
         try {
             v.save(AudioSettings.file(store.directory()));
         } catch (SaveGameException e) {
-            say.accept("volumes not saved: " + e.getMessage());
+            say.accept("Your sound volumes could not be saved: " + e.problem());
         }
     }
 
@@ -111,10 +120,25 @@ final class PlayerFiles {
         try {
             highScores.save(HighScores.file(store.directory()));
         } catch (SaveGameException e) {
-            say.accept("scores not saved: " + e.getMessage());
+            say.accept("The scores could not be saved: " + e.problem());
             return;
         }
-        if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+        if (!news(news).isEmpty()) say.accept(news(news));
+    }
+
+    /** A finished single-course game's scores: personal bests on that course (its practice "round"); saved at once. */
+    void recordPractice(Game game) {
+        if (highScores == null) return;
+        int[] scores = game.scorecard().lines().stream().mapToInt(minigolf.game.ScoreLine::score).toArray();
+        List<HighScores.Achievement> news = highScores.recordHole(HighScores.practiceKey(game.world().course().name()), 0,
+                game.players(), scores);
+        try {
+            highScores.save(HighScores.file(store.directory()));
+        } catch (SaveGameException e) {
+            say.accept("The scores could not be saved: " + e.problem());
+            return;
+        }
+        if (!news(news).isEmpty()) say.accept(news(news));
     }
 
     /**
@@ -138,10 +162,25 @@ final class PlayerFiles {
         try {
             highScores.save(HighScores.file(store.directory()));
         } catch (SaveGameException e) {
-            say.accept("scores not saved: " + e.getMessage());
+            say.accept("The scores could not be saved: " + e.problem());
             return;
         }
-        if (!news.isEmpty()) say.accept(String.join("; ", news.stream().map(a -> a.name() + ": " + a.what()).toList()));
+        if (!news(news).isEmpty()) say.accept(news(news));
+    }
+
+    /**
+     * What the high scores say, a player at a time: "Ann: personal best on hole 3 (2, was 3), high
+     * score #1  ·  Bob: first round 57". A hole in one is left out: the stroke's own message said it.
+     */
+    static String news(List<HighScores.Achievement> news) {
+        Map<String, List<String>> byPlayer = new LinkedHashMap<>();
+        for (HighScores.Achievement a : news) {
+            if (a.what().equals(HighScores.HOLE_IN_ONE)) continue;
+            byPlayer.computeIfAbsent(a.name(), k -> new ArrayList<>()).add(a.what());
+        }
+        List<String> out = new ArrayList<>();
+        byPlayer.forEach((name, what) -> out.add(name + ": " + String.join(", ", what)));
+        return String.join("  ·  ", out);
     }
 
     /** The best score any of {@code names} has on classic track {@code key}, or null. */
@@ -163,9 +202,12 @@ final class PlayerFiles {
                     + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".json");
             if (round != null) SavedRounds.save(round, file);
             else SavedGames.save(game, file);
-            say.accept("saved to " + file);
-        } catch (IOException | SaveGameException e) {
-            say.accept("not saved: " + e.getMessage());
+            say.accept(round != null ? "Round saved: Load saved game in the main menu goes on with it"
+                    : "Game saved: Load saved game in the main menu goes on with it");
+        } catch (SaveGameException e) {
+            say.accept("The game could not be saved: " + e.problem());
+        } catch (IOException e) {
+            say.accept("The game could not be saved: " + e.getMessage());
         }
     }
 

@@ -1,8 +1,8 @@
 package minigolf.app;
 
-import java.util.Arrays;
 import java.util.Locale;
 import minigolf.game.AimGuide;
+import minigolf.game.AimGuideWorker;
 import minigolf.game.AimModel;
 import minigolf.game.Game;
 import minigolf.game.Loft;
@@ -23,7 +23,8 @@ import static org.lwjgl.glfw.GLFW.*;
  * Playing a hole: the HUD, the ball in play followed by the camera, and the player's stroke. A
  * left-drag from the ball aims (slingshot: drag back, release to hit; right click cancels), the
  * wheel while aiming or Up / Down sets the loft, SPACE skips the rolling ball to its end, ESC
- * pauses. The Shot panel hits a typed velocity. When the hole is over its card is shown.
+ * pauses. In practice mode (V, or Settings) the Shot panel hits a typed velocity. When the hole is
+ * over its card is shown.
  */
 class PlayingScreen extends GameScreen {
     /** How near the ball (pixels at 900 px high) a press must be to start an aim. */
@@ -36,9 +37,8 @@ class PlayingScreen extends GameScreen {
     private int loft;
     /** An aim to show as soon as a human player can aim (play --aim, for screenshots), or null. */
     private double[] pendingAim;
-    /** The aim guide's path for {@link #guideKey} (x, y, vx, vy, vz), reused while the aim holds (AimView compares it by identity). */
-    private float[] guidePath;
-    private double[] guideKey;
+    /** Works out the aim guide off the render thread (made at the first aim). */
+    private AimGuideWorker guides;
     // The typed shot.
     private final GuiDouble typedVx = new GuiDouble(1.0);
     private final GuiDouble typedVy = new GuiDouble(0.0);
@@ -93,7 +93,12 @@ class PlayingScreen extends GameScreen {
     public void render(float w, float h) {
         nameTags();
         app.hud().render(w, h, aimSpeed(), loft);
-        if (canAim() && app.play().botTurn() == null) shotPanel(w, h);
+        if (showsShotPanel()) shotPanel(w, h);
+    }
+
+    /** The typed-velocity Shot panel is lab furniture: practice mode only, on a person's turn. */
+    boolean showsShotPanel() {
+        return app.settings().practice() && canAim() && app.play().botTurn() == null;
     }
 
     /** The aim being dragged: speed in m/s, or negative when not aiming. */
@@ -148,14 +153,20 @@ class PlayingScreen extends GameScreen {
                 app.settings().aimGuide() ? guidePath(game, s.x(), s.y(), v) : null);
     }
 
-    /** The aim guide (AimGuide: the real engine, the game's settings; a chip's flight too), recomputed when the aim changes. */
+    /**
+     * The aim guide (AimGuide: the real engine, the game's settings, a chip's flight too), the whole
+     * putt until it stops or drops: worked out on the guide's own thread, so a frame never waits for
+     * it; until the new aim's path is ready the last one shows (the same array, so the arrow is not rebuilt).
+     */
     private float[] guidePath(Game game, double x, double y, double[] v) {
-        double[] key = {x, y, v[0], v[1], v[2]};
-        if (!Arrays.equals(key, guideKey)) {
-            guidePath = AimGuide.preview(game.world(), game.settings(), x, y, v[0], v[1], v[2], AimGuide.SECONDS).points();
-            guideKey = key;
-        }
-        return guidePath;
+        if (guides == null) guides = new AimGuideWorker();
+        AimGuide g = guides.guide(game.world(), game.settings(), x, y, v[0], v[1], v[2]);
+        return g == null ? null : g.points();
+    }
+
+    @Override
+    public void dispose() {
+        if (guides != null) guides.close();
     }
 
     @Override
@@ -164,6 +175,12 @@ class PlayingScreen extends GameScreen {
             case GLFW_KEY_ESCAPE -> app.setScreen(app.screens().pause());
             case GLFW_KEY_UP, GLFW_KEY_DOWN -> loft = Loft.step(loft, key == GLFW_KEY_UP ? 1 : -1);
             case GLFW_KEY_SPACE -> app.play().skipAnimation(); // the same stroke, run to its end
+            case GLFW_KEY_V -> { // practice mode: the typed-velocity Shot panel and the physics readout
+                boolean on = !app.settings().practice();
+                app.applySettings(app.settings().withPractice(on));
+                app.say(on ? "Practice mode: type a shot's velocity, see the ball's physics (V turns it off)"
+                        : "Practice mode off");
+            }
             default -> {
                 return false;
             }

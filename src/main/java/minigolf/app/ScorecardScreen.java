@@ -35,7 +35,7 @@ final class ScorecardScreen extends GameScreen {
                 Gui.tableSetColumnIndex(4);
                 Gui.text(String.valueOf(l.score()));
                 Gui.tableSetColumnIndex(5);
-                Gui.text(l.status().jsonName());
+                Gui.text(Hud.words(l.status()));
             }
             Gui.endTable();
         }

@@ -3,7 +3,6 @@ package minigolf.app;
 import minigolf.game.AudioSettings;
 import minigolf.game.Game;
 import minigolf.game.UserSettings;
-import minigolf.physics.Integrator;
 import minigolf.ui.Gui;
 import minigolf.ui.GuiBool;
 import minigolf.ui.GuiInt;
@@ -14,17 +13,15 @@ import minigolf.ui.Screen;
 import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
 
 /**
- * The Settings screen: window, graphics, sound, mouse, the game's rules and the Advanced physics;
- * applied together, checked first. The course itself is never changed here (its values belong to
+ * The Settings screen: the game's rules, practice mode, window, graphics, sound and mouse; applied
+ * together, checked first. Physics (integrator, step, gravity, friction) is not a player's setting:
+ * it belongs to the course file, the editor and the command line. The course itself is never changed here (its values belong to
  * the course file and the editor): Apply once rebuilt the course and lost its obstacles.
  */
 final class SettingsScreen extends GameScreen {
-    private static final String[] INTEGRATORS = {"euler", "rk2", "rk4"};
     /** Where Apply and Cancel go back to. */
     private Screen back;
     private String formError;
-    private final GuiInt integrator = new GuiInt(2);
-    private final GuiInt stepsPerSecond = new GuiInt(60);
     private final GuiBool vsync = new GuiBool(true);
     private final GuiBool realistic = new GuiBool(false);
     private final GuiBool hideFriction = new GuiBool(false);
@@ -35,7 +32,7 @@ final class SettingsScreen extends GameScreen {
     private final GuiBool aimGuide = new GuiBool(true);
     private final GuiBool antiAliasing = new GuiBool(false);
     private final GuiBool fullscreen = new GuiBool(false);
-    private final GuiBool advanced = new GuiBool(false);
+    private final GuiBool practice = new GuiBool(false);
     private final GuiInt graphics = new GuiInt(0);
     private final GuiInt windowSize = new GuiInt(0);
     /** The window sizes offered (0 x 0: the default 1280 x 720), with the player's own size added if it is another. */
@@ -53,8 +50,7 @@ final class SettingsScreen extends GameScreen {
         back = returnTo;
         formError = null;
         UserSettings s = app.settings();
-        integrator.set(s.integrator().ordinal());
-        stepsPerSecond.set((int) Math.round(1 / s.dt()));
+        practice.set(s.practice());
         vsync.set(s.vsync());
         realistic.set(s.noisePosition() > 0 || s.noiseVelocity() > 0);
         hideFriction.set(s.hideFrictionFromBots());
@@ -85,17 +81,18 @@ final class SettingsScreen extends GameScreen {
     public void render(float w, float h) {
         Panels.centre(w, h);
         Gui.begin("Settings", Panels.PANEL);
-        Gui.textColored(1f, 0.85f, 0.3f, 1f, "Game (kept in your config folder)");
+        Panels.heading("Game");
         Gui.inputInt("Stroke limit", strokeLimit);
         Gui.sameLine(); // pairs on a row: the form fits a 720-pixel-high window
         Gui.checkbox("Aim guide (off: pro)", aimGuide);
-        if (Gui.isItemHovered()) Gui.setTooltip("While aiming, dots show where the ball goes in its first second");
+        if (Gui.isItemHovered()) Gui.setTooltip("While aiming, dots show where the putt goes until it stops or drops");
         Gui.checkbox("Realistic (every stroke strays a little, bots' too; next game)", realistic);
         Gui.checkbox("Hide friction from bots (they learn it from their strokes)", hideFriction);
+        Gui.checkbox("Practice mode: type a shot's velocity, see the ball's physics (V)", practice);
         Gui.setNextItemWidth(300);
         Gui.inputText("Classic tracks folder", classicFolder);
         if (Gui.isItemHovered()) Gui.setTooltip("What minigolf import-tracks wrote; empty: <config>/classic");
-        Gui.textColored(1f, 0.85f, 0.3f, 1f, "Display");
+        Panels.heading("Display");
         String[] sizeLabels = new String[sizes.length];
         for (int i = 0; i < sizes.length; i++) {
             sizeLabels[i] = sizes[i][0] == 0 ? "1280 x 720" : sizes[i][0] + " x " + sizes[i][1];
@@ -113,18 +110,11 @@ final class SettingsScreen extends GameScreen {
         Gui.inputInt("Frame limit (0 = none)", frameLimit);
         Gui.sameLine();
         Gui.checkbox("Vsync", vsync);
-        Gui.textColored(1f, 0.85f, 0.3f, 1f, "Sound and mouse");
+        Panels.heading("Sound and mouse");
         Gui.sliderFloat("Volume", masterVolume, 0f, 1f);
         Gui.sliderFloat("Effects", effectsVolume, 0f, 1f);
         Gui.sliderFloat("Ambience", ambienceVolume, 0f, 1f);
         Gui.sliderFloat("Mouse speed", mouseSpeed, 0.2f, 5f);
-        Gui.checkbox("Advanced: the physics integrator and step", advanced);
-        if (advanced.get()) { // on one row, so the form still fits a 720-pixel-high window
-            Gui.setNextItemWidth(90);
-            Gui.combo("Integrator", integrator, INTEGRATORS);
-            Gui.sameLine();
-            Gui.inputInt("Steps per second", stepsPerSecond);
-        }
         Gui.separator();
         if (formError != null) Gui.textColored(1f, 0.5f, 0.4f, 1f, formError);
         if (Gui.button("Apply")) apply();
@@ -143,9 +133,7 @@ final class SettingsScreen extends GameScreen {
     /** What "Apply" does: the form checked, applied and saved, and back to where Settings was opened. */
     void apply() {
         try {
-            int sps = stepsPerSecond.get();
-            UserSettings s = app.settings().withIntegrator(Integrator.values()[integrator.get()])
-                    .withDt(sps > 0 ? 1.0 / sps : 0).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
+            UserSettings s = app.settings().withPractice(practice.get()).withVsync(vsync.get()).withFrameLimit(frameLimit.get())
                     .withStrokeLimit(strokeLimit.get()).withMouseSpeed(mouseSpeed[0])
                     .withHideFrictionFromBots(hideFriction.get()).withClassicFolder(classicFolder.get().strip())
                     .withAimGuide(aimGuide.get()).withAntiAliasing(antiAliasing.get())

@@ -1,19 +1,33 @@
 package minigolf.bot;
 
+import java.util.function.LongSupplier;
+
 /**
  * Lets another thread (the game's cancel button) stop a bot, and carries the bot's wall-time
  * limit. Bots check it before every simulated shot, every few hundred steps inside a simulated
  * shot, and in any loop of their own that can run longer than a millisecond or so, so a cancel or
- * the end of the time limit takes effect within 50 ms.
+ * the end of the time limit takes effect within about a millisecond of the bot's own CPU time.
  *
  * <p>A cancel ends the bot with {@link BotCancelledException}; the end of the time limit is the
  * end of a budget ({@link BudgetExhaustedException}): the bot returns its best shot so far.
  */
 public final class CancellationToken {
+    /** The clock the time limit runs on, in nanoseconds: {@code System.nanoTime} unless a test gives its own. */
+    private final LongSupplier clock;
     private volatile boolean cancelled;
-    /** System.nanoTime() at which the time limit ends; meaningful only when {@link #limitNanos} >= 0. */
+    /** The clock's time at which the time limit ends; meaningful only when {@link #limitNanos} >= 0. */
     private volatile long deadline;
     private volatile long limitNanos = -1;
+
+    /** A token nobody cancels yet, with no time limit. */
+    public CancellationToken() {
+        this(System::nanoTime);
+    }
+
+    /** A token whose time limit (if one is set) runs on {@code nanoClock} (tests: a machine as slow as one likes). */
+    public CancellationToken(LongSupplier nanoClock) {
+        this.clock = nanoClock;
+    }
 
     /** A token nobody cancels, with no time limit. */
     public static CancellationToken none() {
@@ -33,7 +47,7 @@ public final class CancellationToken {
             throw new IllegalArgumentException("time limit must be > 0 seconds, got " + seconds);
         }
         long nanos = (long) Math.min(seconds * 1e9, Long.MAX_VALUE / 4.0);
-        deadline = System.nanoTime() + nanos;
+        deadline = clock.getAsLong() + nanos;
         limitNanos = nanos;
     }
 
@@ -47,12 +61,7 @@ public final class CancellationToken {
 
     /** Whether a time limit was set and has run out. */
     public boolean timeUp() {
-        return limitNanos >= 0 && System.nanoTime() - deadline >= 0;
-    }
-
-    /** Seconds until the time limit ends (at most 0 once it has), or +infinity when there is none. */
-    public double secondsLeft() {
-        return limitNanos >= 0 ? (deadline - System.nanoTime()) / 1e9 : Double.POSITIVE_INFINITY;
+        return limitNanos >= 0 && clock.getAsLong() - deadline >= 0;
     }
 
     /** The time limit in seconds, or NaN when there is none. */

@@ -2,6 +2,7 @@ package minigolf.classic;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,7 +13,7 @@ import minigolf.io.TextFiles;
 /**
  * The index {@code import-tracks} writes ({@code index.json}, docs/classic-tracks.md), read back:
  * what the game's "Classic tracks" list and {@code classic-report} show. Entries whose course file
- * would lie outside the folder are left out.
+ * would lie outside the folder (or that names no path) are left out.
  */
 public final class ClassicIndex {
     /** Largest index read (2,000 tracks take about 1 MB). */
@@ -61,9 +62,8 @@ public final class ClassicIndex {
         Path base = folder.toAbsolutePath().normalize();
         List<Entry> tracks = new ArrayList<>();
         for (JsonNode t : root.get("tracks")) {
-            String course = t.path("course").asText("");
-            Path path = base.resolve(course).normalize();
-            if (course.isEmpty() || !path.startsWith(base) || path.getParent() == null) continue;
+            Path path = courseIn(base, t.path("course").asText(""));
+            if (path == null) continue;
             List<String> categories = new ArrayList<>();
             for (JsonNode c : t.path("categories")) categories.add(c.asText());
             tracks.add(new Entry(cut(t.path("name").asText("?")), cut(t.path("author").asText("?")), categories,
@@ -74,6 +74,17 @@ public final class ClassicIndex {
         List<String> failed = new ArrayList<>();
         for (JsonNode f : root.path("failed")) failed.add(f.path("source").asText() + ": " + f.path("reason").asText());
         return new Index(List.copyOf(tracks), List.copyOf(failed));
+    }
+
+    /** The course's path inside {@code base}, or null where it would lie outside or is no path (a NUL character). */
+    private static Path courseIn(Path base, String course) {
+        if (course.isEmpty()) return null;
+        try {
+            Path path = base.resolve(course).normalize();
+            return path.startsWith(base) && path.getParent() != null ? path : null;
+        } catch (InvalidPathException e) {
+            return null;
+        }
     }
 
     /** Longest name or author shown (the tracks' are under 40 characters). */

@@ -81,7 +81,10 @@ public final class ShapeMasks {
             try (InputStream in = Files.newInputStream(file)) {
                 image = ImageIO.read(in);
             }
-        } catch (IOException | RuntimeException e) {
+        } catch (javax.imageio.IIOException | RuntimeException e) {
+            // The image readers' messages name their own internals ("Empty region!", a class name): not the player's problem.
+            throw new TrackFormatException(file + ": cannot read the image: damaged, or not a GIF or PNG");
+        } catch (IOException e) {
             throw new TrackFormatException(file + ": cannot read the image: " + e.getMessage());
         }
         if (image == null) throw new TrackFormatException(file + ": not an image Java can read (GIF or PNG)");

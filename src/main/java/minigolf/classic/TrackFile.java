@@ -27,8 +27,8 @@ import minigolf.io.TextFiles;
 public final class TrackFile {
     /** Real tracks are 1-3 KB; a file past this is not a track. */
     public static final long MAX_BYTES = 256 * 1024;
-    /** Longest name or author kept (the original's are under 40 characters). */
-    public static final int MAX_TEXT = 200;
+    /** Longest name or author kept: what a course name may be (the original's are under 40 characters). */
+    public static final int MAX_TEXT = minigolf.course.Limits.NAME_CHARS;
 
     private TrackFile() {
     }

@@ -42,7 +42,7 @@ final class BenchAccuracyCommand implements Callable<Integer> {
     @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator under test (default: ${DEFAULT-VALUE}).")
     String integrator = "rk4";
 
-    @Option(names = "--dt", paramLabel = "S", description = "Time step under test in seconds (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
+    @Option(names = "--dt", paramLabel = "S", description = "Time step under test in seconds, 1/1000 to 1/30 (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
     double dt = SimulationSettings.DEFAULT_DT;
 
     @Option(names = "--seed", paramLabel = "S", description = "Seed of the random shots (default: ${DEFAULT-VALUE}).")
@@ -53,7 +53,7 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         Integrator chosen = Integrator.fromName(integrator);
         if (chosen == null) throw new UserError("--integrator: expected rk4, rk2 or euler, got '" + integrator + "'");
         if (shots < 1) throw new UserError("--shots: must be at least 1, got " + shots);
-        if (!(dt > 0) || dt > 0.1) throw new UserError("--dt: must be in (0, 0.1] seconds, got " + dt);
+        if (SimulationSettings.dtProblem(dt) != null) throw new UserError("--dt: " + SimulationSettings.dtProblem(dt));
         World world = CourseArgument.load(course);
         Simulator tested = new Simulator(world, SimulationSettings.DEFAULT.withIntegrator(chosen).withDt(dt));
         ReferenceSimulator reference = new ReferenceSimulator(world);

@@ -23,8 +23,9 @@ import picocli.CommandLine.Spec;
         description = {"Writes a course at each documented limit (the worst cases an accepted file can ask for) and",
                 "times loading it as the game does (read, validate, compile the terrain, build the collision scene).",
                 "After loading the bundled courses once (as the game's menu does), prints each case's first load",
-                "time, its best of three, the heap's peak during the first load and the file size; exits 1 if a",
-                "first load takes 2 s or more. Run it with -Xmx1g to check the memory bound too."})
+                "time, its best of three, the CPU time of that load (all the process's threads: GC and compiler",
+                "included), the heap's peak during the first load and the file size; exits 1 if a first load takes",
+                "2 s or more of CPU time (on a free core, 2 s or more). Run it with -Xmx1g to check the memory bound too."})
 final class BenchLimitsCommand implements Callable<Integer> {
     static final double MAX_SECONDS = 2.0;
 
@@ -55,13 +56,13 @@ final class BenchLimitsCommand implements Callable<Integer> {
                 System.gc();
                 long before = heapUsed();
                 ManagementFactory.getMemoryPoolMXBeans().forEach(MemoryPoolMXBean::resetPeakUsage);
-                long start = System.nanoTime();
+                long start = System.nanoTime(), cpuStart = cpuNanos();
                 try {
                     World.load(c.getValue());
                 } catch (CourseException e) {
                     throw new UserError("bench-limits: a case at the limits was refused: " + e.getMessage());
                 }
-                double seconds = (System.nanoTime() - start) / 1e9;
+                double seconds = (System.nanoTime() - start) / 1e9, cpu = (cpuNanos() - cpuStart) / 1e9;
                 long peak = heapPeak();
                 double best = seconds;
                 for (int k = 0; k < 2; k++) {
@@ -74,9 +75,11 @@ final class BenchLimitsCommand implements Callable<Integer> {
                 row.put("fileBytes", size(c.getValue()));
                 row.put("loadSeconds", Math.round(seconds * 1000) / 1000.0);
                 row.put("bestOf3Seconds", Math.round(best * 1000) / 1000.0);
+                // The verdict is on CPU time: a shared machine stretches the wall time (load 15 on 2 cores: 2.3 s for 0.3 s of CPU).
+                row.put("loadCpuSeconds", Math.round(cpu * 1000) / 1000.0);
                 row.put("heapPeakMB", Math.round((peak) / 1e5) / 10.0);
                 row.put("heapBeforeMB", Math.round(before / 1e5) / 10.0);
-                ok &= seconds < MAX_SECONDS;
+                ok &= cpu < MAX_SECONDS;
             }
             ObjectNode out = Json.object();
             out.put("maxHeapMB", Math.round(Runtime.getRuntime().maxMemory() / 1e5) / 10.0);
@@ -119,6 +122,11 @@ final class BenchLimitsCommand implements Callable<Integer> {
     }
 
     /** The sum of the heap pools' peaks since the reset: at least the heap's true peak. */
+    /** The process's CPU time, every thread's (the loader's, the garbage collector's, the compiler's). */
+    private static long cpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
+    }
+
     private static long heapPeak() {
         long sum = 0;
         for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {

@@ -27,13 +27,14 @@ final class LimitCases {
         Map<String, Path> cases = new LinkedHashMap<>();
         cases.put("grid 512x512 with both friction grids", grid(dir));
         cases.put(Limits.OBSTACLES + " walls across the course", walls(dir));
+        cases.put(Limits.OBSTACLES + " boxes, one per wall tile (a classic track's walls drawn tile by tile)", tiles(dir));
         cases.put("one model of " + Limits.MODEL_TRIANGLES + " triangles and " + Limits.MODEL_VERTICES + " vertices",
                 bigModel(dir));
         cases.put(Limits.OBSTACLES + " models, " + Limits.TRIANGLES + " triangles in all, 100 m wide", manyModels(dir));
         cases.put(Limits.ZONES + " zones, " + Limits.ALL_POLYGON_POINTS + " polygon points", zones(dir));
         cases.put("the longest expression that compiles", expression(dir));
         cases.put("a model file of " + (Limits.MODEL_FILE_BYTES >> 20) + " MiB, mostly comments", commentModel(dir));
-        cases.put("a course file of " + (Limits.COURSE_FILE_BYTES >> 20) + " MiB, mostly one long name", longName(dir));
+        cases.put("a course file of " + (Limits.COURSE_FILE_BYTES >> 20) + " MiB, mostly whitespace", padded(dir));
         return cases;
     }
 
@@ -87,6 +88,22 @@ final class LimitCases {
         Path f = dir.resolve("walls.json");
         Files.writeString(f, course("{\"height\": \"0.1\"}", "{\"min\": [-500, -500], \"max\": [500, 500]}", "[]",
                 sb.append(']').toString()));
+        return f;
+    }
+
+    /** Boxes of 0.25 m side by side on a 50-wide grid of tiles, as a classic track converted one box per wall tile. */
+    private static Path tiles(Path dir) throws IOException {
+        StringBuilder sb = new StringBuilder("[");
+        double tile = 0.25;
+        for (int k = 0; k < Limits.OBSTACLES; k++) {
+            double x = -6.25 + tile * (k % 50), y = -6.25 + tile * (k / 50);
+            if (k > 0) sb.append(',');
+            sb.append(String.format(Locale.ROOT, "{\"type\": \"box\", \"min\": [%.2f, %.2f, 0.1], \"max\": [%.2f, %.2f, 0.2]}",
+                    x, y, x + tile, y + tile));
+        }
+        Path f = dir.resolve("tiles.json");
+        Files.writeString(f, course("{\"height\": \"0.1\"}", "{\"min\": [-8, -8], \"max\": [8, 8]}", "[]",
+                sb.append(']').toString()).replace("[-4, 0]", "[-7, 0]").replace("[4, 0]", "[7, 0]"));
         return f;
     }
 
@@ -161,22 +178,26 @@ final class LimitCases {
         return f;
     }
 
-    /** Terms 0.001*sin(k.1*x + y) added until the expression no longer compiles (or reaches the length limit). */
+    /**
+     * Terms 0.001*sin(k.1*x + y), in parenthesised groups of {@link #GROUP}, added until the
+     * expression no longer compiles: the JVM's 64 KiB method limit is what ends it (516 terms fit,
+     * 517 do not). Written as one chain, 0.1 + t0 + t1 + ..., the tree's height limit of 300 comes
+     * first (295 terms fit, 296 do not); the groups keep the tree low, so this is the costlier case.
+     */
     static String longestCompilingExpression() {
-        String best = "0.1";
-        int low = 1, high = 20_000;
+        return terms(largestCompiling(GROUP), GROUP);
+    }
+
+    /** Terms per parenthesised group in {@link #longestCompilingExpression()}. */
+    static final int GROUP = 50;
+
+    /** The most terms, in groups of {@code group} (one chain when as large as the count), that still compile. */
+    static int largestCompiling(int group) {
+        int low = 1, high = 20_000, best = 0;
         while (low <= high) {
             int mid = (low + high) >>> 1;
-            String e = terms(mid);
-            boolean ok;
-            try {
-                Expression.parse(e).compile();
-                ok = true;
-            } catch (ExpressionException tooLarge) {
-                ok = false;
-            }
-            if (ok) {
-                best = e;
+            if (compileProblem(terms(mid, group)) == null) {
+                best = mid;
                 low = mid + 1;
             } else {
                 high = mid - 1;
@@ -185,9 +206,23 @@ final class LimitCases {
         return best;
     }
 
-    private static String terms(int n) {
+    /** Why the expression does not compile, or null when it does. */
+    static String compileProblem(String expression) {
+        try {
+            Expression.parse(expression).compile();
+            return null;
+        } catch (ExpressionException e) {
+            return e.getMessage();
+        }
+    }
+
+    /** 0.1 + (t0 + ... + t[group-1]) + (...) ..., n terms in all. */
+    static String terms(int n, int group) {
         StringBuilder sb = new StringBuilder("0.1");
-        for (int k = 0; k < n; k++) sb.append("+0.001*sin(").append(k).append(".1*x+y)");
+        for (int k = 0; k < n; k++) {
+            sb.append(k % group == 0 ? "+(" : "+").append("0.001*sin(").append(k).append(".1*x+y)");
+            if (k % group == group - 1 || k == n - 1) sb.append(')');
+        }
         return sb.toString();
     }
 
@@ -197,11 +232,13 @@ final class LimitCases {
         return f;
     }
 
-    private static Path longName(Path dir) throws IOException {
+    /** A name may have only {@link Limits#NAME_CHARS} characters: the file is filled up with whitespace between its fields. */
+    private static Path padded(Path dir) throws IOException {
         String c = course("{\"height\": \"0.1\"}", BOUNDS, "[]", "[]");
-        String name = "n".repeat((int) Limits.COURSE_FILE_BYTES - c.length() - 16);
-        Path f = dir.resolve("long-name.json");
-        Files.writeString(f, c.replace("\"name\": \"limits\"", "\"name\": \"" + name + "\""));
+        String name = "n".repeat(Limits.NAME_CHARS);
+        String pad = " \n".repeat(((int) Limits.COURSE_FILE_BYTES - c.length() - name.length() - 16) / 2);
+        Path f = dir.resolve("padded.json");
+        Files.writeString(f, c.replace("\"name\": \"limits\"", "\"name\": \"" + name + "\"" + pad));
         return f;
     }
 

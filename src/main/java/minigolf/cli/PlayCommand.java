@@ -131,7 +131,7 @@ final class PlayCommand implements Callable<Integer> {
                     throw new IllegalArgumentException("no bot named '" + bot + "' (bots: " + String.join(", ", BotCatalog.names()) + ")");
                 }
                 bots++;
-                out.add(Player.bot("Bot" + (bots > 1 ? " " + bots : "") + " (" + bot + ")", bot));
+                out.add(Player.bot("Bot" + (bots > 1 ? " " + bots : "") + " (" + BotCatalog.label(bot) + ")", bot));
             } else {
                 out.add(Player.human(n));
             }

@@ -37,7 +37,7 @@ final class SimulateCommand implements Callable<Integer> {
     @Option(names = "--integrator", paramLabel = "rk4|rk2|euler", description = "Integrator (default: ${DEFAULT-VALUE}).")
     String integrator = "rk4";
 
-    @Option(names = "--dt", paramLabel = "S", description = "Time step in seconds (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
+    @Option(names = "--dt", paramLabel = "S", description = "Time step in seconds, 1/1000 to 1/30 (default: ${DEFAULT-VALUE}, i.e. 1/60 s).")
     double dt = SimulationSettings.DEFAULT_DT;
 
     @Option(names = "--model", paramLabel = "classic|complete", description = "Overrides the course's physics model (default: the course's).")
@@ -56,7 +56,7 @@ final class SimulateCommand implements Callable<Integer> {
         double vz = velocity.length == 3 ? velocity[2] : 0;
         Integrator chosen = Integrator.fromName(integrator);
         if (chosen == null) throw new UserError("--integrator: expected rk4, rk2 or euler, got '" + integrator + "'");
-        if (!(dt > 0) || dt > 0.1) throw new UserError("--dt: must be in (0, 0.1] seconds, got " + dt);
+        if (SimulationSettings.dtProblem(dt) != null) throw new UserError("--dt: " + SimulationSettings.dtProblem(dt));
         World world = CourseArgument.load(course);
         if (model != null) {
             PhysicsModel m = PhysicsModel.fromJsonName(model);

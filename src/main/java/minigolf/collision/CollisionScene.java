@@ -208,6 +208,21 @@ public final class CollisionScene {
     }
 
     /**
+     * How many shape entries a sweep from (x0, y0) to (x1, y1) visits: those listed in the grid cells
+     * under its rectangle (a shape listed in two of them counts twice), before their boxes are tested.
+     * For tests: the broad phase keeps this small whatever the number of shapes.
+     */
+    int candidates(double x0, double y0, double x1, double y1) {
+        int i0 = column(Math.min(x0, x1)), i1 = column(Math.max(x0, x1));
+        int j0 = row(Math.min(y0, y1)), j1 = row(Math.max(y0, y1));
+        int n = 0;
+        for (int j = j0; j <= j1; j++) {
+            for (int i = i0; i <= i1; i++) n += cellStart[j * columns + i + 1] - cellStart[j * columns + i];
+        }
+        return n;
+    }
+
+    /**
      * Sweeps the ball's centre from p0 to p1 and reports the first contact, if any, in {@code hit}.
      * {@code scratch} must hold at least 3 doubles (one per thread).
      */

@@ -10,6 +10,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import minigolf.io.JsonSyntax;
 import minigolf.io.TextFiles;
 import minigolf.theme.Themes;
 
@@ -150,13 +151,13 @@ public final class CourseLoader {
             JsonLocation loc = e.getLocation();
             String where = loc != null && loc.getLineNr() > 0
                     ? " at line " + loc.getLineNr() + ", column " + loc.getColumnNr() : "";
-            if (msg.startsWith("Duplicate field ")) {
+            if (msg.startsWith("Duplicate field ")) { // a field name of a file that is JSON: the file's own words are fine here
                 // Jackson: "Duplicate field 'name' for `ObjectNode`: not allowed when ..."
                 int end = msg.indexOf(" for `");
                 String what = end > 0 ? msg.substring("Duplicate field ".length(), end) : "";
                 throw new CourseException(source, null, "not valid JSON" + where + ": duplicate field " + what, e);
             }
-            throw new CourseException(source, null, "not valid JSON" + where + ": " + msg, e);
+            throw new CourseException(source, null, JsonSyntax.problem(e), e);
         } catch (RuntimeException e) {
             throw new CourseException(source, null, "not valid JSON: " + firstLine(String.valueOf(e.getMessage())), e);
         }
@@ -226,6 +227,7 @@ public final class CourseLoader {
             knownFields(o, "", TOP_FIELDS);
             String name = string(required(o, "", "name"), "name");
             if (name.isBlank()) throw error("name", "must be a non-empty string");
+            if (Limits.tooLong(name, Limits.NAME_CHARS) != null) throw error("name", Limits.tooLong(name, Limits.NAME_CHARS));
             String world = o.has("world") ? string(o.get("world"), "world") : Themes.DEFAULT_ID;
             if (Themes.byId(world) == null) {
                 throw error("world", "expected one of " + String.join(", ", Themes.ids()) + ", got " + show(o.get("world")));

@@ -15,6 +15,8 @@ public final class Limits {
     public static final long MODEL_FILE_BYTES = 8L << 20;
     /** A saved game, which embeds its course. */
     public static final long SAVE_FILE_BYTES = COURSE_FILE_BYTES + (1L << 20);
+    /** A round file (a name and up to 36 holes' file names and pars: a few kilobytes). */
+    public static final long ROUND_FILE_BYTES = 1L << 20;
     /** A saved round, which embeds the courses of all its holes (up to 18 small holes fit easily). */
     public static final long ROUND_SAVE_FILE_BYTES = 24L << 20;
     /** The high-score table (ten scores per round and each player's bests). */
@@ -26,7 +28,7 @@ public final class Limits {
     /** Nodes of a height grid (512 x 512). */
     public static final int GRID_NODES = 1 << 18;
     /** Obstacles of one course. */
-    public static final int OBSTACLES = 1_000;
+    public static final int OBSTACLES = 2_500;
     /** Friction zones of one course. */
     public static final int ZONES = 500;
     /** Points of one polygon zone. */
@@ -45,6 +47,18 @@ public final class Limits {
     public static final int TRIANGLES = 200_000;
     /** The terrain's height (sampled over the bounds) stays within +-this many metres. */
     public static final double HEIGHT = 1_000;
+    /**
+     * Characters of a name that a file puts on screen (a course's, a round's, a round's in a save or
+     * in the score table); the editor's name field holds as many. Player names have their own, shorter limit.
+     */
+    public static final int NAME_CHARS = 128;
+    /** Characters of a file name written inside a file (a model, a round's hole course, a saved round's source). */
+    public static final int FILE_NAME_CHARS = 1_024;
+
+    /** "too long: N characters (the limit is L)", or null when {@code text} has at most {@code limit} characters. */
+    public static String tooLong(String text, int limit) {
+        return text.length() <= limit ? null : "too long: " + text.length() + " characters (the limit is " + limit + ")";
+    }
 
     private Limits() {
     }

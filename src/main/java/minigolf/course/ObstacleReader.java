@@ -229,6 +229,7 @@ final class ObstacleReader extends CourseJsonReader {
                 String fp = join(path, "file");
                 String file = string(required(o, path, "file"), fp);
                 if (file.isBlank()) throw error(fp, "must be a non-empty file name");
+                if (Limits.tooLong(file, Limits.FILE_NAME_CHARS) != null) throw error(fp, Limits.tooLong(file, Limits.FILE_NAME_CHARS));
                 Vec3 position = vec3(required(o, path, "position"), join(path, "position"));
                 double rotation = o.has("rotationDeg") ? number(o.get("rotationDeg"), join(path, "rotationDeg")) : 0;
                 double scale = optionalPositive(o, path, "scale", 1);

@@ -140,7 +140,7 @@ public final class BotCheck {
         return control.plan();
     }
 
-    /** Stops the bot within about 50 ms (its token is cancelled); the check ends "cancelled". */
+    /** Stops the bot (its token is cancelled: no simulation starts after it); the check ends "cancelled". */
     public void cancel() {
         control.cancel();
     }

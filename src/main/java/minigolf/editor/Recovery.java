@@ -90,6 +90,62 @@ public final class Recovery {
         return true;
     }
 
+    /**
+     * Temporary files of a save younger than this may belong to a save still being written (another
+     * editor saving the same file); a save of the largest course (8 MiB) takes well under a second.
+     */
+    static final long UNFINISHED_SAVE_AGE_MILLIS = 5_000;
+
+    /**
+     * A save of {@code file} that did not finish (the editor killed during Ctrl+S) leaves the new
+     * course in a hidden {@code .name.<hex>.tmp} beside it, where nothing would find it. The newest
+     * such file that holds a whole course, other than the file's own, becomes the recovery file
+     * (offered like a crashed session's, with {@code file} as its origin), unless one is already
+     * waiting; then every one of them is removed (a cut-short one holds no course to offer).
+     *
+     * @return whether a recovery file is now waiting for the user's choice because of it
+     */
+    public boolean adoptUnfinishedSave(Path file) {
+        if (file == null || held) return false; // a waiting recovery is never replaced; the files stay for the next start
+        java.util.List<Path> temporaries = AtomicFile.temporariesOf(file, UNFINISHED_SAVE_AGE_MILLIS);
+        if (temporaries.isEmpty()) return false;
+        String current;
+        try {
+            current = Files.isRegularFile(file) ? TextFiles.read(file, Limits.COURSE_FILE_BYTES) : null;
+        } catch (IOException e) {
+            current = null;
+        }
+        Course newest = null;
+        for (Path t : temporaries) {
+            try {
+                String json = TextFiles.read(t, Limits.COURSE_FILE_BYTES);
+                if (json.equals(current)) break; // the newest whole save is the file itself: nothing new
+                newest = CourseLoader.parse(json, file.toString());
+                break;
+            } catch (IOException | CourseException e) {
+                // cut short or not a course: the next older one
+            }
+        }
+        boolean adopted = false;
+        if (newest != null) {
+            try {
+                save(newest, file);
+                adopted = true;
+            } catch (IOException e) {
+                return false; // not kept elsewhere: the temporary files stay
+            }
+        }
+        for (Path t : temporaries) {
+            try {
+                Files.deleteIfExists(t);
+            } catch (IOException e) {
+                // stays; offered or removed next time
+            }
+        }
+        held = adopted;
+        return adopted;
+    }
+
     /** Whether a recovery file is waiting from an earlier session. */
     public boolean exists() {
         return Files.isRegularFile(course);

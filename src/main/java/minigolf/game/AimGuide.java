@@ -8,15 +8,23 @@ import minigolf.physics.World;
 import java.util.Arrays;
 
 /**
- * The aim guide for beginners ({@link UserSettings#aimGuide()}): where the ball aimed now would go
- * in its first {@link #SECONDS} seconds, from the real engine ({@link Stroke}, the game's own
- * integrator and step) cut off at that time. {@code points} are (x, y, z) triplets of the ball's
- * contact point, one per frame of dt as the game shows it, from the ball's position on; {@code outcome} is how the
+ * The aim guide for beginners ({@link UserSettings#aimGuide()}): where the ball aimed now would go,
+ * from the real engine ({@link Stroke}, the game's own integrator and step): in the game the whole
+ * putt until it stops, drops or leaves play, capped at {@link #FULL_SECONDS} of motion (worked out
+ * off the render thread, {@link AimGuideWorker}); any shorter window on request. {@code points} are
+ * (x, y, z) triplets of the ball's contact point, one per frame of dt as the game shows it, from the
+ * ball's position on; {@code outcome} is how the
  * stroke ends if it ends within the window (holed, stopped, water, out), else null.
  */
 public record AimGuide(float[] points, Outcome outcome) {
-    /** How far ahead the guide shows, in seconds of the ball's motion. */
+    /** A one-second window (the guide before it showed the whole putt; tests compare with the played stroke). */
     public static final double SECONDS = 1.0;
+    /**
+     * The game's guide: the whole stroke, up to this many seconds of the ball's motion (a putt on
+     * the bundled courses ends within about 10 s; the cap keeps a ball circling a cone from
+     * costing more than about 2,000 steps).
+     */
+    public static final double FULL_SECONDS = 30.0;
 
     public int pointCount() {
         return points.length / 3;

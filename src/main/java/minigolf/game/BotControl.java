@@ -38,7 +38,7 @@ public final class BotControl implements ShotPlanner.Control {
         if (cancelled.get()) action.run();
     }
 
-    /** Stops the bot: its token is cancelled at once, so it ends within its 50 ms check interval. */
+    /** Stops the bot: its token is cancelled at once, so no simulation starts after it (CountingSimulatorTest). */
     public void cancel() {
         if (!cancelled.getAndSet(true)) cancelActions.forEach(Runnable::run);
     }

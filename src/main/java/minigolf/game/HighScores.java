@@ -33,6 +33,18 @@ public final class HighScores {
     public record Entry(String name, int score, LocalDate date) {
     }
 
+    /** The best score someone has, and who (the course list shows it). */
+    public record Best(String name, int score) {
+    }
+
+    /** The key single-course games are kept under: a one-hole "round" of the course's name. */
+    public static String practiceKey(String courseName) {
+        return "practice: " + courseName;
+    }
+
+    /** The achievement of a hole played in one stroke. */
+    public static final String HOLE_IN_ONE = "hole in one!";
+
     /** What a finished round or hole achieved, for the player's message. */
     public record Achievement(String name, String what) {
     }
@@ -65,6 +77,7 @@ public final class HighScores {
         for (Iterator<Map.Entry<String, JsonNode>> it = rs.fields(); it.hasNext(); ) {
             Map.Entry<String, JsonNode> e = it.next();
             String p = "rounds." + e.getKey();
+            f.shortText(e.getKey(), "rounds", minigolf.course.Limits.NAME_CHARS);
             JsonNode r = f.object(e.getValue(), p);
             f.onlyFields(r, p, List.of("table", "players"));
             RoundScores scores = new RoundScores();
@@ -73,12 +86,14 @@ public final class HighScores {
                 String q = p + ".table[" + i + "]";
                 JsonNode t = f.object(table.get(i), q);
                 f.onlyFields(t, q, List.of("name", "score", "date"));
-                scores.table.add(new Entry(f.text(t, q, "name"), f.integer(t, q, "score", 1, 100_000), date(f, t, q)));
+                String name = f.shortText(f.text(t, q, "name"), q + ".name", Player.MAX_NAME_LENGTH);
+                scores.table.add(new Entry(name, f.integer(t, q, "score", 1, 100_000), date(f, t, q)));
             }
             JsonNode players = f.object(f.field(r, p, "players"), p + ".players");
             for (Iterator<Map.Entry<String, JsonNode>> pit = players.fields(); pit.hasNext(); ) {
                 Map.Entry<String, JsonNode> pe = pit.next();
                 String q = p + ".players." + pe.getKey();
+                f.shortText(pe.getKey(), p + ".players", Player.MAX_NAME_LENGTH);
                 JsonNode pl = f.object(pe.getValue(), q);
                 f.onlyFields(pl, q, List.of("round", "holes"));
                 if (pl.has("round")) scores.bestRound.put(pe.getKey(), f.integer(pl, q, "round", 1, 100_000));
@@ -168,6 +183,24 @@ public final class HighScores {
         return r == null ? null : r.bestHoles.getOrDefault(name, Map.of()).get(hole);
     }
 
+    /** The best complete round anyone played (the table's first line), or null. */
+    public Best bestRound(String round) {
+        RoundScores r = rounds.get(round);
+        return r == null || r.table.isEmpty() ? null : new Best(r.table.get(0).name(), r.table.get(0).score());
+    }
+
+    /** The best score anyone has on a hole of the round (0-based; the first who reached it on equal scores), or null. */
+    public Best bestOnHole(String round, int hole) {
+        RoundScores r = rounds.get(round);
+        if (r == null) return null;
+        Best best = null;
+        for (Map.Entry<String, Map<Integer, Integer>> e : r.bestHoles.entrySet()) {
+            Integer s = e.getValue().get(hole);
+            if (s != null && (best == null || s < best.score())) best = new Best(e.getKey(), s);
+        }
+        return best;
+    }
+
     /** Records a finished hole's scores (by seat); returns the new personal bests and holes in one. */
     public List<Achievement> recordHole(String round, int hole, List<Player> players, int[] scores) {
         RoundScores r = rounds.computeIfAbsent(round, k -> new RoundScores());
@@ -176,7 +209,7 @@ public final class HighScores {
             String n = players.get(s).name();
             Map<Integer, Integer> best = r.bestHoles.computeIfAbsent(n, k -> new LinkedHashMap<>());
             Integer old = best.get(hole);
-            if (scores[s] == 1) out.add(new Achievement(n, "hole in one!"));
+            if (scores[s] == 1) out.add(new Achievement(n, HOLE_IN_ONE));
             if (old == null || scores[s] < old) {
                 best.put(hole, scores[s]);
                 if (old != null) out.add(new Achievement(n, "personal best on hole " + (hole + 1) + " (" + scores[s] + ", was " + old + ")"));
@@ -195,7 +228,7 @@ public final class HighScores {
             Integer old = r.bestRound.get(n);
             if (old == null || total < old) {
                 r.bestRound.put(n, total);
-                out.add(new Achievement(n, old == null ? "first round: " + total : "personal best round: " + total + " (was " + old + ")"));
+                out.add(new Achievement(n, old == null ? "first round " + total : "personal best round " + total + " (was " + old + ")"));
             }
             Entry e = new Entry(n, total, date);
             r.table.add(e);

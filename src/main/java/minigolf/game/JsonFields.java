@@ -51,10 +51,7 @@ final class JsonFields {
             throw new SaveGameException(source, null, "not valid JSON: " + (m.contains("nesting depth")
                     ? "nested more than " + Limits.JSON_DEPTH + " levels deep (the limit)" : m.lines().findFirst().orElse("")));
         } catch (JsonProcessingException e) {
-            String msg = String.valueOf(e.getOriginalMessage()).lines().findFirst().orElse("");
-            String where = e.getLocation() != null && e.getLocation().getLineNr() > 0
-                    ? " at line " + e.getLocation().getLineNr() + ", column " + e.getLocation().getColumnNr() : "";
-            throw new SaveGameException(source, null, "not valid JSON" + where + ": " + msg, e);
+            throw new SaveGameException(source, null, minigolf.io.JsonSyntax.problem(e), e);
         }
     }
 
@@ -63,7 +60,7 @@ final class JsonFields {
     }
 
     JsonNode object(JsonNode node, String path) throws SaveGameException {
-        if (node == null || !node.isObject()) throw error(path, "must be an object");
+        if (node == null || !node.isObject()) throw error(path, "must be an object" + (node == null ? "" : ", got " + got(node)));
         return node;
     }
 
@@ -74,15 +71,23 @@ final class JsonFields {
         }
     }
 
+    /** The field's value, null included (each caller's type check says "..., got null"); an absent field "is missing". */
     JsonNode field(JsonNode node, String path, String name) throws SaveGameException {
         JsonNode v = node.get(name);
-        if (v == null || v.isNull()) throw error(join(path, name), "is missing");
+        if (v == null || v.isMissingNode()) throw error(join(path, name), "is missing");
         return v;
+    }
+
+    /** What a value is, for "must be ..., got X": a number as written, null, true, false, a string, an array, an object. */
+    static String got(JsonNode v) {
+        if (v.isNumber() || v.isNull() || v.isBoolean()) return v.asText();
+        if (v.isTextual()) return "a string";
+        return v.isArray() ? "an array" : "an object";
     }
 
     double number(JsonNode node, String path, String name) throws SaveGameException {
         JsonNode v = field(node, path, name);
-        if (!v.isNumber()) throw error(join(path, name), "must be a number");
+        if (!v.isNumber()) throw error(join(path, name), "must be a number, got " + got(v));
         double d = v.doubleValue();
         if (!Double.isFinite(d)) throw error(join(path, name), "must be a finite number");
         return d;
@@ -90,7 +95,10 @@ final class JsonFields {
 
     int integer(JsonNode node, String path, String name, int min, int max) throws SaveGameException {
         JsonNode v = field(node, path, name);
-        if (!v.isIntegralNumber() || !v.canConvertToInt()) throw error(join(path, name), "must be a whole number");
+        if (!v.isIntegralNumber()) throw error(join(path, name), "must be a whole number, got " + got(v));
+        if (!v.canConvertToInt() || v.intValue() < min || v.intValue() > max) {
+            throw error(join(path, name), "must be " + min + " to " + max + ", got " + v.asText());
+        }
         int i = v.intValue();
         if (i < min || i > max) throw error(join(path, name), "must be " + min + " to " + max + ", got " + i);
         return i;
@@ -98,14 +106,21 @@ final class JsonFields {
 
     boolean bool(JsonNode node, String path, String name) throws SaveGameException {
         JsonNode v = field(node, path, name);
-        if (!v.isBoolean()) throw error(join(path, name), "must be true or false");
+        if (!v.isBoolean()) throw error(join(path, name), "must be true or false, got " + got(v));
         return v.booleanValue();
     }
 
     String text(JsonNode node, String path, String name) throws SaveGameException {
         JsonNode v = field(node, path, name);
-        if (!v.isTextual()) throw error(join(path, name), "must be a string");
+        if (!v.isTextual()) throw error(join(path, name), "must be a string, got " + got(v));
         return v.textValue();
+    }
+
+    /** {@code text} itself, refused when it has more than {@code limit} characters (a name shown on screen). */
+    String shortText(String text, String path, int limit) throws SaveGameException {
+        String problem = Limits.tooLong(text, limit);
+        if (problem != null) throw error(path, problem);
+        return text;
     }
 
     double[] vec(JsonNode node, String path, String name) throws SaveGameException {
@@ -139,7 +154,7 @@ final class JsonFields {
 
     JsonNode array(JsonNode node, String path, String name) throws SaveGameException {
         JsonNode v = field(node, path, name);
-        if (!v.isArray()) throw error(join(path, name), "must be an array");
+        if (!v.isArray()) throw error(join(path, name), "must be an array, got " + got(v));
         return v;
     }
 

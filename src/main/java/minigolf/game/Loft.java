@@ -50,8 +50,8 @@ public final class Loft {
         return vz <= 0 ? 0 : Math.toDegrees(Math.atan2(vz, Math.hypot(vx, vy)));
     }
 
-    /** "putt" or "chip, loft 35 deg" for the HUD. */
+    /** "Putt" or "Chip, 35 degrees up" for the HUD. */
     public static String describe(int degrees) {
-        return degrees == 0 ? "putt (loft 0 deg)" : "chip, loft " + degrees + " deg";
+        return degrees == 0 ? "Putt" : "Chip, " + degrees + " degrees up";
     }
 }

@@ -10,7 +10,8 @@ public record Player(String name, PlayerKind kind, String bot) {
     public Player {
         if (name == null || name.isBlank()) throw new IllegalArgumentException("a player needs a name");
         if (name.length() > MAX_NAME_LENGTH) {
-            throw new IllegalArgumentException("player names have at most " + MAX_NAME_LENGTH + " characters: " + name);
+            throw new IllegalArgumentException("player names have at most " + MAX_NAME_LENGTH + " characters, got "
+                    + name.length());
         }
         if (kind == null) throw new IllegalArgumentException("player " + name + " needs a kind (human or bot)");
         if (kind == PlayerKind.HUMAN) bot = null;

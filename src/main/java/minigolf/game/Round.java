@@ -1,6 +1,7 @@
 package minigolf.game;
 
 import java.util.List;
+import minigolf.course.Limits;
 import minigolf.physics.World;
 
 /**
@@ -24,6 +25,8 @@ public record Round(String name, List<Hole> holes, String source) {
     public record Hole(String course, int par, World world) {
         public Hole {
             if (course == null || course.isBlank()) throw new IllegalArgumentException("a hole needs a course file");
+            String longName = Limits.tooLong(course, Limits.FILE_NAME_CHARS);
+            if (longName != null) throw new IllegalArgumentException("the course file name is " + longName);
             if (par < 1 || par > MAX_PAR) throw new IllegalArgumentException("par must be 1 to " + MAX_PAR + ", got " + par);
             if (world == null) throw new IllegalArgumentException("a hole needs its loaded course");
         }
@@ -31,6 +34,8 @@ public record Round(String name, List<Hole> holes, String source) {
 
     public Round {
         if (name == null || name.isBlank()) throw new IllegalArgumentException("a round needs a name");
+        String longName = Limits.tooLong(name, Limits.NAME_CHARS);
+        if (longName != null) throw new IllegalArgumentException("the round's name is " + longName);
         holes = List.copyOf(holes);
         if (holes.isEmpty() || holes.size() > MAX_HOLES) {
             throw new IllegalArgumentException("a round has 1 to " + MAX_HOLES + " holes, got " + holes.size());

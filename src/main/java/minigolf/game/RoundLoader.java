@@ -5,13 +5,15 @@ import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import minigolf.course.CourseException;
+import minigolf.course.Limits;
+import minigolf.io.ConfinedFiles;
+import minigolf.io.JsonSyntax;
+import minigolf.io.TextFiles;
 import minigolf.physics.World;
 
 /**
@@ -29,19 +31,28 @@ public final class RoundLoader {
     private RoundLoader() {
     }
 
-    /** Loads a round file and every course it names. */
+    /**
+     * Loads a round file and every course it names. The courses must lie in the round's folder or a
+     * folder beside it ({@link ConfinedFiles#roundCourse}): a round from someone else opens no other file.
+     */
     public static Round load(Path file) throws CourseException {
         String source = String.valueOf(file);
         String json;
         try {
-            json = Files.readString(file, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new CourseException(source, null, "cannot read: no such file");
-        } catch (IOException | RuntimeException e) {
-            throw new CourseException(source, null, "cannot read: " + e.getMessage(), e);
+            json = TextFiles.read(file, Limits.ROUND_FILE_BYTES);
+        } catch (TextFiles.TextFileException e) {
+            throw new CourseException(source, null, "cannot read: " + e.getMessage());
         }
         Path folder = file.toAbsolutePath().getParent();
-        return parse(json, source, course -> World.load(folder.resolve(course).normalize()));
+        return parse(json, source, course -> {
+            Path path;
+            try {
+                path = ConfinedFiles.roundCourse(folder, course);
+            } catch (TextFiles.TextFileException e) {
+                throw new CourseException(course, null, e.getMessage());
+            }
+            return World.load(path);
+        });
     }
 
     /** Loads a round packaged on the classpath, e.g. {@code /courses/rounds/meadowbrook-9.json}. */
@@ -49,9 +60,22 @@ public final class RoundLoader {
         String json = readResource(resource, resource, null);
         String folder = resource.substring(0, resource.lastIndexOf('/') + 1);
         return parse(json, resource, course -> {
-            String name = Path.of(folder + course).normalize().toString().replace('\\', '/');
+            String name = resourceCourse(folder, course);
             return World.parse(readResource(name, resource, course), name);
         });
+    }
+
+    /**
+     * The classpath name of a bundled round's hole, as for files ({@link ConfinedFiles#roundCourse}):
+     * in the round's folder ({@code /courses/rounds/}) or one beside it, nothing else on the classpath.
+     */
+    static String resourceCourse(String folder, String course) throws CourseException {
+        String collection = folder.substring(0, Math.max(1, folder.lastIndexOf('/', folder.length() - 2) + 1));
+        String name = Path.of(folder + course.replace('\\', '/')).normalize().toString().replace('\\', '/');
+        if (course.startsWith("/") || course.startsWith("\\") || !name.startsWith(collection) || name.equals(collection)) {
+            throw new CourseException(course, null, "refused: the path leaves the round's folder and the folders beside it");
+        }
+        return name;
     }
 
     /** How a hole's course file is turned into a world. */
@@ -66,10 +90,7 @@ public final class RoundLoader {
         try {
             root = JsonFields.MAPPER.readTree(json.startsWith("\uFEFF") ? json.substring(1) : json);
         } catch (JsonProcessingException e) {
-            String msg = String.valueOf(e.getOriginalMessage()).lines().findFirst().orElse("");
-            String where = e.getLocation() != null && e.getLocation().getLineNr() > 0
-                    ? " at line " + e.getLocation().getLineNr() + ", column " + e.getLocation().getColumnNr() : "";
-            throw new CourseException(source, null, "not valid JSON" + where + ": " + msg, e);
+            throw new CourseException(source, null, JsonSyntax.problem(e), e);
         }
         if (root == null || root.isMissingNode()) throw new CourseException(source, null, "not valid JSON: the file is empty");
         if (!root.isObject()) throw new CourseException(source, null, "expected a JSON object at the top level");
@@ -80,6 +101,8 @@ public final class RoundLoader {
         }
         JsonNode name = required(root, null, "name", source);
         if (!name.isTextual() || name.textValue().isBlank()) throw new CourseException(source, "name", "must be a non-empty string");
+        String longName = Limits.tooLong(name.textValue(), Limits.NAME_CHARS);
+        if (longName != null) throw new CourseException(source, "name", longName);
         JsonNode holesNode = required(root, null, "holes", source);
         if (!holesNode.isArray()) throw new CourseException(source, "holes", "expected an array of holes");
         if (holesNode.isEmpty() || holesNode.size() > Round.MAX_HOLES) {
@@ -95,6 +118,8 @@ public final class RoundLoader {
             if (!course.isTextual() || course.textValue().isBlank()) {
                 throw new CourseException(source, path + ".course", "must be a non-empty string (a course file)");
             }
+            String longFile = Limits.tooLong(course.textValue(), Limits.FILE_NAME_CHARS);
+            if (longFile != null) throw new CourseException(source, path + ".course", longFile);
             JsonNode par = required(h, path, "par", source);
             if (!par.isIntegralNumber() || !par.canConvertToInt() || par.asInt() < 1 || par.asInt() > Round.MAX_PAR) {
                 throw new CourseException(source, path + ".par", "must be a whole number from 1 to " + Round.MAX_PAR + ", got " + par);

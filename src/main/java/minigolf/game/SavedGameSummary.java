@@ -50,21 +50,30 @@ public record SavedGameSummary(Path file, String name, String course, List<Strin
         LocalDateTime saved = null;
         try {
             saved = LocalDateTime.ofInstant(Files.getLastModifiedTime(file).toInstant(), ZoneId.systemDefault());
-            if (Files.size(file) > Limits.SAVE_FILE_BYTES) return new SavedGameSummary(file, fileName, fileName, List.of(), saved);
-            JsonNode root = JsonFields.MAPPER.readTree(file.toFile());
+            // Read as every save is (a regular UTF-8 file within the round's limit: a FIFO here would block the menu).
+            JsonNode root = JsonFields.MAPPER.readTree(minigolf.io.TextFiles.read(file, Limits.ROUND_SAVE_FILE_BYTES));
             JsonNode game = root.path("hole").isObject() ? root.path("hole") : root; // a saved round holds its hole as a saved game
-            String course = game.path("course").path("name").asText(fileName);
+            String course = shown(game.path("course").path("name"), fileName, Limits.NAME_CHARS);
             String name = course;
             if (root.path("round").isObject()) {
                 int holes = root.path("round").path("holes").size();
                 int finished = root.path("scores").size(); // one row per finished hole
-                name = root.path("round").path("name").asText(fileName) + ", hole " + Math.min(holes, finished + 1);
+                name = shown(root.path("round").path("name"), fileName, Limits.NAME_CHARS) + ", hole " + Math.min(holes, finished + 1);
             }
             List<String> players = new ArrayList<>();
-            for (JsonNode p : game.path("players")) players.add(p.path("name").asText("?"));
+            for (JsonNode p : game.path("players")) {
+                if (players.size() == Game.MAX_PLAYERS) break;
+                players.add(shown(p.path("name"), "?", Player.MAX_NAME_LENGTH));
+            }
             return new SavedGameSummary(file, name, course, List.copyOf(players), saved);
         } catch (IOException | RuntimeException e) {
             return new SavedGameSummary(file, fileName, fileName, List.of(), saved);
         }
+    }
+
+    /** A name from the file as the list shows it: the fallback when absent, cut to what a loaded save may hold. */
+    private static String shown(JsonNode name, String fallback, int limit) {
+        String s = name.isTextual() && !name.textValue().isBlank() ? name.textValue() : fallback;
+        return s.length() <= limit ? s : s.substring(0, limit - 3) + "...";
     }
 }

@@ -147,8 +147,8 @@ public final class SavedGames {
         if (integrator == null) throw f.error("simulation.integrator", "must be euler, rk2 or rk4");
         // The rules of the settings file (UserSettings), which is where a game's step comes from.
         double dt = f.number(sim, "simulation", "dt");
-        if (!(dt >= UserSettings.MIN_DT && dt <= UserSettings.MAX_DT)) {
-            throw f.error("simulation.dt", "must be 1/1000 to 1/30 s, got " + dt);
+        if (SimulationSettings.dtProblem(dt) != null) {
+            throw f.error("simulation.dt", SimulationSettings.dtProblem(dt));
         }
         double maxTime = f.number(sim, "simulation", "maxTime");
         if (!(maxTime >= 1 && maxTime <= SimulationSettings.DEFAULT_MAX_TIME)) {

@@ -114,10 +114,11 @@ public final class SavedRounds {
             f.onlyFields(h, p, HOLE);
             String course = f.text(h, p, "course");
             int par = f.integer(h, p, "par", 1, Round.MAX_PAR);
+            JsonNode definition = f.object(f.field(h, p, "definition"), p + ".definition");
             World world;
             try {
-                world = World.parse(JsonFields.MAPPER.writeValueAsString(f.object(f.field(h, p, "definition"), p + ".definition")),
-                        source + " (" + course + ")");
+                // Named by the save itself: its models are looked for beside the save, never where the label "course" points.
+                world = World.parse(JsonFields.MAPPER.writeValueAsString(definition), source);
             } catch (CourseException e) {
                 throw new SaveGameException(source, p + ".definition" + (e.path() == null ? "" : "." + e.path()), e.problem(), e);
             } catch (IOException e) {
@@ -135,9 +136,13 @@ public final class SavedRounds {
         } catch (IllegalArgumentException e) {
             throw f.error("round", e.getMessage());
         }
+        JsonNode holeNode = f.object(f.field(root, null, "hole"), "hole");
         SavedGames.Loaded hole;
         try {
-            hole = SavedGames.parse(JsonFields.MAPPER.writeValueAsString(f.object(f.field(root, null, "hole"), "hole")), source + " (hole)");
+            hole = SavedGames.parse(JsonFields.MAPPER.writeValueAsString(holeNode), source);
+        } catch (SaveGameException e) {
+            // The current hole is a saved game inside the file: its problems are named by their path under "hole".
+            throw new SaveGameException(source, "hole" + (e.path() == null ? "" : "." + e.path()), e.problem(), e);
         } catch (IOException e) {
             throw f.error("hole", "cannot be read: " + e.getMessage());
         }

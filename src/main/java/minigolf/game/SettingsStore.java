@@ -24,7 +24,7 @@ public final class SettingsStore {
     public static final String CONFIG_DIR_PROPERTY = "minigolf.configDir";
     private static final List<String> FIELDS = List.of("integrator", "dt", "vsync", "frameLimit", "fullscreen",
             "mouseSpeed", "strokeLimit", "heightColours", "playerNames", "noisePosition", "noiseVelocity",
-            "hideFrictionFromBots", "aimGuide", "antiAliasing", "graphics", "windowWidth", "windowHeight", "classicFolder");
+            "hideFrictionFromBots", "aimGuide", "antiAliasing", "graphics", "windowWidth", "windowHeight", "practice", "classicFolder");
 
     private final Path directory;
 
@@ -80,12 +80,15 @@ public final class SettingsStore {
                 JsonNode a = f.array(root, null, "playerNames");
                 names = new ArrayList<>();
                 for (int i = 0; i < a.size(); i++) {
-                    if (!a.get(i).isTextual()) throw f.error("playerNames[" + i + "]", "must be a string");
+                    if (!a.get(i).isTextual()) throw f.error("playerNames[" + i + "]", "must be a string, got " + JsonFields.got(a.get(i)));
                     names.add(a.get(i).textValue());
                 }
             }
-            return new UserSettings(integrator,
-                    root.has("dt") ? f.number(root, null, "dt") : d.dt(),
+            double dt = root.has("dt") ? f.number(root, null, "dt") : d.dt();
+            if (minigolf.physics.SimulationSettings.dtProblem(dt) != null) {
+                throw f.error("dt", minigolf.physics.SimulationSettings.dtProblem(dt));
+            }
+            return new UserSettings(integrator, dt,
                     root.has("vsync") ? f.bool(root, null, "vsync") : d.vsync(),
                     root.has("frameLimit") ? f.integer(root, null, "frameLimit", 0, 1000) : d.frameLimit(),
                     root.has("fullscreen") ? f.bool(root, null, "fullscreen") : d.fullscreen(),
@@ -101,6 +104,7 @@ public final class SettingsStore {
                     root.has("graphics") ? f.text(root, null, "graphics") : d.graphics(),
                     root.has("windowWidth") ? f.integer(root, null, "windowWidth", 0, 16384) : d.windowWidth(),
                     root.has("windowHeight") ? f.integer(root, null, "windowHeight", 0, 16384) : d.windowHeight(),
+                    root.has("practice") ? f.bool(root, null, "practice") : d.practice(),
                     root.has("classicFolder") ? f.text(root, null, "classicFolder") : d.classicFolder());
         } catch (IllegalArgumentException e) {
             throw new SaveGameException(source, null, e.getMessage(), e);
@@ -160,6 +164,7 @@ public final class SettingsStore {
         root.put("graphics", s.graphics());
         root.put("windowWidth", s.windowWidth());
         root.put("windowHeight", s.windowHeight());
+        root.put("practice", s.practice());
         if (!s.classicFolder().isEmpty()) root.put("classicFolder", s.classicFolder());
         ArrayNode names = root.putArray("playerNames");
         s.playerNames().forEach(names::add);

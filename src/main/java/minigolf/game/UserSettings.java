@@ -26,6 +26,8 @@ import minigolf.physics.SimulationSettings;
  *                      rasteriser), {@code high} or {@code low} (docs/rendering.md, RenderQuality)
  * @param windowWidth   the window's size when not full screen, pixels; 0 and 0: 1280 x 720
  * @param windowHeight  (both 0, or 640 to 16384 wide and 480 to 16384 high)
+ * @param practice      practice (expert) mode: the Shot panel for typed velocities and the ball's
+ *                      physics readout in the HUD (off by default; V switches it in the game)
  * @param classicFolder where the course select's "Classic tracks" are read from (what
  *                      {@code minigolf import-tracks} wrote); empty: {@code <config>/classic}
  */
@@ -33,13 +35,13 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
                            double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames,
                            double noisePosition, double noiseVelocity, boolean hideFrictionFromBots,
                            boolean aimGuide, boolean antiAliasing, String graphics, int windowWidth,
-                           int windowHeight, String classicFolder) {
+                           int windowHeight, boolean practice, String classicFolder) {
     /** The graphics qualities a player can choose (before DEFAULTS, which checks against it). */
     public static final List<String> GRAPHICS = List.of("auto", "high", "low");
     public static final UserSettings DEFAULTS = new UserSettings(Integrator.RK4, SimulationSettings.DEFAULT_DT, true, 60,
             false, 1.0, Game.DEFAULT_STROKE_LIMIT, false, List.of("Player 1", "Player 2", "Player 3", "Player 4"), 0, 0,
-            false, true, false, "auto", 0, 0, "");
-    public static final double MIN_DT = 1.0 / 1000, MAX_DT = 1.0 / 30;
+            false, true, false, "auto", 0, 0, false, "");
+    public static final double MIN_DT = SimulationSettings.MIN_DT, MAX_DT = SimulationSettings.MAX_DT;
     /** The longest classic-tracks folder name kept. */
     public static final int MAX_FOLDER_LENGTH = 4096;
     /** Beyond these a putt is a lottery, not "realistic". */
@@ -51,12 +53,12 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings(Integrator integrator, double dt, boolean vsync, int frameLimit, boolean fullscreen,
                         double mouseSpeed, int strokeLimit, boolean heightColours, List<String> playerNames) {
         this(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours, playerNames, 0, 0,
-                false, true, false, "auto", 0, 0, "");
+                false, true, false, "auto", 0, 0, false, "");
     }
 
     public UserSettings {
         if (integrator == null) throw new IllegalArgumentException("integrator must be given");
-        if (!(dt >= MIN_DT && dt <= MAX_DT)) throw new IllegalArgumentException("dt must be 1/1000 to 1/30 s, got " + dt);
+        if (SimulationSettings.dtProblem(dt) != null) throw new IllegalArgumentException("dt " + SimulationSettings.dtProblem(dt));
         if (frameLimit < 0 || frameLimit > 1000) throw new IllegalArgumentException("frameLimit must be 0 to 1000, got " + frameLimit);
         if (!(mouseSpeed >= 0.1 && mouseSpeed <= 10)) throw new IllegalArgumentException("mouseSpeed must be 0.1 to 10, got " + mouseSpeed);
         if (strokeLimit < 1 || strokeLimit > Game.MAX_STROKE_LIMIT) {
@@ -98,7 +100,7 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings withNoise(double position, double velocity) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, position, velocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public SimulationSettings simulation() {
@@ -108,90 +110,96 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
     public UserSettings withIntegrator(Integrator v) {
         return new UserSettings(v, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withDt(double v) {
         return new UserSettings(integrator, v, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
-                antiAliasing, graphics, windowWidth, windowHeight, classicFolder);
+                antiAliasing, graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withVsync(boolean v) {
         return new UserSettings(integrator, dt, v, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide,
-                antiAliasing, graphics, windowWidth, windowHeight, classicFolder);
+                antiAliasing, graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withFrameLimit(int v) {
         return new UserSettings(integrator, dt, vsync, v, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withFullscreen(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, v, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withMouseSpeed(double v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, v, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withStrokeLimit(int v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, v, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withHeightColours(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, v,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withPlayerNames(List<String> v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, v, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withHideFrictionFromBots(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, v, aimGuide, antiAliasing,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withAimGuide(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, v,
-                antiAliasing, graphics, windowWidth, windowHeight, classicFolder);
+                antiAliasing, graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withAntiAliasing(boolean v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit,
                 heightColours, playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, v,
-                graphics, windowWidth, windowHeight, classicFolder);
+                graphics, windowWidth, windowHeight, practice, classicFolder);
     }
 
     public UserSettings withGraphics(String v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, v, windowWidth,
-                windowHeight, classicFolder);
+                windowHeight, practice, classicFolder);
     }
 
     public UserSettings withWindowSize(int width, int height) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, graphics, width,
-                height, classicFolder);
+                height, practice, classicFolder);
+    }
+
+    public UserSettings withPractice(boolean v) {
+        return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
+                playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, graphics, windowWidth,
+                windowHeight, v, classicFolder);
     }
 
     public UserSettings withClassicFolder(String v) {
         return new UserSettings(integrator, dt, vsync, frameLimit, fullscreen, mouseSpeed, strokeLimit, heightColours,
                 playerNames, noisePosition, noiseVelocity, hideFrictionFromBots, aimGuide, antiAliasing, graphics,
-                windowWidth, windowHeight, v);
+                windowWidth, windowHeight, practice, v);
     }
 }

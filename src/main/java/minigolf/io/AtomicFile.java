@@ -96,6 +96,39 @@ public final class AtomicFile {
         return removed;
     }
 
+    /**
+     * The temporary files a write of {@code file} left behind ({@code .name.<hex>.tmp} beside it),
+     * last modified at least {@code olderThanMillis} ago, the newest first. A process killed while
+     * writing leaves the new content there, complete or cut short; the file itself still holds the old.
+     */
+    public static java.util.List<Path> temporariesOf(Path file, long olderThanMillis) {
+        Path target = file.toAbsolutePath();
+        Path directory = target.getParent();
+        String prefix = "." + target.getFileName() + ".";
+        long now = System.currentTimeMillis();
+        java.util.List<Path> out = new java.util.ArrayList<>();
+        java.util.Map<Path, Long> modified = new java.util.HashMap<>();
+        try (java.nio.file.DirectoryStream<Path> files = Files.newDirectoryStream(directory, ".*.tmp")) {
+            for (Path f : files) {
+                String name = f.getFileName().toString();
+                if (!name.startsWith(prefix) || !name.substring(prefix.length()).matches("[0-9a-f]{1,16}\\.tmp")) continue;
+                try {
+                    if (!Files.isRegularFile(f, java.nio.file.LinkOption.NOFOLLOW_LINKS)) continue;
+                    long m = Files.getLastModifiedTime(f).toMillis();
+                    if (now - m < olderThanMillis) continue;
+                    modified.put(f, m);
+                    out.add(f);
+                } catch (IOException | RuntimeException ignored) {
+                    // gone meanwhile
+                }
+            }
+        } catch (IOException | RuntimeException ignored) {
+            // no folder: nothing left behind
+        }
+        out.sort(java.util.Comparator.comparing((Path f) -> modified.get(f)).reversed());
+        return out;
+    }
+
     /** The operating system's reason without the file names ("permission denied", "Is a directory"). */
     private static String reason(Exception e) {
         if (e instanceof NoSuchFileException) return "no such file or directory";

@@ -56,15 +56,29 @@ public final class CameraClearance {
 
     /** The course's obstacles (with the trees' crowns), its flag and its ground. */
     public static CameraClearance of(Course course, HeightProbe ground) {
-        List<float[]> boxes = new ArrayList<>();
-        ObstacleMeshes.Built built = ObstacleMeshes.build(course.obstacles(), ground, m -> MaterialLibrary.empty());
-        for (ObstacleMeshes.Piece p : built.solidPieces()) if (p.count() > 0) boxes.add(p.box().clone());
-        for (ObstacleMeshes.Piece p : built.decorationPieces()) if (p.count() > 0) boxes.add(p.box().clone());
+        List<float[]> boxes = obstacleBoxes(course, ground);
         double hx = course.hole().position().x(), hy = course.hole().position().y();
         MeshData flag = ModelResource.get("flag").placed(hx, hy, ground.height(hx, hy) - ObjectsPass.FLAG_FOOT_DEPTH,
                 ObjectsPass.clothHeading(course.start().x(), course.start().y(), hx, hy), 1);
         boxes.add(bounds(flag));
         return new CameraClearance(boxes, ground);
+    }
+
+    /**
+     * Lines of sight past the course's obstacles, crowns and ground, without the flag: whether the
+     * cup itself can be seen (the flag stands in it). A thin cone (5 mm per metre) keeps a line that
+     * grazes a wall's top from counting as a view.
+     */
+    public static CameraClearance sightlines(Course course, HeightProbe ground) {
+        return new CameraClearance(obstacleBoxes(course, ground), ground, 0.005f);
+    }
+
+    private static List<float[]> obstacleBoxes(Course course, HeightProbe ground) {
+        List<float[]> boxes = new ArrayList<>();
+        ObstacleMeshes.Built built = ObstacleMeshes.build(course.obstacles(), ground, m -> MaterialLibrary.empty());
+        for (ObstacleMeshes.Piece p : built.solidPieces()) if (p.count() > 0) boxes.add(p.box().clone());
+        for (ObstacleMeshes.Piece p : built.decorationPieces()) if (p.count() > 0) boxes.add(p.box().clone());
+        return boxes;
     }
 
     public List<float[]> boxes() {

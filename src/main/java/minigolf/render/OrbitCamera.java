@@ -78,6 +78,54 @@ public final class OrbitCamera {
         return cam;
     }
 
+    /**
+     * The game's opening view of a hole: behind the ball facing the hole ({@link #behindBall}), the
+     * ball kept in sight past obstacles ({@link CameraClearance}), and where something (the
+     * windmill on its hole, a castle's wall) would hide the cup from there, turned a little to one
+     * side, steeper or further out (the least change that shows the cup), so the player sees where
+     * to putt. R comes back to this view.
+     */
+    public static OrbitCamera opening(Course course, Terrain terrain, float aspect) {
+        OrbitCamera cam = behindBall(course, terrain, aspect);
+        cam.setClearance(CameraClearance.of(course, terrain::height));
+        double hx = course.hole().position().x(), hy = course.hole().position().y();
+        Vector3f cup = new Vector3f((float) hx, (float) hy, (float) terrain.height(hx, hy) + 0.02f);
+        CameraClearance sight = CameraClearance.sightlines(course, terrain::height);
+        if (sight.firstHit(cam.eye(), cup) >= 1) return cam;
+        float yaw0 = cam.yaw, pitch0 = cam.pitch, distance0 = cam.distance, maxDistance0 = cam.maxDistance;
+        float bestCost = Float.POSITIVE_INFINITY, bestYaw = yaw0, bestPitch = pitch0, bestDistance = distance0;
+        for (int turn = -OPENING_TURNS; turn <= OPENING_TURNS; turn++) {
+            for (float pitch = pitch0; pitch <= OPENING_MAX_PITCH + 1e-6f; pitch += OPENING_PITCH_STEP) {
+                for (float far = 1; far <= OPENING_MAX_FAR + 1e-6f; far += 0.25f) {
+                    // A turn of 10 degrees costs as much as 6 degrees steeper or a quarter further out.
+                    float cost = Math.abs(turn) + (pitch - pitch0) / OPENING_PITCH_STEP / 2 + (far - 1) * 4;
+                    if (cost >= bestCost) continue;
+                    cam.yaw = yaw0 + turn * OPENING_TURN_STEP;
+                    cam.pitch = pitch;
+                    cam.distance = distance0 * far;
+                    cam.maxDistance = Math.max(maxDistance0, cam.distance);
+                    if (sight.firstHit(cam.eye(), cup) >= 1) {
+                        bestCost = cost;
+                        bestYaw = cam.yaw;
+                        bestPitch = pitch;
+                        bestDistance = cam.distance;
+                    }
+                }
+            }
+        }
+        cam.yaw = bestYaw; // unchanged where nothing shows the cup: the usual view
+        cam.pitch = bestPitch;
+        cam.distance = bestDistance;
+        cam.maxDistance = Math.max(maxDistance0, bestDistance);
+        cam.setHome();
+        return cam;
+    }
+
+    /** How the opening view may change to show the cup: turns of 10 degrees either way, steeper up to 70 degrees, twice as far. */
+    static final int OPENING_TURNS = 4;
+    static final float OPENING_TURN_STEP = (float) Math.toRadians(10), OPENING_MAX_PITCH = (float) Math.toRadians(70),
+            OPENING_PITCH_STEP = (float) Math.toRadians(3), OPENING_MAX_FAR = 2f;
+
     /** A view from straight above-ish (pitch 80 degrees) onto {@code target}, fitting the course. */
     public static OrbitCamera topDown(Course course, Terrain terrain, Vector3f target, float aspect) {
         OrbitCamera cam = new OrbitCamera(target, (float) (-Math.PI / 2), (float) Math.toRadians(80), 10);

@@ -23,23 +23,57 @@ import static org.lwjgl.opengl.GL20.*;
  * {@code /shaders/NAME.frag}) without a {@code #version} line: {@code #version 330 core} is prepended
  * here, as LWJGL's demos do, so one place decides the GLSL version. A line
  * {@code #include "file.glsl"} is replaced by {@code /shaders/file.glsl} (shared lighting code).
+ *
+ * <p>The programs of {@link #load} are compiled once per GL context and kept for its life: a scene
+ * built again (every new hole, a preview, the editor's rebuilt terrain) takes the same programs, and
+ * their {@link #close()} keeps them. Compiling afresh each hole made a software driver (llvmpipe)
+ * translate every shader again, and the process's memory grew by tens of kilobytes a hole (issue 29's
+ * soak). Passes set every uniform they use before each draw, so sharing a program is safe.
  */
 public final class ShaderProgram implements AutoCloseable {
     public static final String VERSION_LINE = "#version 330 core\n";
     private static final Pattern INCLUDE = Pattern.compile("(?m)^\\s*#include\\s+\"([^\"]+)\"\\s*$");
 
+    /** The context's programs by label (a context's GLCapabilities is its identity; it dies with the context). */
+    private static final Map<org.lwjgl.opengl.GLCapabilities, Map<String, ShaderProgram>> SHARED = new java.util.WeakHashMap<>();
+
     private final String name;
     private final int program;
     private final Map<String, Integer> locations = new HashMap<>();
+    /** Kept for the context's life ({@link #load}): close() leaves it. */
+    private boolean shared;
 
     private ShaderProgram(String name, int program) {
         this.name = name;
         this.program = program;
     }
 
-    /** Loads, compiles and links {@code /shaders/NAME.vert} and {@code /shaders/NAME.frag}. */
+    /** Loads, compiles and links {@code /shaders/NAME.vert} and {@code /shaders/NAME.frag}, once per context. */
     public static ShaderProgram load(String name) {
-        return fromSource(name, readResource(name + ".vert"), readResource(name + ".frag"));
+        return shared(name, () -> fromSource(name, readResource(name + ".vert"), readResource(name + ".frag")));
+    }
+
+    /** The current context's program {@code label}, made by {@code make} the first time. */
+    private static ShaderProgram shared(String label, java.util.function.Supplier<ShaderProgram> make) {
+        org.lwjgl.opengl.GLCapabilities context = org.lwjgl.opengl.GL.getCapabilities();
+        synchronized (SHARED) {
+            Map<String, ShaderProgram> programs = SHARED.computeIfAbsent(context, c -> new HashMap<>());
+            ShaderProgram p = programs.get(label);
+            if (p == null) {
+                p = make.get();
+                p.shared = true;
+                programs.put(label, p);
+            }
+            return p;
+        }
+    }
+
+    /** Programs kept for the current context (tests: a scene built twice compiles nothing the second time). */
+    static int sharedCount() {
+        synchronized (SHARED) {
+            Map<String, ShaderProgram> programs = SHARED.get(org.lwjgl.opengl.GL.getCapabilities());
+            return programs == null ? 0 : programs.size();
+        }
     }
 
     /**
@@ -52,8 +86,8 @@ public final class ShaderProgram implements AutoCloseable {
         StringBuilder d = new StringBuilder();
         for (String define : defines) d.append("#define ").append(define).append('\n');
         String label = name + String.join("", java.util.Arrays.stream(defines).map(x -> "+" + x.split(" ")[0]).toList());
-        return fromSource(label, withDefines(readResource(name + ".vert"), d.toString()),
-                withDefines(readResource(name + ".frag"), d.toString()));
+        return shared(name + "\n" + d, () -> fromSource(label, withDefines(readResource(name + ".vert"), d.toString()),
+                withDefines(readResource(name + ".frag"), d.toString())));
     }
 
     /** The source with its version line first and the defines right after it. */
@@ -190,8 +224,9 @@ public final class ShaderProgram implements AutoCloseable {
         glUniform1i(location(uniform), v);
     }
 
+    /** Deletes the program, unless it is one of the context's kept programs ({@link #load}). */
     @Override
     public void close() {
-        glDeleteProgram(program);
+        if (!shared) glDeleteProgram(program);
     }
 }

@@ -318,8 +318,19 @@ public final class Window implements AutoCloseable {
         return surfaceless == null && glfwGetWindowAttrib(handle, GLFW_ICONIFIED) == GLFW_TRUE;
     }
 
+    /** The most characters of a title (a course's name is part of it; GLFW encodes it on a small native stack). */
+    static final int MAX_TITLE_CHARS = 200;
+
     public void setTitle(String title) {
-        if (surfaceless == null) glfwSetWindowTitle(handle, title);
+        if (surfaceless == null) glfwSetWindowTitle(handle, shortTitle(title));
+    }
+
+    /** The title cut to {@link #MAX_TITLE_CHARS} with "..." (never splitting a surrogate pair). */
+    public static String shortTitle(String title) {
+        if (title.length() <= MAX_TITLE_CHARS) return title;
+        int n = MAX_TITLE_CHARS - 3;
+        if (Character.isHighSurrogate(title.charAt(n - 1))) n--;
+        return title.substring(0, n) + "...";
     }
 
     @Override

@@ -20,6 +20,11 @@ public final class PropMeshes {
     static final float[] ROOF_SLATE = {0.28f, 0.30f, 0.40f};
     static final float[] WHITE = {0.94f, 0.94f, 0.92f};
     static final float[] RED = {0.78f, 0.16f, 0.14f};
+    static final float[] MARRAM = {0.52f, 0.60f, 0.32f};
+    static final float[] GATEWAY = {0.10f, 0.09f, 0.09f};
+    /** A castle wall's courses of stone, bottom up, and their shades. */
+    static final int COURSES = 4;
+    static final double[] COURSE_SHADES = {0.94, 1.03, 0.97, 1.06};
     static final float[][] HUT_COLOURS = {{0.85f, 0.25f, 0.25f}, {0.25f, 0.50f, 0.80f}, {0.95f, 0.80f, 0.25f},
             {0.35f, 0.70f, 0.45f}, {0.90f, 0.55f, 0.70f}};
     static final float[][] FLOWER_COLOURS = {{0.95f, 0.85f, 0.20f}, {0.92f, 0.30f, 0.35f}, {0.95f, 0.95f, 0.95f},
@@ -138,7 +143,14 @@ public final class PropMeshes {
             double ax = x + sx * wl[0] + fx * wl[1], ay = y + sy * wl[0] + fy * wl[1];
             double bx = x + sx * wl[2] + fx * wl[3], by = y + sy * wl[2] + fy * wl[3];
             double len = Math.hypot(bx - ax, by - ay), turn = Math.toDegrees(Math.atan2(by - ay, bx - ax));
-            w.box((ax + bx) / 2, (ay + by) / 2, z - 0.5, z + wallH, len, size * 0.05, turn, 1, wl[1] == 0 && wl[3] == 0 ? stone : dark);
+            float[] face = wl[1] == 0 && wl[3] == 0 ? stone : dark;
+            // A battered plinth, then courses of stone in slightly different shades (one flat grey box read as a placeholder).
+            w.box((ax + bx) / 2, (ay + by) / 2, z - 0.5, z + wallH * 0.18, len + size * 0.02, size * 0.075, turn, 0.9, shade(face, 0.8));
+            for (int c = 0; c < COURSES; c++) {
+                double z0 = z + wallH * (0.18 + 0.82 * c / COURSES), z1 = z + wallH * (0.18 + 0.82 * (c + 1) / COURSES);
+                w.box((ax + bx) / 2, (ay + by) / 2, z0, z1, len, size * (c % 2 == 0 ? 0.05 : 0.049), turn, 1,
+                        shade(face, COURSE_SHADES[c % COURSE_SHADES.length]));
+            }
             int merlons = (int) (len / (size * 0.06));
             for (int k = 0; k < merlons; k += 2) {
                 double t = (k + 0.5) / merlons;
@@ -147,9 +159,24 @@ public final class PropMeshes {
             }
             if (snowy) w.box((ax + bx) / 2, (ay + by) / 2, z + wallH, z + wallH + 0.05, len, size * 0.05, turn, 1, SNOW);
         }
-        // Gatehouse over the gap, then the keep behind.
+        // Gatehouse over the gap (a dark gateway in its face), then the keep behind with its windows.
         w.box(x + fx * 0.2, y + fy * 0.2, z + wallH * 0.55, z + wallH * 1.35, size * 0.24, size * 0.12, facingDeg + 90, 1, stone);
-        w.box(x - fx * depth * 0.55, y - fy * depth * 0.55, z - 0.5, z + wallH * 2.2, size * 0.26, size * 0.22, facingDeg, 1, dark);
+        w.box(x + fx * (0.2 + size * 0.061), y + fy * (0.2 + size * 0.061), z, z + wallH * 0.5, size * 0.12, size * 0.004,
+                facingDeg + 90, 1, GATEWAY);
+        double kx = x - fx * depth * 0.55, ky = y - fy * depth * 0.55;
+        w.box(kx, ky, z - 0.5, z + wallH * 2.2, size * 0.26, size * 0.22, facingDeg, 1, dark);
+        for (int row = 0; row < 2; row++) {
+            for (int col = -1; col <= 1; col++) {
+                double off = size * 0.111, side = col * size * 0.07;
+                w.box(kx + fx * off + sx * side, ky + fy * off + sy * side, z + wallH * (1.3 + 0.5 * row), z + wallH * (1.55 + 0.5 * row),
+                        size * 0.02, size * 0.004, facingDeg + 90, 1, GATEWAY);
+            }
+        }
+        w.frustum(kx, ky, z + wallH * 3.0 - 0.2, z + wallH * 3.0 + size * 0.09, size * 0.004, size * 0.004, 4, false, IRON);
+        double[] poleTop = {kx, ky, z + wallH * 3.0 + size * 0.09}, poleMid = {kx, ky, z + wallH * 3.0 + size * 0.06};
+        double[] tip = {kx + sx * size * 0.06, ky + sy * size * 0.06, z + wallH * 3.0 + size * 0.075};
+        w.flatTriangle(poleMid, tip, poleTop, RED);
+        w.flatTriangle(poleTop, tip, poleMid, RED);
         w.frustum(x - fx * depth * 0.55, y - fy * depth * 0.55, z + wallH * 2.2, z + wallH * 3.0, size * 0.17, 0, 4, false,
                 snowy ? SNOW : ROOF_SLATE);
         double[][] towers = {{-half, 0}, {half, 0}, {-half, -depth}, {half, -depth}};
@@ -157,6 +184,9 @@ public final class PropMeshes {
             double tx = x + sx * t[0] + fx * t[1], ty = y + sy * t[0] + fy * t[1];
             double r = size * 0.07, h = wallH * 1.6;
             w.frustum(tx, ty, z - 0.5, z + h, r, r * 0.95, 10, true, stone);
+            w.frustum(tx, ty, z + h * 0.45, z + h * 0.5, r * 1.01, r * 1.0, 10, true, shade(stone, 0.85));
+            // An arrow slit facing the course.
+            w.box(tx + fx * r * 0.97, ty + fy * r * 0.97, z + h * 0.62, z + h * 0.8, size * 0.012, size * 0.004, facingDeg + 90, 1, GATEWAY);
             w.frustum(tx, ty, z + h, z + h + r * 2.4, r * 1.2, 0, 10, false, snowy ? SNOW : ROOF_SLATE);
         }
     }
@@ -226,11 +256,28 @@ public final class PropMeshes {
         w.flatTriangle(r0, l0, t0, c);
     }
 
-    /** A low, smooth mound: a snow drift (white) or a dune (sand below, marram grass on top). */
+    /** A low, smooth mound: a snow drift (white) or a dune's body (sand, its crest lighter). */
     public static void mound(MeshWriter w, double x, double y, double z, double size, long seed, float[] base, float[] top) {
         Random r = new Random(seed);
-        w.lump(x, y, z - size * 0.1, size * (0.5 + 0.3 * r.nextDouble()), size * (0.35 + 0.2 * r.nextDouble()),
-                size * 0.16, 0.1, seed, false, z - 0.02, base, top);
+        w.lump(x, y, z - size * 0.06, size * (0.5 + 0.3 * r.nextDouble()), size * (0.35 + 0.2 * r.nextDouble()),
+                size * 0.22, 0.1, seed, false, z - 0.02, base, top);
+    }
+
+    /**
+     * A dune: a sand mound with tufts of marram grass on its crest. (A green cap on a sand ring read as
+     * a crater from above.)
+     */
+    public static void dune(MeshWriter w, double x, double y, double z, double size, long seed, float[] sand) {
+        Random r = new Random(seed);
+        double rz = size * 0.26, base = z - size * 0.06;
+        w.lump(x, y, base, size * (0.5 + 0.3 * r.nextDouble()), size * (0.35 + 0.2 * r.nextDouble()), rz, 0.12, seed, false,
+                z - 0.02, sand, shade(sand, 1.07));
+        double crest = base + rz * 0.9;
+        for (int k = 0; k < 5; k++) {
+            double a = 2 * Math.PI * r.nextDouble(), d = size * 0.18 * r.nextDouble();
+            double tx = x + d * Math.cos(a), ty = y + d * Math.sin(a), h = size * (0.06 + 0.04 * r.nextDouble());
+            w.frustum(tx, ty, crest - 0.05, crest + h, size * 0.035, 0, 5, false, MARRAM);
+        }
     }
 
     static float[] shade(float[] c, double k) {

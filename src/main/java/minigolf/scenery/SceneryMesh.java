@@ -31,7 +31,6 @@ public final class SceneryMesh {
         List<Piece> pieces = new ArrayList<>();
         float[] rock = theme.materials().edgeColor().toArray();
         boolean snowy = theme.scenery().ground() == Theme.Ground.SNOW;
-        float[] ground = theme.materials().surroundGround().toArray();
         for (SceneryPlan.Placed p : placed) {
             int start = w.indexCount(), firstVertex = w.vertexCount();
             double x = p.x(), y = p.y(), z = level;
@@ -53,7 +52,7 @@ public final class SceneryMesh {
                 case LIGHTHOUSE -> PropMeshes.lighthouse(w, x, y, z, rock);
                 case HUT -> PropMeshes.hut(w, x, y, z, p.headingDeg(), (int) p.seed());
                 case SNOWDRIFT -> PropMeshes.mound(w, x, y, z, p.size(), p.seed(), PropMeshes.SNOW, PropMeshes.SNOW);
-                case DUNE -> PropMeshes.mound(w, x, y, z, p.size(), p.seed(), theme.materials().sand().toArray(), ground);
+                case DUNE -> PropMeshes.dune(w, x, y, z, p.size(), p.seed(), theme.materials().sand().toArray());
             }
             if (w.indexCount() > start) pieces.add(new Piece(start, w.indexCount() - start, w.box(firstVertex), p.skyline()));
         }

@@ -19,19 +19,21 @@ import static org.lwjgl.stb.STBTruetype.*;
 import static org.lwjgl.system.MemoryUtil.*;
 
 /**
- * The interface font ({@link UiFont}) baked with STB truetype into a coverage atlas: Basic Latin and
- * Latin-1 (the interface's strings use no others; anything else is drawn as '?'). Baking needs no GL;
+ * The interface font ({@link UiFont}) baked with STB truetype into a coverage atlas: Basic Latin,
+ * Latin-1 and the dashes, quotes, bullet and ellipsis of General Punctuation (U+2010 to U+2027: the
+ * game's messages say "Holed in 3 — birdie!"); anything else is drawn as '?'. Baking needs no GL;
  * {@link #userFont()} uploads the atlas and hands Nuklear a font that measures and places glyphs
  * exactly as {@link #width(CharSequence)} does, so layout code can size widgets itself.
  * Owns native memory: close it.
  */
 public final class FontAtlas implements AutoCloseable {
     static final int FIRST = 32, COUNT = 224;
+    static final int PUNCTUATION_FIRST = 0x2010, PUNCTUATION_COUNT = 0x18;
     private static final int ATLAS = 1024;
 
     private final ByteBuffer ttf; // stb_truetype reads the font file while the atlas lives
     private final STBTTFontinfo info = STBTTFontinfo.malloc();
-    private final STBTTPackedchar.Buffer chars = STBTTPackedchar.malloc(COUNT);
+    private final STBTTPackedchar.Buffer chars = STBTTPackedchar.malloc(COUNT + PUNCTUATION_COUNT);
     private final float pixels, ascent;
     private ByteBuffer coverage; // until uploaded
     private int texture;
@@ -54,7 +56,8 @@ public final class FontAtlas implements AutoCloseable {
             STBTTPackContext pc = STBTTPackContext.malloc(stack);
             if (!stbtt_PackBegin(pc, coverage, ATLAS, ATLAS, 0, 1, NULL)) throw new IllegalStateException("font atlas");
             stbtt_PackSetOversampling(pc, 2, 1); // sharper horizontal positions, as before
-            boolean packed = stbtt_PackFontRange(pc, ttf, 0, this.pixels, FIRST, chars);
+            boolean packed = stbtt_PackFontRange(pc, ttf, 0, this.pixels, FIRST, chars.slice(0, COUNT))
+                    && stbtt_PackFontRange(pc, ttf, 0, this.pixels, PUNCTUATION_FIRST, chars.slice(COUNT, PUNCTUATION_COUNT));
             stbtt_PackEnd(pc);
             if (!packed) throw new IllegalStateException("the font does not fit its atlas at " + this.pixels + " px");
         } catch (RuntimeException e) {
@@ -75,16 +78,27 @@ public final class FontAtlas implements AutoCloseable {
 
     /** Whether the font has a real glyph for the code point (not the '?' stand-in). */
     public boolean hasGlyph(int codePoint) {
-        return codePoint >= FIRST && codePoint < FIRST + COUNT && stbtt_FindGlyphIndex(info, codePoint) != 0;
+        return slot(codePoint) >= 0 && stbtt_FindGlyphIndex(info, codePoint) != 0;
     }
 
-    private int slot(int codePoint) {
-        return codePoint >= FIRST && codePoint < FIRST + COUNT ? codePoint - FIRST : '?' - FIRST;
+    /** Where the code point's glyph is in {@code chars}, or -1 if it was not baked. */
+    private static int slot(int codePoint) {
+        if (codePoint >= FIRST && codePoint < FIRST + COUNT) return codePoint - FIRST;
+        if (codePoint >= PUNCTUATION_FIRST && codePoint < PUNCTUATION_FIRST + PUNCTUATION_COUNT) {
+            return COUNT + codePoint - PUNCTUATION_FIRST;
+        }
+        return -1;
+    }
+
+    /** The glyph drawn for the code point: its own, or '?'. */
+    private static int drawn(int codePoint) {
+        int s = slot(codePoint);
+        return s >= 0 ? s : '?' - FIRST;
     }
 
     /** The advance of one code point in pixels. */
     public float advance(int codePoint) {
-        return chars.get(slot(codePoint)).xadvance();
+        return chars.get(drawn(codePoint)).xadvance();
     }
 
     /** The width of a line of text in pixels, as Nuklear will draw it. */
@@ -116,7 +130,7 @@ public final class FontAtlas implements AutoCloseable {
             try (MemoryStack stack = MemoryStack.stackPush()) {
                 FloatBuffer x = stack.floats(0f), y = stack.floats(0f);
                 STBTTAlignedQuad q = STBTTAlignedQuad.malloc(stack);
-                stbtt_GetPackedQuad(chars, ATLAS, ATLAS, slot(codePoint), x, y, q, false);
+                stbtt_GetPackedQuad(chars, ATLAS, ATLAS, drawn(codePoint), x, y, q, false);
                 NkUserFontGlyph g = NkUserFontGlyph.create(glyph);
                 g.width(q.x1() - q.x0());
                 g.height(q.y1() - q.y0());

@@ -152,6 +152,12 @@ public final class Gui {
         return frameH;
     }
 
+    /** The width and height of a label's plate ({@link GuiDrawList#addLabel}) round {@code text}. */
+    public static float[] labelPlate(String text) {
+        float pad = GuiDrawList.labelPad(font.height());
+        return new float[]{font.width(text) + 2 + 2 * pad, font.height() + 2 * pad};
+    }
+
     static float textWidth(String s) {
         return font.width(s);
     }
@@ -203,14 +209,26 @@ public final class Gui {
     }
 
     /** "Play##main" shows "Play"; "Card: A###card" shows "Card: A". */
+    /** The part of a label that is shown (before "##"), fitted to the screen ({@link GuiText}). */
     static String displayLabel(String label) {
         int i = label.indexOf("##");
-        return i < 0 ? label : label.substring(0, i);
+        return fitted(i < 0 ? label : label.substring(0, i));
     }
 
     static String windowId(String name) {
         int i = name.indexOf("###");
-        return i < 0 ? name : name.substring(i + 3);
+        return GuiText.id(i < 0 ? name : name.substring(i + 3));
+    }
+
+    /** Text cut short with "..." where it is wider than the screen leaves room for ({@link GuiText#fit}). */
+    static String fitted(String text) {
+        return GuiText.fit(text, font, maxTextWidth());
+    }
+
+    /** The widest text one widget draws: the screen less a window's padding and a margin each side. */
+    static float maxTextWidth() {
+        float pad = ctx == null ? 0 : ctx.style().window().padding().x();
+        return Math.max(8 * textH, layer.displayWidth() - 2 * (pad + 8 * scale));
     }
 
     public static void pushID(int id) {
@@ -369,7 +387,7 @@ public final class Gui {
     }
 
     public static void setTooltip(String text) {
-        nk_tooltip(ctx, text);
+        nk_tooltip(ctx, fitted(text));
     }
 
     public static void beginDisabled() {
@@ -394,9 +412,10 @@ public final class Gui {
         label(text, Theme.DISABLED_TEXT);
     }
 
-    /** Text broken into lines at spaces to the window's width. */
-    public static void textWrapped(String text) {
+    /** Text broken into lines at spaces to the window's width (a few lines' worth at most, then "..."). */
+    public static void textWrapped(String full) {
         requireWindow();
+        String text = full.length() > 4 * GuiText.MAX_CHARS ? GuiText.cut(full, 4 * GuiText.MAX_CHARS) + GuiText.ELLIPSIS : full;
         float avail;
         try (MemoryStack stack = MemoryStack.stackPush()) {
             avail = nk_window_get_content_region(ctx, NkRect.malloc(stack)).w();
@@ -416,15 +435,17 @@ public final class Gui {
         if (line.length() > 0) wrappedLine(line.toString(), avail);
     }
 
-    static void wrappedLine(String s, float avail) {
+    static void wrappedLine(String line, float avail) {
+        String s = GuiText.fit(line, font, avail); // a word wider than the window
         place(Math.min(avail, font.width(s) + 2), textH);
         try (MemoryStack stack = MemoryStack.stackPush()) {
             nk_label_colored(ctx, s, NK_TEXT_LEFT, colour(stack, Theme.TEXT));
         }
     }
 
-    static void label(String text, int[] rgba) {
+    static void label(String full, int[] rgba) {
         requireWindow();
+        String text = fitted(full);
         float w = font.width(text) + 2;
         place(w, win.frameText ? frameH : textH);
         win.frameText = false;
@@ -441,7 +462,8 @@ public final class Gui {
     /** A button; a zero width or height fits the label. */
     public static boolean button(String label, float width, float height) {
         String shown = displayLabel(label);
-        float w = width > 0 ? width : buttonWidth(shown);
+        // Never narrower than its label: Nuklear clips a label that does not fit ("10" showed as "1").
+        float w = width > 0 ? Math.max(width, buttonWidth(shown)) : buttonWidth(shown);
         place(w, height > 0 ? height : frameH);
         return nk_button_label(ctx, shown);
     }
@@ -491,9 +513,14 @@ public final class Gui {
 
     /** A round option; true when clicked. */
     public static boolean radioButton(String label, boolean active) {
+        place(radioButtonWidth(label), frameH);
         String shown = displayLabel(label);
-        place(font.width(shown) + textH + 16 * scale + 4, frameH);
         return nk_option_label(ctx, shown, active) && !active;
+    }
+
+    /** The width a radio button with this label takes (to keep room for it before it shows). */
+    public static float radioButtonWidth(String label) {
+        return font.width(displayLabel(label)) + textH + 16 * scale + 4;
     }
 
     /** A row that can be selected (lists); true when clicked. */
@@ -512,7 +539,7 @@ public final class Gui {
         float f = Math.max(0, Math.min(1, Float.isNaN(fraction) ? 0 : fraction));
         place(width > 0 ? width : takeItemWidth(), height > 0 ? height : frameH);
         nk_prog(ctx, Math.round(f * 1000), 1000, false);
-        String text = overlay != null ? overlay : Math.round(f * 100) + "%";
+        String text = overlay != null ? GuiText.fit(overlay, font, lastItem[2]) : Math.round(f * 100) + "%";
         float tw = font.width(text);
         try (MemoryStack stack = MemoryStack.stackPush()) {
             NkRect r = NkRect.malloc(stack).set(lastItem[0] + (lastItem[2] - tw) / 2, lastItem[1] + (lastItem[3] - textH) / 2, tw + 2, textH);

@@ -48,6 +48,11 @@ public final class GuiDrawList {
         ops.add(new Op(LABEL, x, y, 0, 0, textAbgr, 0, text, plateAbgr));
     }
 
+    /** The room a label's plate leaves round its text, for text {@code textHeight} high. */
+    static float labelPad(float textHeight) {
+        return 0.25f * textHeight;
+    }
+
     int size() {
         return ops.size();
     }
@@ -77,15 +82,18 @@ public final class GuiDrawList {
                     case CIRCLE -> nk_stroke_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), op.thickness, colour);
                     case DISC -> nk_fill_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), colour);
                     case LABEL -> {
-                        float w = font.width(op.text) + 2, h = font.height(), pad = 0.25f * h;
+                        String text = GuiText.fit(op.text, font, Math.max(font.height(), width / 2));
+                        float w = font.width(text) + 2, h = font.height(), pad = labelPad(h);
                         int p = op.plate;
                         NkColor plate = NkColor.malloc(stack).set((byte) p, (byte) (p >> 8), (byte) (p >> 16), (byte) (p >>> 24));
                         float left = op.a - w / 2, top = op.b - h - pad;
                         nk_fill_rect(canvas, r.set(left - pad, top - pad, w + 2 * pad, h + 2 * pad), 0.5f * h, plate);
-                        nk_draw_text(canvas, r.set(left, top, w, h), op.text, userFont, none, colour);
+                        nk_draw_text(canvas, r.set(left, top, w, h), text, userFont, none, colour);
                     }
-                    default -> nk_draw_text(canvas, r.set(op.a, op.b, font.width(op.text) + 2, font.height()), op.text,
-                            userFont, none, colour);
+                    default -> {
+                        String text = GuiText.fit(op.text, font, Math.max(font.height(), width - op.a));
+                        nk_draw_text(canvas, r.set(op.a, op.b, font.width(text) + 2, font.height()), text, userFont, none, colour);
+                    }
                 }
             }
             nk_end(ctx);

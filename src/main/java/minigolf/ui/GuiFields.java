@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.HashMap;
 import java.util.Locale;
 import java.util.Map;
+import org.lwjgl.nuklear.NkRect;
 import org.lwjgl.nuklear.NkVec2;
 import org.lwjgl.system.MemoryStack;
 
@@ -180,11 +181,18 @@ final class GuiFields {
 
     static boolean sliderFloat(String label, float[] value, float min, float max, String format) {
         Gui.place(Gui.takeItemWidth(), Gui.frameHeight());
-        boolean changed;
+        boolean changed = false;
+        Float pressed = trackPress(min, max);
+        if (pressed != null && pressed != value[0]) {
+            value[0] = pressed;
+            changed = true;
+        }
         try (MemoryStack stack = MemoryStack.stackPush()) {
             FloatBuffer v = stack.floats(value[0]);
-            changed = nk_slider_float(Gui.ctx, min, v, max, (max - min) / 500f);
-            if (changed) value[0] = v.get(0);
+            if (nk_slider_float(Gui.ctx, min, v, max, (max - min) / 500f)) {
+                value[0] = v.get(0);
+                changed = true;
+            }
         }
         valueAndLabel(String.format(Locale.ROOT, format, value[0]), label);
         return changed;
@@ -192,14 +200,37 @@ final class GuiFields {
 
     static boolean sliderInt(String label, int[] value, int min, int max) {
         Gui.place(Gui.takeItemWidth(), Gui.frameHeight());
-        boolean changed;
+        boolean changed = false;
+        Float pressed = trackPress(min, max);
+        if (pressed != null && Math.round(pressed) != value[0]) {
+            value[0] = Math.round(pressed);
+            changed = true;
+        }
         try (MemoryStack stack = MemoryStack.stackPush()) {
             IntBuffer v = stack.ints(value[0]);
-            changed = nk_slider_int(Gui.ctx, min, v, max, 1);
-            if (changed) value[0] = v.get(0);
+            if (nk_slider_int(Gui.ctx, min, v, max, 1)) {
+                value[0] = v.get(0);
+                changed = true;
+            }
         }
         valueAndLabel(Integer.toString(value[0]), label);
         return changed;
+    }
+
+    /**
+     * Where a press on the slider just placed, held down, puts its value: Nuklear's slider moves
+     * only when its knob is dragged, so a click elsewhere on the track did nothing (the new-game
+     * players slider "ignored clicks"). Null when the left button was not pressed on the slider.
+     */
+    private static Float trackPress(float min, float max) {
+        float[] b = Gui.lastItemRect();
+        var in = Gui.ctx.input();
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            NkRect r = NkRect.malloc(stack).set(b[0], b[1], b[2], b[3]);
+            if (b[2] <= 0 || !nk_input_has_mouse_click_down_in_rect(in, NK_BUTTON_LEFT, r, true)) return null;
+        }
+        float f = Math.max(0f, Math.min(1f, (in.mouse().pos().x() - b[0]) / b[2]));
+        return min + f * (max - min);
     }
 
     private static void valueAndLabel(String value, String label) {
@@ -211,6 +242,7 @@ final class GuiFields {
         float w = Gui.takeItemWidth(), h = Gui.frameHeight();
         Gui.place(w, h);
         int sel = items.length == 0 ? 0 : Math.max(0, Math.min(selected.get(), items.length - 1));
+        items = java.util.Arrays.stream(items).map(Gui::fitted).toArray(String[]::new);
         float widest = w;
         for (String item : items) widest = Math.max(widest, Gui.textWidth(item) + 40 * Gui.font.height() / 16);
         var style = Gui.ctx.style().window();

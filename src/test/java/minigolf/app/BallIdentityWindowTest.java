@@ -1,6 +1,7 @@
 package minigolf.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -83,7 +84,16 @@ class BallIdentityWindowTest {
         assertEquals(app.game().player(0).y(), ringed[0].y(), 1e-6);
         assertEquals(List.of("Ann", "Bob", "Cy"), tags.stream().map(GameScreen.NameTag::name).toList());
         assertEquals(List.of(true, false, false), tags.stream().map(GameScreen.NameTag::current).toList(), "Ann's tag is gold");
-        for (int i = 0; i < 3; i++) assertTrue(tags.get(i).y() < centres.get(i)[1], "the tag stands over the ball");
+        for (int i = 0; i < 3; i++) {
+            GameScreen.NameTag t = tags.get(i);
+            assertTrue(t.y() < centres.get(i)[1], "the tag stands over the ball");
+            assertEquals(centres.get(i)[0], t.x(), 1.5, "straight over it");
+            for (int j = 0; j < i; j++) {
+                GameScreen.NameTag u = tags.get(j);
+                assertFalse(NameTagLayout.overlap(t.x(), t.y(), t.width(), t.height(), u.x(), u.y(), u.width(), u.height()),
+                        t + " covers " + u);
+            }
+        }
     }
 
     @Test

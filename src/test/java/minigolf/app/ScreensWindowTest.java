@@ -71,6 +71,25 @@ class ScreensWindowTest {
         shot("paused", a -> a.setScreen(a.screens().pause()), a -> a.screens().pause(), List.of(Player.human("Ann")));
     }
 
+    @Test
+    void choosingAComputerOpponentLeavesTheFormWhereItWas() throws Exception {
+        // The form grew by the level buttons and re-centred: "Tee off" moved from under the mouse.
+        GameApp app = app(24, null, null);
+        NewGameScreen form = app.screens().newGame();
+        float[][] rects = new float[2][];
+        app.onLoopPass((pass, window) -> {
+            if (pass == 1) app.setScreen(form);
+            if (pass == 10) {
+                rects[0] = form.lastRect();
+                form.chooseOpponent(1, "hard");
+            }
+            if (pass == 20) rects[1] = form.lastRect();
+        });
+        app.run();
+        assertEquals("Bot (Hard)", form.name(1));
+        for (int k = 0; k < 3; k++) assertEquals(rects[0][k], rects[1][k], 0.5f, "x, y, width: " + k);
+    }
+
     /** Presses a key as the window would: the screen shown first, then the keys that work everywhere. */
     private static void press(GameApp app, int key) {
         if (!app.screen().keyPressed(key, 0) && key == GLFW_KEY_F1) app.openHelp();

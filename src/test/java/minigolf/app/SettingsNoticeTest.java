@@ -35,9 +35,10 @@ class SettingsNoticeTest {
         } finally {
             System.setErr(stderr);
         }
-        String problem = store.file() + ": dt must be 1/1000 to 1/30 s, got 4.9E-324";
-        assertEquals("Settings ignored, the defaults are used: " + problem, app.notice());
-        assertEquals("minigolf: settings ignored, the defaults are used: " + problem + "\n",
+        String problem = "dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324";
+        // The player's view names no file; the terminal's line does.
+        assertEquals("Your settings could not be read (" + problem + "); the defaults are used", app.notice());
+        assertEquals("minigolf: settings ignored, the defaults are used: " + store.file() + ": " + problem + "\n",
                 captured.toString(StandardCharsets.UTF_8).replace("\r\n", "\n"));
         assertEquals(UserSettings.DEFAULTS, app.settings());
         assertEquals("{\"dt\": 4.9e-324}", Files.readString(store.file()), "the file is not touched");

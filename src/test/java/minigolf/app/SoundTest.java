@@ -19,7 +19,6 @@ import org.junit.jupiter.api.io.TempDir;
  * OpenAL Soft's {@code wave} driver (ALSOFT_CONF), which writes everything played to a WAV file;
  * a scripted putt must put non-silent samples there, starting when the putt is hit.
  */
-@minigolf.render.NeedsDisplay
 class SoundTest {
     @TempDir
     Path dir;
@@ -122,7 +121,9 @@ class SoundTest {
         return new String(t, java.nio.charset.StandardCharsets.US_ASCII);
     }
 
+    /** The only one of these that opens a window: the synthesis and the device rule run without a display. */
     @Test
+    @minigolf.render.NeedsDisplay
     void aScriptedPuttIsHeard() throws Exception {
         Path wav = dir.resolve("out.wav"), conf = dir.resolve("alsoft.conf"), config = Files.createDirectories(dir.resolve("config"));
         Files.writeString(conf, "[general]\ndrivers = wave\n[wave]\nfile = " + wav + "\n");

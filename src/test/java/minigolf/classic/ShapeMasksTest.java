@@ -80,6 +80,26 @@ class ShapeMasksTest {
         assertFalse(m.contains("\n"));
     }
 
+    /** A sheet whose image is 0 px wide: the reader's own words ("java.lang.IllegalArgumentException: Empty region!") were shown. */
+    @Test
+    void aDamagedSheetIsNamedInThePlayersWords(@TempDir Path dir) throws Exception {
+        Path sheet = dir.resolve("shapes.gif");
+        writeSheet(sheet, 0, ShapeMasks.SHEET_WIDTH, ShapeMasks.SHEET_HEIGHT);
+        byte[] gif = Files.readAllBytes(sheet);
+        int descriptor = 13 + ((gif[10] & 0x80) != 0 ? 3 * (2 << (gif[10] & 7)) : 0); // past the global colour table
+        while (gif[descriptor] == 0x21) { // an extension: its label, then sub-blocks up to an empty one
+            descriptor += 2;
+            while (gif[descriptor] != 0) descriptor += 1 + (gif[descriptor] & 0xFF);
+            descriptor++;
+        }
+        assertEquals(0x2C, gif[descriptor], "the image descriptor");
+        gif[descriptor + 5] = 0;
+        gif[descriptor + 6] = 0;
+        Files.write(sheet, gif);
+        assertEquals(sheet + ": cannot read the image: damaged, or not a GIF or PNG",
+                assertThrows(TrackFormatException.class, () -> ShapeMasks.readSheet(sheet)).getMessage());
+    }
+
     /** The built-in approximation: the shapes whose form the format description fixes. */
     @Test
     void builtInShapes() {

@@ -1,5 +1,6 @@
 package minigolf.classic;
 
+import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -55,6 +56,17 @@ class TrackFileTest {
         assertEquals("Mine", t.name());
         assertNull(t.stats());
         assertTrue(t.categories().isEmpty());
+    }
+
+    /** A name that parsed (up to 200 characters) but no course may carry (128): refused where it stands. */
+    @Test
+    void aNameLongerThanACourseNameIsRefusedOnItsLine() {
+        String name = "n".repeat(129);
+        assertEquals("long.track: line 3 (N): the name is 129 characters long (the limit is 128)",
+                assertThrows(TrackFormatException.class,
+                        () -> TrackFile.parse(Tracks.v1("Me", name, GRASS), "long.track", Optional.empty())).getMessage());
+        assertEquals("n".repeat(128), assertDoesNotThrow(
+                () -> TrackFile.parse(Tracks.v1("Me", "n".repeat(128), GRASS), "ok.track", Optional.empty())).name());
     }
 
     @Test

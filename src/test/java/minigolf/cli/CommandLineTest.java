@@ -97,6 +97,10 @@ class CommandLineTest {
             {"simulate", course("lake.json"), "--velocity", "1,1", "--integrator", "verlet"},
             {"simulate", course("lake.json"), "--velocity", "1,1", "--model", "magic"},
             {"simulate", course("lake.json"), "--velocity", "1,1", "--dt", "-1"},
+            {"simulate", course("lake.json"), "--velocity", "1,1", "--dt", "4.9e-324"}, // ran without end before
+            {"simulate", course("lake.json"), "--velocity", "1,1", "--dt", "1e-9"}, // ran for minutes
+            {"simulate", course("lake.json"), "--velocity", "1,1", "--dt", "0.05"},
+            {"bench-accuracy", course("lake.json"), "--shots", "1", "--dt", "1e-9"},
             {"simulate", dir.resolve("missing.json").toString(), "--velocity", "1,1"},
             {"simulate", broken.toString(), "--velocity", "1,1"},
             {"simulate", course("lake.json")},
@@ -109,7 +113,11 @@ class CommandLineTest {
             "--velocity: 'a' is not a number",
             "--integrator: expected rk4, rk2 or euler, got 'verlet'",
             "--model: expected classic or complete, got 'magic'",
-            "--dt: must be in (0, 0.1] seconds, got -1.0",
+            "--dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got -1.0",
+            "--dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324",
+            "--dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 1.0E-9",
+            "--dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 0.05",
+            "--dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 1.0E-9",
             "missing.json: cannot read: no such file",
             "broken.json: not valid JSON",
             "Missing required option: '--velocity=VX,VY[,VZ]'",
@@ -122,6 +130,15 @@ class CommandLineTest {
             assertTrue(r.err().contains(expected[i]), r.err());
             assertFalse(r.err().contains("\tat "), "no stack trace: " + r.err());
             assertEquals("", r.out());
+        }
+    }
+
+    /** The command line takes every step the settings and saved games take, both ends included. */
+    @Test
+    void theStepRangeOfTheSettingsIsAccepted() {
+        for (String dt : new String[]{"0.001", String.valueOf(1.0 / 30)}) {
+            CliRun r = run("simulate", course("flat.json"), "--velocity", "1,0", "--dt", dt);
+            assertEquals(0, r.code(), dt + ": " + r.err());
         }
     }
 

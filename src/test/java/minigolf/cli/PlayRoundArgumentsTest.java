@@ -43,5 +43,7 @@ class PlayRoundArgumentsTest {
         assertEquals("planner", p.get(1).bot());
         assertEquals("Bot 2 (straight)", p.get(2).name());
         assertEquals("straight", p.get(2).bot());
+        // a level is named as the New game screen names it
+        assertEquals("Bot (Medium)", PlayCommand.seats(List.of("Bot:medium")).get(0).name());
     }
 }

@@ -93,11 +93,19 @@ class CollisionSceneTest {
         }
         CollisionScene one = scene(wall), all = CollisionScene.build(many, (x, y) -> 0, BOUNDS, R);
         Hit a = new Hit(), b = new Hit();
+        int most = 0;
         for (double y = -1.5; y <= 1.5; y += 0.01) {
             boolean hitOne = one.sweep(0, y, R, 2, y + 0.1, R, a, new double[3]);
             assertEquals(hitOne, all.sweep(0, y, R, 2, y + 0.1, R, b, new double[3]), "y " + y);
             if (hitOne) assertEquals(a.fraction, b.fraction, 0, "y " + y);
+            // The broad phase: a sweep by the wall visits the wall's 12 triangles (in each cell it
+            // lies in), never the 499 trunks 3 m away.
+            most = Math.max(most, all.candidates(0, y, 2, y + 0.1));
         }
+        assertTrue(most >= 12 && most <= 4 * 12, "candidates of a sweep by the wall: " + most + " (of 511 shapes)");
+        // Among the trunks a short sweep visits the few round it (each listed in the cells within a ball radius).
+        int among = all.candidates(-6, 4, -5.6, 4.2);
+        assertTrue(among >= 1 && among <= 25, "a sweep among the trunks visits " + among + " entries of 499 trunks");
         assertFalse(all.anyNear(-1, -1, -0.5, -0.5), "nothing is listed near the origin");
     }
 

@@ -217,6 +217,23 @@ class CourseLoaderTest {
         assertEquals("courses/x.json: name: must be a non-empty string", error(edit("\"name\": \"Lake\"", "\"name\": \"\"")));
     }
 
+    /** A name is drawn on screen: 128 characters at most (a 100,000-character name once killed the game when drawn). */
+    @Test
+    void aNameHasAtMost128Characters() throws Exception {
+        assertEquals("courses/x.json: name: too long: 100000 characters (the limit is 128)",
+                error(edit("\"name\": \"Lake\"", "\"name\": \"" + "n".repeat(100_000) + "\"")));
+        assertEquals(128, CourseLoader.parse(BASE.replace("\"name\": \"Lake\"", "\"name\": \"" + "n".repeat(128) + "\""),
+                "courses/x.json").name().length());
+    }
+
+    /** A file that is not JSON at all (a system file a hostile file names): where, and nothing of its words. */
+    @Test
+    void aSyntaxErrorQuotesNoWordOfTheFile() {
+        String m = assertThrows(CourseException.class, () -> CourseLoader.parse("root:x:0:0:root:/root:/bin/bash\n", "x.json")).getMessage();
+        assertTrue(m.startsWith("x.json: not valid JSON at line 1, column 5: Unrecognized token"), m);
+        assertFalse(m.contains("root"), m);
+    }
+
     @Test
     void enumValues() {
         assertEquals("courses/x.json: zones[0].shape.type: expected one of rect, circle, polygon, cells, got \"star\"",

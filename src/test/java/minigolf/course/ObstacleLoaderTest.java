@@ -42,6 +42,28 @@ class ObstacleLoaderTest {
         assertEquals(0.5 * 1.2 * Math.PI * 0.02135 * 0.02135 / (2 * 0.04593), p.dragFactor(), 1e-15);
     }
 
+    /** One box per wall tile, as the classic online game's tracks convert: the largest of 334 plain tracks has 1,788. */
+    @Test
+    void aClassicTrackDrawnTileByTileFitsTheObstacleLimit() throws CourseException {
+        assertEquals(1_788, CourseLoader.parse(withObstacles(tiles(1_788)), "x.json").obstacles().size());
+        assertEquals(2_500, CourseLoader.parse(withObstacles(tiles(2_500)), "x.json").obstacles().size());
+        CourseException e = org.junit.jupiter.api.Assertions.assertThrows(CourseException.class,
+                () -> CourseLoader.parse(withObstacles(tiles(2_501)), "x.json"));
+        assertEquals("x.json: obstacles: too many obstacles: 2501 (the limit is 2500)", e.getMessage());
+    }
+
+    /** {@code n} boxes of 0.1 m on a 50-wide grid of tiles. */
+    private static String tiles(int n) {
+        StringBuilder sb = new StringBuilder();
+        for (int k = 0; k < n; k++) {
+            double x = 0.1 * (k % 50) - 2.5, y = 0.1 * (k / 50) - 2.5;
+            if (k > 0) sb.append(", ");
+            sb.append(String.format(java.util.Locale.ROOT, "{\"type\": \"box\", \"min\": [%.1f, %.1f, 0], \"max\": [%.1f, %.1f, 0.1]}",
+                    x, y, x + 0.1, y + 0.1));
+        }
+        return sb.toString();
+    }
+
     @Test
     void badObstacleDataGivesOneLineErrors() {
         assertEquals("courses/x.json: obstacles[0]: from and to are the same point and thickness is 0: the wall has no extent",

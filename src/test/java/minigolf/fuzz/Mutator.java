@@ -20,6 +20,7 @@ import java.util.Random;
 final class Mutator {
     static final ObjectMapper MAPPER = new ObjectMapper();
     private static final JsonNodeFactory F = JsonNodeFactory.instance;
+    private static final List<String> FILE_FIELDS = List.of("file", "course", "source");
     static final String[] KINDS = {"delete", "swap-type", "extreme-number", "non-finite", "deep-nesting", "huge-array",
             "truncate", "garbage", "bomb", "duplicate-key", "hostile-path", "utf16"};
 
@@ -67,7 +68,8 @@ final class Mutator {
                     List<Slot> slots = new ArrayList<>();
                     collect(root, slots);
                     if (slots.isEmpty()) return new Case(kind, "nothing to mutate", json.getBytes(StandardCharsets.UTF_8));
-                    List<Slot> files = slots.stream().filter(x -> "file".equals(x.field)).toList();
+                    // The fields that name a file: a model's, a round's hole course, a saved round's source.
+                    List<Slot> files = slots.stream().filter(x -> x.field != null && FILE_FIELDS.contains(x.field)).toList();
                     Slot s = kind.equals("hostile-path") && !files.isEmpty() ? files.get(r.nextInt(files.size()))
                             : slots.get(r.nextInt(slots.size()));
                     String detail = s.path + ": " + apply(kind, s, r);
@@ -154,8 +156,11 @@ final class Mutator {
             }
             case "huge-array" -> {
                 int n = 1000 + r.nextInt(300_000);
-                ArrayNode a = F.arrayNode(n);
                 JsonNode element = v.isArray() && v.size() > 0 ? v.get(0) : v;
+                // At most about 12 MB written: past every file limit, but within the test's heap (a grid's row
+                // copied 300,000 times would be gigabytes).
+                n = (int) Math.min(n, 12_000_000L / Math.max(1, element.toString().length() + 1));
+                ArrayNode a = F.arrayNode(n);
                 for (int i = 0; i < n; i++) a.add(element);
                 s.set(a);
                 return n + " copies";

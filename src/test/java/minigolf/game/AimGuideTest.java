@@ -13,7 +13,10 @@ import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-/** The aim guide: the real engine's first second of the shot (flat course: h = 0.1, mu_k = 0.1; lake). */
+/**
+ * The aim guide: the real engine's stroke, in a window or, as the game shows it, whole until it
+ * stops, drops or leaves play, capped at FULL_SECONDS (flat course: h = 0.1, mu_k = 0.1; lake).
+ */
 class AimGuideTest {
     static final World FLAT = GameLauncher.loadBundled("/courses/flat.json");
     static final double MU_G = 0.1 * 9.81;
@@ -99,5 +102,47 @@ class AimGuideTest {
         assertTrue(UserSettings.DEFAULTS.aimGuide());
         assertFalse(UserSettings.DEFAULTS.withAimGuide(false).aimGuide());
         assertFalse(UserSettings.DEFAULTS.withAimGuide(false).withMouseSpeed(2).aimGuide(), "other changes keep it");
+    }
+
+    @Test
+    void theGamesGuideShowsTheWholePuttToItsRestPoint() {
+        // 3 m/s along +x stops after v^2 / (2 mu g) = 4.5872 m, in v / (mu g) = 3.058 s: three times the old window.
+        AimGuide g = AimGuide.preview(FLAT, SimulationSettings.DEFAULT, -3, 0, 3, 0, AimGuide.FULL_SECONDS);
+        assertEquals(Outcome.STOPPED, g.outcome());
+        int last = 3 * (g.pointCount() - 1);
+        assertEquals(-3 + 9 / (2 * MU_G), g.points()[last], 1e-4);
+        assertTrue(g.pointCount() > 3 * 60, "more than three seconds of steps: " + g.pointCount());
+        // Towards the cup (3, 0.5) at the pace that reaches it: the guide ends in the hole.
+        double dx = 6, dy = 0.5, d = Math.hypot(dx, dy), v = Math.sqrt(2 * MU_G * d);
+        assertEquals(Outcome.HOLED, AimGuide.preview(FLAT, SimulationSettings.DEFAULT, -3, 0, v * dx / d, v * dy / d,
+                AimGuide.FULL_SECONDS).outcome(), "the guide shows the putt dropping");
+    }
+
+    @Test
+    void aBallCirclingAConeIsCutAtTheCap() throws Exception {
+        // On the cone (slope 1) a ball spirals in for up to 19 s of motion and more: the guide stops at the cap.
+        World cone = World.load(java.nio.file.Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "hostile",
+                "cone.json"));
+        var start = cone.course().start();
+        AimGuide g = AimGuide.preview(cone, SimulationSettings.DEFAULT, start.x(), start.y(), 0, 4, 1.0);
+        assertNull(g.outcome(), "still rolling after one second");
+        AimGuide full = AimGuide.preview(cone, SimulationSettings.DEFAULT, start.x(), start.y(), 0, 4, AimGuide.FULL_SECONDS);
+        assertTrue(full.pointCount() <= AimGuide.FULL_SECONDS * 60 * 2 + 2, "bounded by the cap: " + full.pointCount());
+    }
+
+    @Test
+    void theWorkerHandsOutTheWholeGuideWithoutWaiting() throws Exception {
+        try (AimGuideWorker worker = new AimGuideWorker()) {
+            SimulationSettings s = SimulationSettings.DEFAULT;
+            assertNull(worker.guide(FLAT, s, -3, 0, 3, 0, 0), "nothing is ready at the first ask: it is worked out meanwhile");
+            for (int i = 0; i < 500 && !worker.isReady(FLAT, -3, 0, 3, 0, 0, s); i++) Thread.sleep(10);
+            AimGuide g = worker.guide(FLAT, s, -3, 0, 3, 0, 0);
+            assertArrayEquals(AimGuide.preview(FLAT, s, -3, 0, 3, 0, AimGuide.FULL_SECONDS).points(), g.points());
+            // A new aim: the last guide stays on show (the same array) until the new one is ready.
+            assertSame(g, worker.guide(FLAT, s, -3, 0, 2, 0, 0));
+            for (int i = 0; i < 500 && !worker.isReady(FLAT, -3, 0, 2, 0, 0, s); i++) Thread.sleep(10);
+            assertEquals(-3 + 4 / (2 * MU_G), worker.guide(FLAT, s, -3, 0, 2, 0, 0).points()[3 * (worker.guide(FLAT, s, -3, 0, 2,
+                    0, 0).pointCount() - 1)], 1e-4);
+        }
     }
 }

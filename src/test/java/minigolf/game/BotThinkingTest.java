@@ -13,7 +13,7 @@ import minigolf.physics.SimulationSettings;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 
-/** What the game shows while a bot thinks (progress, its plan) and how fast Cancel stops it. */
+/** What the game shows while a bot thinks (progress, its plan) and that Cancel stops it. */
 class BotThinkingTest {
     /**
      * No shot holes here (the hole walled in), and on slippery ground (mu_k 0.02) every shot rolls
@@ -34,8 +34,8 @@ class BotThinkingTest {
     }
 
     @Test
-    void everyBotShowsProgressAndStopsWithin50msOfCancel() throws Exception {
-        List<String> slow = new ArrayList<>(), answeredFirst = new ArrayList<>();
+    void everyBotShowsProgressAndStopsOnCancel() throws Exception {
+        List<String> answeredFirst = new ArrayList<>();
         int caught = 0;
         for (String name : BotCatalog.names()) {
             if (name.equals("straight")) continue; // answers at once: nothing to cancel
@@ -49,15 +49,13 @@ class BotThinkingTest {
             }
             caught++;
             assertTrue(turn.progress() > 0, name + " shows progress: " + turn.message());
-            long cancelled = System.nanoTime();
             turn.cancel();
-            turn.join(2_000);
-            double ms = (System.nanoTime() - cancelled) / 1e6;
-            assertTrue(turn.isDone(), name);
+            // The thread ends and says so (within seconds however loaded the machine; that no
+            // simulation starts after a cancel is CountingSimulatorTest's, without a clock).
+            turn.join(30_000);
+            assertTrue(turn.isDone(), name + " ended after Cancel");
             assertEquals("cancelled", turn.failure(), name);
-            if (ms > 50) slow.add(name + String.format(" %.0f ms", ms));
         }
-        assertTrue(slow.isEmpty(), "stopped later than 50 ms after Cancel: " + slow);
         // At most two may give up on their own before the first progress report (newton always
         // does here; astar does when it finds no path quickly on a loaded machine).
         assertTrue(caught >= BotCatalog.names().size() - 3, "caught thinking: " + caught + "; answered first: " + answeredFirst);

@@ -34,7 +34,7 @@ class HighScoresTest {
 
         h.recordRound("R", card("R", List.of("Ann", "Bob"), new int[]{2, 3}, new int[]{1, 3}), ab, d1);
         news = h.recordRound("R", card("R", List.of("Ann", "Bob"), new int[]{2, 2}, new int[]{3, 3}), ab, d2);
-        assertTrue(news.contains(new HighScores.Achievement("Ann", "personal best round: 4 (was 5)")), news.toString());
+        assertTrue(news.contains(new HighScores.Achievement("Ann", "personal best round 4 (was 5)")), news.toString());
         assertTrue(news.contains(new HighScores.Achievement("Ann", "high score #2")), news.toString());
         assertTrue(news.contains(new HighScores.Achievement("Bob", "high score #4")), news.toString());
         // Equal totals: the earlier date first.
@@ -74,5 +74,14 @@ class HighScoresTest {
         SaveGameException e = assertThrows(SaveGameException.class, () -> HighScores.load(file));
         assertEquals(file + ": rounds.R.table[0].date: must be a date like 2026-11-24, got \"yesterday\"", e.getMessage());
         assertEquals(List.of(), HighScores.load(dir.resolve("none.json")).table("R"));
+        // Names are shown on the card: a player's 24 characters, a round's 128, at most.
+        Files.writeString(file, "{\"format\": 1, \"kind\": \"minigolf-high-scores\", \"rounds\": {\"R\": {\"table\":"
+                + " [{\"name\": \"" + "A".repeat(100_000) + "\", \"score\": 4, \"date\": \"2026-11-24\"}], \"players\": {}}}}");
+        assertEquals(file + ": rounds.R.table[0].name: too long: 100000 characters (the limit is 24)",
+                assertThrows(SaveGameException.class, () -> HighScores.load(file)).getMessage());
+        Files.writeString(file, "{\"format\": 1, \"kind\": \"minigolf-high-scores\", \"rounds\": {\"" + "R".repeat(129)
+                + "\": {\"table\": [], \"players\": {}}}}");
+        assertEquals(file + ": rounds: too long: 129 characters (the limit is 128)",
+                assertThrows(SaveGameException.class, () -> HighScores.load(file)).getMessage());
     }
 }

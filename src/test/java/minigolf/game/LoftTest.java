@@ -47,7 +47,7 @@ class LoftTest {
         assertEquals(0, Loft.clamp(-10));
         assertThrows(IllegalArgumentException.class, () -> Loft.velocity(1, 0, 61, 5));
         assertArrayEquals(new double[]{0, 0, 0}, Loft.velocity(0, 0, 30, 5), 0);
-        assertEquals("putt (loft 0 deg)", Loft.describe(0));
-        assertEquals("chip, loft 35 deg", Loft.describe(35));
+        assertEquals("Putt", Loft.describe(0));
+        assertEquals("Chip, 35 degrees up", Loft.describe(35));
     }
 }

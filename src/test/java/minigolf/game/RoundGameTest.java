@@ -123,8 +123,21 @@ class RoundGameTest {
         assertEquals("s.json: scores[0]: must hold one score for each of the 1 players", e.getMessage());
         e = assertThrows(SaveGameException.class, () -> SavedRounds.parse(json.replace("minigolf-saved-round", "x"), "s.json"));
         assertEquals("s.json: kind: must be \"minigolf-saved-round\" (is this a saved round?)", e.getMessage());
+        // A hole whose definition is missing: the path once, not "round.holes[0].definition.round.holes[0].definition".
+        e = assertThrows(SaveGameException.class, () -> SavedRounds.parse(withoutFirstDefinition(json), "s.json"));
+        assertEquals("s.json: round.holes[0].definition: is missing", e.getMessage());
+        // The current hole is a saved game inside the file: named by its path under "hole", not as "s.json (hole)".
+        e = assertThrows(SaveGameException.class, () -> SavedRounds.parse(json.replaceFirst("\"strokeLimit\" : 10", "\"strokeLimit\" : 0"), "s.json"));
+        assertEquals("s.json: hole.strokeLimit: must be 1 to 99, got 0", e.getMessage());
         assertTrue(SavedRounds.isSavedRound(json));
         assertFalse(SavedRounds.isSavedRound("{\"kind\": \"minigolf-saved-game\"}"));
+    }
+
+    private static String withoutFirstDefinition(String json) throws Exception {
+        var mapper = new com.fasterxml.jackson.databind.ObjectMapper();
+        var root = mapper.readTree(json);
+        ((com.fasterxml.jackson.databind.node.ObjectNode) root.get("round").get("holes").get(0)).remove("definition");
+        return mapper.writeValueAsString(root);
     }
 
     @Test

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import minigolf.course.CourseException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -82,6 +83,66 @@ class RoundLoaderTest {
         Files.writeString(dir.resolve("holes/wet.json"), String.format(FLAT, "W").replace("\"0.1\"", "\"x/10\""));
         msg = error("{\"format\": 1, \"name\": \"x\", \"holes\": [{\"course\": \"../holes/wet.json\", \"par\": 2}]}");
         assertEquals("holes[0].course: " + dir.resolve("holes/wet.json") + ": start: (-3, 0) is in water (h = -0.3)", msg);
+    }
+
+    /**
+     * A round from someone else opens course files only in its folder and the folders beside it (the
+     * bundled rounds' ../holes/), never a system file or anything above its collection; what it names
+     * outside is refused before it is opened, so nothing of such a file is shown.
+     */
+    @Test
+    void aRoundOnlyReachesItsFolderAndTheFoldersBesideIt() throws Exception {
+        Files.createDirectories(dir.resolve("mine"));
+        Files.writeString(dir.resolve("mine/c.json"), String.format(FLAT, "C"));
+        Files.createDirectories(dir.resolve("rounds"));
+        Files.writeString(dir.resolve("rounds/d.json"), String.format(FLAT, "D"));
+        Round r = RoundLoader.load(round("{\"format\": 1, \"name\": \"x\", \"holes\": [{\"course\": \"../mine/c.json\", \"par\": 2},"
+                + " {\"course\": \"d.json\", \"par\": 2}, {\"course\": \"../rounds/../holes/a.json\", \"par\": 2}]}"));
+        assertEquals(List.of("Flat C", "Flat D", "Flat A"), r.holes().stream().map(h -> h.world().course().name()).toList());
+        String rule = " (a round names its courses relative to its own file, e.g. ../holes/01-first-tee.json)";
+        for (String[] c : new String[][]{
+                {"/etc/passwd", "refused: an absolute path" + rule},
+                {"../../../../../../../../etc/passwd", "refused: the path leaves the round's folder and the folders beside it" + rule},
+                {"../..", "refused: the path leaves the round's folder and the folders beside it" + rule},
+                {"..", "refused: the path leaves the round's folder and the folders beside it" + rule},
+                {"C:\\\\Windows\\\\win.ini", "refused: an absolute path" + rule},
+                {"..\\\\..\\\\..\\\\etc\\\\passwd", "refused: the path leaves the round's folder and the folders beside it" + rule}}) {
+            String msg = error("{\"format\": 1, \"name\": \"x\", \"holes\": [{\"course\": \"" + c[0] + "\", \"par\": 2}]}");
+            assertEquals("holes[0].course: " + c[0].replace("\\\\", "\\") + ": " + c[1], msg);
+        }
+        // A link in the collection that leads out of it is refused too, and nothing of its target is quoted.
+        Path outside = Files.createTempFile("round-outside", ".json");
+        try {
+            Files.writeString(outside, "root:x:0:0:root:/root:/bin/bash");
+            Files.createSymbolicLink(dir.resolve("holes/link.json"), outside);
+            String msg = error("{\"format\": 1, \"name\": \"x\", \"holes\": [{\"course\": \"../holes/link.json\", \"par\": 2}]}");
+            assertEquals("holes[0].course: ../holes/link.json: refused: a link that leads out of the round's folder and the folders beside it", msg);
+            assertFalse(msg.contains("root"), msg);
+        } finally {
+            Files.deleteIfExists(outside);
+        }
+        // Within the collection a file that is not a course is reported without its content.
+        Files.writeString(dir.resolve("holes/passwd"), "root:x:0:0:root:/root:/bin/bash\n");
+        String msg = error("{\"format\": 1, \"name\": \"x\", \"holes\": [{\"course\": \"../holes/passwd\", \"par\": 2}]}");
+        assertFalse(msg.contains("root"), msg);
+        // The bundled rounds on the classpath: the same rule.
+        assertEquals("/courses/holes/01-first-tee.json", RoundLoader.resourceCourse("/courses/rounds/", "../holes/01-first-tee.json"));
+        for (String escape : new String[]{"../../minigolf/cli/Main.class", "/minigolf/cli/Main.class", "..", "../../x.json"}) {
+            CourseException e = assertThrows(CourseException.class, () -> RoundLoader.resourceCourse("/courses/rounds/", escape));
+            assertEquals(escape + ": refused: the path leaves the round's folder and the folders beside it", e.getMessage());
+        }
+    }
+
+    @Test
+    void namesAndFileNamesLongerThanTheLimitsAreRefused() throws Exception {
+        assertEquals("name: too long: 100000 characters (the limit is 128)",
+                error("{\"format\": 1, \"name\": \"" + "n".repeat(100_000) + "\", \"holes\": []}"));
+        String file = "../holes/" + "a/".repeat(600) + "a.json";
+        assertEquals("holes[0].course: too long: " + file.length() + " characters (the limit is 1024)",
+                error("{\"format\": 1, \"name\": \"x\", \"holes\": [{\"course\": \"" + file + "\", \"par\": 2}]}"));
+        Round r = RoundLoader.load(round("{\"format\": 1, \"name\": \"" + "n".repeat(128) + "\", \"holes\": ["
+                + "{\"course\": \"../holes/a.json\", \"par\": 2}]}"));
+        assertEquals(128, r.name().length());
     }
 
     @Test

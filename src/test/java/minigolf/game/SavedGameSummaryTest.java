@@ -48,4 +48,22 @@ class SavedGameSummaryTest {
         Files.writeString(broken, "{");
         assertEquals("broken.json", SavedGameSummary.read(broken).name(), "an unreadable file: its name");
     }
+
+    /** The list shows what a loaded save could hold, no more: long names are cut, and a FIFO is not read (it would block the menu). */
+    @Test
+    void namesAreCutAndOnlyRegularFilesAreRead() throws Exception {
+        Game g = new Game(GameTest.FLAT, SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 7);
+        Path game = dir.resolve("long.json");
+        String json = SavedGames.toJson(g).replace("\"" + GameTest.FLAT.course().name() + "\"", "\"" + "c".repeat(100_000) + "\"")
+                .replace("\"Ann\"", "\"" + "a".repeat(100_000) + "\"");
+        Files.writeString(game, json);
+        SavedGameSummary s = SavedGameSummary.read(game);
+        assertEquals("c".repeat(125) + "...", s.name());
+        assertEquals(List.of("a".repeat(21) + "..."), s.players());
+        Path fifo = dir.resolve("fifo.json");
+        Process mk = new ProcessBuilder("mkfifo", fifo.toString()).start();
+        org.junit.jupiter.api.Assumptions.assumeTrue(mk.waitFor() == 0, "mkfifo is available");
+        assertEquals("fifo.json", assertTimeoutPreemptively(java.time.Duration.ofSeconds(30), () -> SavedGameSummary.read(fifo)).name(),
+                "listed by its name, not read (reading a FIFO blocks until someone writes)");
+    }
 }

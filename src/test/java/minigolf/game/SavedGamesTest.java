@@ -82,6 +82,16 @@ class SavedGamesTest {
                 () -> SavedGames.parse(good.replaceFirst("\"ball\" : \\[ -3\\.0", "\"ball\" : [ -30.0"), "x.json"));
         assertProblem("x.json: course.hole.radius: must be > 0, got -0.1",
                 () -> SavedGames.parse(good.replace("\"radius\" : 0.1", "\"radius\" : -0.1"), "x.json"));
+        assertProblem("x.json: simulation.dt: must be a number, got null",
+                () -> SavedGames.parse(good.replaceFirst("\"dt\" : [0-9.eE-]+", "\"dt\" : null"), "x.json"));
+        assertProblem("x.json: simulation.dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324",
+                () -> SavedGames.parse(good.replaceFirst("\"dt\" : [0-9.eE-]+", "\"dt\" : 4.9e-324"), "x.json"));
+        assertProblem("x.json: strokeLimit: must be 1 to 99, got 99999999999",
+                () -> SavedGames.parse(good.replace("\"strokeLimit\" : 7", "\"strokeLimit\" : 99999999999"), "x.json"));
+        com.fasterxml.jackson.databind.node.ObjectNode tree = (com.fasterxml.jackson.databind.node.ObjectNode) JsonFields.MAPPER.readTree(good);
+        tree.remove("simulation");
+        String noSimulation = tree.toString();
+        assertProblem("x.json: simulation: is missing", () -> SavedGames.parse(noSimulation, "x.json"));
         assertProblem("x.json: strokeLimit: must be 1 to 99, got 0",
                 () -> SavedGames.parse(good.replace("\"strokeLimit\" : 7", "\"strokeLimit\" : 0"), "x.json"));
         assertProblem("x.json: players[2].penalties: must be 0 to 0, got 1",

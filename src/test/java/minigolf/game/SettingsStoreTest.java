@@ -69,12 +69,21 @@ class SettingsStoreTest {
         SettingsStore store = new SettingsStore(dir);
         Files.writeString(store.file(), "{\"dt\": 5}");
         SaveGameException e = assertThrows(SaveGameException.class, store::load);
-        assertEquals(store.file() + ": dt must be 1/1000 to 1/30 s, got 5.0", e.getMessage());
+        assertEquals(store.file() + ": dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 5.0", e.getMessage());
         String[] problem = new String[1];
         assertEquals(UserSettings.DEFAULTS, store.loadOrDefaults(problem));
         assertEquals(e.getMessage(), problem[0]);
         Files.writeString(store.file(), "{\"integrator\": \"verlet\"}");
         assertEquals(store.file() + ": integrator: must be euler, rk2 or rk4",
+                assertThrows(SaveGameException.class, store::load).getMessage());
+        // The problem named is the real one: a null is not "missing", a huge number is still a whole number.
+        Files.writeString(store.file(), "{\"dt\": null}");
+        assertEquals(store.file() + ": dt: must be a number, got null", assertThrows(SaveGameException.class, store::load).getMessage());
+        Files.writeString(store.file(), "{\"frameLimit\": 99999999999}");
+        assertEquals(store.file() + ": frameLimit: must be 0 to 1000, got 99999999999",
+                assertThrows(SaveGameException.class, store::load).getMessage());
+        Files.writeString(store.file(), "{\"frameLimit\": 2.5}");
+        assertEquals(store.file() + ": frameLimit: must be a whole number, got 2.5",
                 assertThrows(SaveGameException.class, store::load).getMessage());
         Files.writeString(store.file(), "{\"colour\": 1}");
         assertTrue(assertThrows(SaveGameException.class, store::load).getMessage().contains("colour: unknown field"));

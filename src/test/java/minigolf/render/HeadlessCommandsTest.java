@@ -71,11 +71,14 @@ class HeadlessCommandsTest {
     /** bench-render given a round times every hole and writes a table with the load average. */
     @Test
     void benchRenderOfARoundTimesEveryHoleAndWritesATable() throws Exception {
-        Path holes = projectDir().resolve("courses/worlds/canyon").toAbsolutePath();
-        Path round = dir.resolve("two.json");
-        Files.writeString(round, "{\"format\": 1, \"name\": \"Two\", \"holes\": [{\"course\": \""
-                + holes.resolve("01-trailhead.json") + "\", \"par\": 2}, {\"course\": \"" + holes.resolve("09-butte-bowl.json")
-                + "\", \"par\": 2}]}");
+        // A round names its courses relative to its own folder (round files are confined to it and its siblings).
+        Path holes = Files.createDirectories(dir.resolve("worlds/canyon")), rounds = Files.createDirectories(dir.resolve("rounds"));
+        for (String hole : List.of("01-trailhead.json", "09-butte-bowl.json")) {
+            Files.copy(projectDir().resolve("courses/worlds/canyon").resolve(hole), holes.resolve(hole));
+        }
+        Path round = rounds.resolve("two.json");
+        Files.writeString(round, "{\"format\": 1, \"name\": \"Two\", \"holes\": [{\"course\": \"../worlds/canyon/01-trailhead.json\","
+                + " \"par\": 2}, {\"course\": \"../worlds/canyon/09-butte-bowl.json\", \"par\": 2}]}");
         Path table = dir.resolve("table.md");
         Result r = run(List.of(), "bench-render", round.toString(), "--frames", "2", "--size", "160x100", "--quality", "software",
                 "--table", table.toString());

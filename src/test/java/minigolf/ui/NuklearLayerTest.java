@@ -127,6 +127,43 @@ class NuklearLayerTest {
     }
 
     @Test
+    void aButtonIsNeverNarrowerThanItsLabel() {
+        // The final card's "Watch hole" buttons were 24 pixels wide: holes 10 to 18 all showed "1".
+        float[] narrow = new float[4], wide = new float[4];
+        frame(() -> panel(() -> {
+            Gui.button("18##watch", 24, 0);
+            System.arraycopy(Gui.lastItemRect(), 0, narrow, 0, 4);
+            Gui.button("Next hole", 160, 0);
+            System.arraycopy(Gui.lastItemRect(), 0, wide, 0, 4);
+        }));
+        assertTrue(narrow[2] >= Gui.buttonWidth("18"), "the button takes its label's width: " + narrow[2]);
+        assertTrue(Gui.buttonWidth("18") > 24, "two digits do not fit 24 pixels");
+        assertEquals(160, wide[2], 0.5, "a button wider than its label keeps its width");
+    }
+
+    @Test
+    void aClickOnASlidersTrackMovesItThere() {
+        // Nuklear moves a slider only by dragging its knob: the new-game players slider ignored clicks.
+        int[] players = {2};
+        float[] rect = new float[4];
+        Runnable ui = () -> panel(() -> {
+            Gui.setNextItemWidth(200);
+            Gui.sliderInt("Players", players, 1, 4);
+            System.arraycopy(Gui.lastItemRect(), 0, rect, 0, 4);
+        });
+        frame(ui);
+        frame(ui);
+        float cy = rect[1] + rect[3] / 2;
+        for (float[] click : new float[][]{{0.97f, 4}, {0.03f, 1}, {0.6f, 3}}) {
+            layer.mouseMove(rect[0] + click[0] * rect[2], cy);
+            layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+            layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+            for (int i = 0; i < 3; i++) frame(ui);
+            assertEquals((int) click[1], players[0], "a click at " + click[0] + " of the track");
+        }
+    }
+
+    @Test
     void theKeyboardIsTheInterfacesOnlyWhileATextFieldIsEdited() {
         GuiString name = new GuiString("Ann", 32);
         GuiDouble speed = new GuiDouble(1.5);

@@ -27,6 +27,10 @@ class UiFontTest {
             assertTrue(font.hasGlyph('g'));
             assertTrue(font.hasGlyph(0xB2), "superscript two (Latin-1)");
             assertFalse(font.hasGlyph(0x2713), "outside Latin-1: drawn as '?'");
+            // The game's messages: "Holed in 3 — birdie!" showed "Holed in 3 ? birdie!" (Latin-1 only).
+            assertTrue(font.hasGlyph(0x2014), "em dash");
+            assertTrue(font.hasGlyph(0x2013) && font.hasGlyph(0x2019) && font.hasGlyph(0x2026), "en dash, quote, ellipsis");
+            assertTrue(font.advance(0x2014) > font.advance('-'), "an em dash is its own glyph, wider than '-'");
             assertEquals(font.advance('?'), font.advance(0x2713));
             assertTrue(font.coveredPixels() > 5_000, "glyphs were rasterised: " + font.coveredPixels());
             // A proportional font: 'i' is narrower than 'W'.

@@ -224,7 +224,7 @@ public final class PlannerBot extends SearchBot {
                     if (shot != null) return shot;
                 }
                 // Last: many landings, each with a brute-force putt search (only where the budget is
-                // large); on later strokes too (tuning 777-27: 4 -> 3), each within its share of the time left.
+                // large); on later strokes too (tuning 777-27: 4 -> 3), each within its simulations (SearchBounds).
                 TwoStrokeSearch search = new TwoStrokeSearch(stroke, onePuttMap(stroke));
                 shot = search.search();
                 if (shot != null) return shot;

@@ -5,39 +5,37 @@ import minigolf.bot.CountingSimulator;
 /**
  * What one of the full search's brute-force stages ({@link TwoStrokeSearch}, {@link ThreeStrokes})
  * may spend from where it starts: at most a number of simulations, always leaving a reserve of the
- * budget to the strokes after it (so at the game's usual 20,000 such a stage does not run), and a
- * share of the time the token has left, at most a number of seconds. Every stage checks its bounds
- * before each simulation.
+ * budget to the strokes after it (so at the game's usual 20,000 such a stage does not run). Every
+ * stage checks its bounds before each simulation.
+ *
+ * <p>Simulations only, never the clock: a bot's shots depend on its inputs (course, ball, seed,
+ * budget) alone, however loaded the machine. (These bounds once also held a share of the time the
+ * token had left, at most 20-30 s, so the same game gave other shots on a busy machine.) A caller
+ * that must answer in time (the game) sets the token's time limit; when it runs out the bot plays
+ * its best shot so far, which is the caller's choice and no part of the bot's result.
  */
 final class SearchBounds {
     /** Below this many simulations to spend a stage does not start. */
     static final long MIN_SIMULATIONS = 10_000;
-    /** The share of the time left a stage may take. */
-    static final double TIME_SHARE = 0.4;
 
     private final CountingSimulator sim;
-    private final long start, simulations, startNanos;
-    private final double seconds;
-    private final long limit, deadline;
+    private final long start, simulations, limit;
 
-    SearchBounds(CountingSimulator sim, long maxSimulations, long reserve, double maxSeconds) {
-        this(sim, sim.count(), Math.min(maxSimulations, sim.remaining() - reserve), System.nanoTime(),
-                Math.min(maxSeconds, TIME_SHARE * sim.token().secondsLeft()));
+    /** At most {@code maxSimulations} from where {@code sim} stands, leaving {@code reserve} of its budget. */
+    SearchBounds(CountingSimulator sim, long maxSimulations, long reserve) {
+        this(sim.count(), Math.min(maxSimulations, sim.remaining() - reserve), sim);
     }
 
-    private SearchBounds(CountingSimulator sim, long start, long simulations, long startNanos, double seconds) {
+    private SearchBounds(long start, long simulations, CountingSimulator sim) {
         this.sim = sim;
         this.start = start;
         this.simulations = simulations;
-        this.startNanos = startNanos;
-        this.seconds = seconds;
         this.limit = start + simulations;
-        this.deadline = startNanos + (long) (seconds * 1e9);
     }
 
-    /** The first {@code fraction} of these bounds, in simulations and in time (a stage's first part). */
+    /** The first {@code fraction} of these bounds (a stage's first part). */
     SearchBounds first(double fraction) {
-        return new SearchBounds(sim, start, (long) (fraction * simulations), startNanos, fraction * seconds);
+        return new SearchBounds(start, (long) (fraction * simulations), sim);
     }
 
     /** Whether enough is left for the stage to start. */
@@ -47,6 +45,6 @@ final class SearchBounds {
 
     /** Whether the stage may simulate once more. */
     boolean inBounds() {
-        return sim.count() < limit && System.nanoTime() - deadline < 0;
+        return sim.count() < limit;
     }
 }

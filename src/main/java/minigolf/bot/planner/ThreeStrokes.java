@@ -23,9 +23,8 @@ import minigolf.bot.Shot;
  * point); the first landing from which it holes is the stroke, its lay-up and putt kept for the next
  * two strokes.
  *
- * <p>Bounded ({@link SearchBounds}): at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of
- * the budget (so at the game's usual 20,000 it does not run), and at most {@link SearchBounds#TIME_SHARE}
- * of the time the token has left (and {@link #MAX_SECONDS}).
+ * <p>Bounded in simulations ({@link SearchBounds}): at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE}
+ * of the budget (so at the game's usual 20,000 it does not run).
  */
 final class ThreeStrokes {
     static final double SCREEN_STEP = Math.toRadians(2);
@@ -34,8 +33,7 @@ final class ThreeStrokes {
     static final int LOOK_AHEADS = 40;
     static final long MAX_SIMULATIONS = 200_000;
     static final long RESERVE = TwoStrokeSearch.RESERVE;
-    static final double MAX_SECONDS = 20;
-    /** The screen's share of the simulations and the time; the rest is the look-ahead's. */
+    /** The screen's share of the simulations; the rest is the look-ahead's. */
     static final double SCREEN_SHARE = 0.75;
 
     /** A screened landing: its first stroke, where it rests, the lay-ups found from there. */
@@ -53,7 +51,7 @@ final class ThreeStrokes {
     ThreeStrokes(Stroke s, OnePuttMap map) {
         this.s = s;
         this.map = map;
-        this.bounds = new SearchBounds(s.sim, MAX_SIMULATIONS, RESERVE, MAX_SECONDS);
+        this.bounds = new SearchBounds(s.sim, MAX_SIMULATIONS, RESERVE);
         this.screenBounds = bounds.first(SCREEN_SHARE);
         this.speeds = Flatness.isFlat(s.world) ? new double[] {1} : HILL_SPEEDS;
     }

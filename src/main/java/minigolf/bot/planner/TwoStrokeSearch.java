@@ -22,10 +22,9 @@ import minigolf.physics.ShotResult;
  * the distance field), and from each a brute-force putt search ({@link PuttSweep}). The first landing from which
  * one putt holes is the shot; its putt is kept for the next stroke.
  *
- * <p>Bounded ({@link SearchBounds}): at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of the budget to the
- * strokes after it (so with the game's usual budget of 20,000 it does not run), and at most
- * {@link SearchBounds#TIME_SHARE} of the time the token has left (and {@link #MAX_SECONDS}); every
- * simulation checks the token, so a cancel stops it.
+ * <p>Bounded in simulations ({@link SearchBounds}): at most {@link #MAX_SIMULATIONS}, leaving {@link #RESERVE} of
+ * the budget to the strokes after it (so with the game's usual budget of 20,000 it does not run); every
+ * simulation checks the token, so a cancel (or the caller's time limit) stops it.
  */
 final class TwoStrokeSearch {
     static final int DIRECTIONS = 180;
@@ -35,7 +34,6 @@ final class TwoStrokeSearch {
     static final double CELL = 0.25;
     static final long MAX_SIMULATIONS = 300_000;
     static final long RESERVE = 20_000;
-    static final double MAX_SECONDS = 30;
 
     /** A landing: the first shot that rested in the cell, where exactly, and its promise. */
     record Landing(Shot shot, double x, double y, double promise) {
@@ -60,7 +58,7 @@ final class TwoStrokeSearch {
 
     /** This search's bounds from where {@code sim} stands. */
     static SearchBounds bounds(CountingSimulator sim) {
-        return new SearchBounds(sim, MAX_SIMULATIONS, RESERVE, MAX_SECONDS);
+        return new SearchBounds(sim, MAX_SIMULATIONS, RESERVE);
     }
 
     /** Whether the budget left leaves room for the search and the strokes after it. */

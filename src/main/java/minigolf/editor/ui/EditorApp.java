@@ -80,6 +80,8 @@ public final class EditorApp implements WindowApp {
     private boolean problemsStale = true;
     private double lastValidation = -1;
     Dialog dialog = Dialog.NONE;
+    /** Why the recovery dialog offers a course: a session that did not close, or a save that did not finish. */
+    String recoveryReason = "The editor did not close cleanly last time.";
     BotCheck botCheck;
     final GuiInt botChoice = new GuiInt(0);
     private Path playFile;
@@ -117,7 +119,12 @@ public final class EditorApp implements WindowApp {
             float scale = Math.max(1f, window.framebufferHeight() / 900f);
             try (NuklearLayer ui = new NuklearLayer(window.handle(), scale, minigolf.ui.UiFont.EDITOR_SIZE_PIXELS)) {
                 uiLayer = ui;
-                if (recovery.start()) {
+                boolean waiting = recovery.start();
+                if (!waiting && recovery.adoptUnfinishedSave(editor.file())) {
+                    waiting = true;
+                    recoveryReason = "A save of " + editor.file().getFileName() + " did not finish last time.";
+                }
+                if (waiting) {
                     if (options.frames() <= 0) {
                         dialog = Dialog.RECOVERY;
                     } else {
@@ -302,6 +309,14 @@ public final class EditorApp implements WindowApp {
         UserSettings user = SettingsStore.forUser().loadOrDefaults(null);
         botCheck = BotCheck.start(planner, editor.world(), SimulationSettings.DEFAULT, 12, 1,
                 new BotCheck.Conditions(user.noise(), user.hideFrictionFromBots()));
+    }
+
+    /** Opens a course file in the editor; returns whether a save of it that did not finish is now offered. */
+    boolean openFile(Path file) throws CourseException {
+        replaceEditor(CourseEditor.open(file));
+        if (!recovery.adoptUnfinishedSave(file)) return false;
+        recoveryReason = "A save of " + file.getFileName() + " did not finish last time.";
+        return true;
     }
 
     void replaceEditor(CourseEditor next) {

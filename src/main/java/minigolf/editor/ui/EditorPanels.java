@@ -398,8 +398,7 @@ final class EditorPanels {
                     Path p = Path.of(app.pathField.get().trim());
                     if (app.dialog == EditorApp.Dialog.OPEN) {
                         try {
-                            app.replaceEditor(CourseEditor.open(p));
-                            app.dialog = EditorApp.Dialog.NONE;
+                            app.dialog = app.openFile(p) ? EditorApp.Dialog.RECOVERY : EditorApp.Dialog.NONE;
                         } catch (CourseException e) {
                             app.say(e.getMessage());
                         }
@@ -411,7 +410,7 @@ final class EditorPanels {
                 if (Gui.button("Cancel")) app.dialog = EditorApp.Dialog.NONE;
             }
             case RECOVERY -> {
-                Gui.text("The editor did not close cleanly last time.");
+                Gui.text(app.recoveryReason);
                 Gui.text("Recover the unsaved course from " + app.recovery.file() + "?");
                 if (Gui.button("Recover")) {
                     try {

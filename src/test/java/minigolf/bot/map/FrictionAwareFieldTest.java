@@ -60,8 +60,9 @@ class FrictionAwareFieldTest {
     }
 
     private static int strokes(boolean aces, boolean frictionAware) {
+        // No time limit: the game depends on the budget alone (SearchBounds), however loaded the machine.
         Playthrough.Result r = Playthrough.play(new PlannerBot(aces, frictionAware), dirtWithGrassPath(),
-                SimulationSettings.DEFAULT, 20, 20_000, 1, CancellationToken.withTimeLimit(60), BotProgress.NONE);
+                SimulationSettings.DEFAULT, 20, 20_000, 1, CancellationToken.none(), BotProgress.NONE);
         assertTrue(r.holed());
         return r.strokes();
     }

@@ -23,7 +23,8 @@ import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 
 /**
- * {@link ThreeStrokes} on the two held-out tiles where planner-aces took two strokes more than the
+ * {@link ThreeStrokes} on the two tiles it was built on (so 8675309 and 20261124 are tuning seeds now,
+ * no longer held out) where planner-aces took two strokes more than the
  * exhaustive search (issue 13): 8675309-29 (the first stroke is far from the hole; it laid up by the
  * plan and needed 4 more) and 20261124-36 (no two strokes; the lay-up nearest the hole rested in sand).
  */
@@ -117,8 +118,9 @@ class ThreeStrokesTest {
     @Test
     void plannerAcesPlaysBothTilesInThreeWithALargeBudget() {
         for (World w : new World[] {FAR, NEAR}) {
+            // No time limit: the game depends on the budget alone (SearchBounds), however loaded the machine.
             Playthrough.Result r = Playthrough.play(Bots.create("planner-aces"), w, SimulationSettings.DEFAULT, 10,
-                    1_000_000, 1, CancellationToken.withTimeLimit(60), BotProgress.NONE);
+                    1_000_000, 1, CancellationToken.none(), BotProgress.NONE);
             assertTrue(r.holed(), w.course().name());
             // Measured: 74,702 and 324,172 simulations (both 5 strokes before ThreeStrokes; the exhaustive search's games are 3).
             assertEquals(3, r.strokes(), w.course().name());

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The README's game screenshots, through the real game loop (minigolf play --frames ... --screenshot):
+# the start of a three-player hot-seat hole, a computer opponent's turn, and the final card of an
+# 18-hole round between two computer opponents, and the New game screen with the opponents' levels.
+# Needs a display (or Xvfb, as below) and `gradle installDist compileTestJava`. A scratch config folder keeps your settings, names and scores out of them.
+# Usage: tools/readme-screenshots.sh [OUT_DIR]   (default docs/screenshots)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out="${1:-docs/screenshots}"
+mkdir -p "$out"
+config="$(mktemp -d)"
+trap 'rm -rf "$config"' EXIT
+export JAVA_OPTS="-Dminigolf.configDir=$config -Dminigolf.noSound=true ${JAVA_OPTS:-}"
+mg=build/install/minigolf/bin/minigolf
+run() {
+    if [ -n "${DISPLAY:-}" ]; then "$mg" "$@"; else xvfb-run -a -s "-screen 0 1600x1000x24" "$mg" "$@"; fi
+}
+# 1. Hot seat: three balls side by side at the tee of the windmill hole, Ann's ringed, name tags.
+run play courses/holes/03-windmill.json --players Ann,Bob,Cy --frames 90 --screenshot "$out/hot-seat.png" > /dev/null
+# 2. A computer opponent's turn: Hard has teed off on the volcano, its ball rolling with its trail
+#    (the levels think for a moment only: their "thinking" bar is gone by the eighth frame).
+run play courses/holes/07-volcano.json --players Bot:hard,Ann --frames 8 --screenshot "$out/bot-turn.png" > /dev/null
+# 2b. New game: Meadowbrook's 18 holes, Ann and Bob, and a computer opponent with its four levels.
+run_java() {
+    if [ -n "${DISPLAY:-}" ]; then java $JAVA_OPTS "$@"; else xvfb-run -a -s "-screen 0 1600x1000x24" java $JAVA_OPTS "$@"; fi
+}
+run_java -cp "build/classes/java/test:build/classes/java/main:build/resources/main:build/install/minigolf/lib/*" \
+    minigolf.app.NewGameScreenshot "$out/new-game.png" > /dev/null
+# 3. The final card of Meadowbrook's 18 holes, Hard against Medium (the run ends at the card).
+run play --round courses/rounds/meadowbrook-18.json --players Bot:hard,Bot:medium --frames 200000 --time-scale 40 \
+    --screenshot "$out/final-card-18.png"
