@@ -83,7 +83,8 @@ final class CourseFolders {
 
     /**
      * The single holes offered for practice: every hole of the rounds, in their order (each file
-     * once), then the player's own courses. The loose courses beside the rounds are the engine's
+     * once), the practice holes of the course elements ({@code courses/practice/}), then the
+     * player's own courses. The loose courses beside the rounds are the engine's
      * test terrains (a plane, sine hills, a 256 x 256 grid, 200 obstacles): {@code minigolf play
      * FILE} plays them, a player's list does not offer them.
      */
@@ -102,17 +103,25 @@ final class CourseFolders {
                 }
             }
         }
-        add(store.directory().resolve("courses"), true, out, new LinkedHashSet<>());
+        // The practice holes, one course element each (docs/course-format.md, "Practice holes").
+        Set<Path> practice = new LinkedHashSet<>();
+        for (Path dir : shippedFolders()) add(dir.resolve(PRACTICE), false, out, practice, PRACTICE);
+        add(store.directory().resolve("courses"), true, out, new LinkedHashSet<>(), null);
         return out;
     }
 
-    private static void add(Path dir, boolean own, List<CourseEntry> out, Set<Path> seen) {
+    /** The shipped courses' folder of practice holes. */
+    static final String PRACTICE = "practice";
+
+    /** Adds the courses of {@code dir}; a file name seen already (under the same {@code folder}) is offered once. */
+    private static void add(Path dir, boolean own, List<CourseEntry> out, Set<Path> seen, String folder) {
         if (!Files.isDirectory(dir)) return;
         try (Stream<Path> files = Files.list(dir)) {
             for (Path f : files.filter(p -> p.toString().endsWith(".json")).sorted().toList()) {
                 try {
                     String name = CourseLoader.load(f).name();
-                    if (seen.add(f.getFileName())) out.add(new CourseEntry(name, f, own));
+                    Path key = folder == null ? f.getFileName() : Path.of(folder).resolve(f.getFileName());
+                    if (seen.add(key)) out.add(new CourseEntry(name, f, own));
                 } catch (CourseException e) {
                     // not a loadable course: not offered
                 }

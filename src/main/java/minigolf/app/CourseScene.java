@@ -139,6 +139,11 @@ final class CourseScene implements AutoCloseable {
         if (moving) turnToHole = false;
     }
 
+    /** The course clock the moving obstacles are drawn at. */
+    void setClock(double clock) {
+        if (renderer != null) renderer.setClock(clock);
+    }
+
     /**
      * Draws the scene with these balls and aim, the ring round the ball to play ({@code marker},
      * may be null) and the trail behind the ball rolling ({@code rolling}, may be null), then the

@@ -144,6 +144,7 @@ public final class GameApp implements WindowApp {
         // Each world's quiet background loop (setAmbience does nothing when it already plays).
         if (sounds != null) sounds.setAmbience(minigolf.theme.Themes.of(s.course().course().world()).ambience());
         s.directCamera(scene, scene.sinceLastFrame(time), (float) fw / Math.max(1, fh));
+        scene.setClock(s.clock());
         scene.draw(fw, fh, time, s.balls(), s.aim(), s.marker(), s.rolling());
         glViewport(0, 0, fw, fh);
         uiLayer.newFrame();

@@ -50,6 +50,14 @@ abstract class GameScreen implements Screen {
         return views;
     }
 
+    /** The course clock the 3D view shows (moving obstacles): the rolling stroke's, else the game's. */
+    double clock() {
+        Game game = app.play().game();
+        StrokeAnimator animator = app.play().animator();
+        if (animator != null) return animator.clock();
+        return game == null ? app.play().idleClock() : game.clock();
+    }
+
     /** Seat {@code seat}'s ball where it is (the rolling one where its animation has it); none once holed. */
     private void addBall(List<BallView> views, Game game, int seat) {
         BallView b = ball(game, seat);

@@ -101,6 +101,14 @@ final class Hud {
             if (Gui.button("Cancel")) play.cancelBot();
             Gui.end();
         }
+        double waitLeft = play.botWaitLeft();
+        if (!Double.isNaN(waitLeft)) {
+            // A bot timing its shot to the moving obstacles: the planned moment, counting down.
+            Gui.setNextWindowPos(w * 0.5f, h - 60, GuiCond.Always, 0.5f, 1f);
+            Gui.begin("##botwait", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
+            Gui.text(String.format(Locale.ROOT, "Bot waits for its moment: hits in %.1f s", waitLeft));
+            Gui.end();
+        }
     }
 
     /** "Ann to play"; a bot says it is one once ("Robo to play (computer)"; "Bot (planner) to play" as it is). */

@@ -66,6 +66,12 @@ final class PlaySession {
     private Game game;
     private StrokeAnimator animator;
     private BotTurn botTurn;
+    /** A bot's shot waiting for its planned moment (the course clock runs on until then), and how long yet. */
+    private double[] botShot;
+    /** The course clock the waiting bot's shot is to be hit at. */
+    private double botMoment;
+    /** Where the view's clock starts when no game is played (the moving obstacles turn behind the menus). */
+    private final long idleStart = System.nanoTime();
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
     private final BotSeats botSeats = new BotSeats();
     private ShotRecord lastStroke;
@@ -271,6 +277,21 @@ final class PlaySession {
         if (game.isShotInFlight() || game.isOver()) return progress;
         int seat = game.currentPlayer();
         Player p = game.players().get(seat);
+        if (botShot != null) {
+            // The bot's shot waits for its planned moment: the clock runs on to it exactly, then it is hit.
+            if (game.clock() + elapsed * timeScale < botMoment) {
+                game.advanceClock(elapsed * timeScale);
+            } else {
+                game.advanceClockTo(botMoment);
+                double[] shot = botShot;
+                botShot = null;
+                hit(shot[0], shot[1], shot[2]);
+            }
+            return progress;
+        }
+        // The course clock runs while players aim; it stands still while a bot thinks (its shot is
+        // planned for the moment it was asked at).
+        if (botTurn == null && progress != Progress.STROKE_ENDED) game.advanceClock(elapsed * timeScale);
         if (p.isBot()) {
             if (botTurn == null) {
                 ShotPlanner planner = botSeats.planner(seat, p.bot(), game.world());
@@ -284,7 +305,10 @@ final class PlaySession {
             } else if (botTurn.isDone()) {
                 BotTurn done = botTurn;
                 botTurn = null;
-                if (done.shot() != null) {
+                if (done.shot() != null && done.waitSeconds() > 0) {
+                    botShot = done.shot();
+                    botMoment = game.clock() + done.waitSeconds();
+                } else if (done.shot() != null) {
                     hit(done.shot()[0], done.shot()[1], done.shot()[2]);
                 } else {
                     say.accept(p.name() + ": " + done.failure());
@@ -296,6 +320,16 @@ final class PlaySession {
             hit(v[0], v[1], v.length > 2 ? v[2] : 0);
         }
         return progress;
+    }
+
+    /** The view's course clock when no game is played (seconds since the session began). */
+    double idleClock() {
+        return (System.nanoTime() - idleStart) * 1e-9;
+    }
+
+    /** Seconds until a bot's planned shot is hit, or NaN when none waits. */
+    double botWaitLeft() {
+        return botShot == null || game == null ? Double.NaN : Math.max(0, botMoment - game.clock());
     }
 
     /** Stops the bot thinking now (its Cancel button); the bots of this hole are asked afresh. */
@@ -321,6 +355,7 @@ final class PlaySession {
     private void stopPlay() {
         cancelBot();
         botTurn = null;
+        botShot = null;
         animator = null;
     }
 }

@@ -19,6 +19,8 @@ final class ReplayPlayer {
 
     private HoleReplay replay;
     private StrokeAnimator animator;
+    /** The course clock the last frame of the replay showed. */
+    private double lastClock;
     private ShotRecord shot;
     private int replayed, mismatches;
 
@@ -39,6 +41,7 @@ final class ReplayPlayer {
     Step advance(double elapsed, double timeScale, double dt, Supplier<TrajectoryListener> listener) {
         if (animator != null) {
             animator.advance(elapsed, timeScale);
+            lastClock = animator.clock();
             if (!animator.isFinished()) return Step.ROLLING;
             replayed++;
             if (!HoleReplay.sameEnd(shot, animator.stroke())) mismatches++;
@@ -51,6 +54,10 @@ final class ReplayPlayer {
     }
 
     /** The rolling stroke's animation, or null between strokes and when no replay runs. */
+    double lastClock() {
+        return lastClock;
+    }
+
     StrokeAnimator animator() {
         return animator;
     }

@@ -87,6 +87,12 @@ final class ReplayScreen extends GameScreen {
     }
 
     @Override
+    double clock() {
+        StrokeAnimator a = replayer.animator();
+        return a == null ? replayer.lastClock() : a.clock();
+    }
+
+    @Override
     List<BallView> balls() {
         List<BallView> views = new ArrayList<>();
         StrokeAnimator a = replayer.animator();

@@ -16,11 +16,25 @@ import minigolf.physics.World;
  * @param seed         the seed for this stroke: same request, same shot
  * @param noise        the noise the played stroke will get (public knowledge, like the course);
  *                     the simulator itself is always exact
+ * @param clock        the course clock (s) when the bot is asked: a shot with no wait is played then
+ *                     (where obstacles move; the simulator plays its shots at this clock plus their wait)
  */
 public record BotRequest(CountingSimulator simulator, double ballX, double ballY, int strokesTaken, long seed,
-                         NoiseModel noise) {
+                         NoiseModel noise, double clock) {
     public BotRequest {
         if (noise == null) throw new IllegalArgumentException("noise must be given (NoiseModel.NONE for none)");
+        if (!(clock >= 0) || !Double.isFinite(clock)) throw new IllegalArgumentException("the clock must be >= 0, got " + clock);
+    }
+
+    /** A request at course clock 0. */
+    public BotRequest(CountingSimulator simulator, double ballX, double ballY, int strokesTaken, long seed,
+                      NoiseModel noise) {
+        this(simulator, ballX, ballY, strokesTaken, seed, noise, 0);
+    }
+
+    /** The same request at another moment of the course clock. */
+    public BotRequest at(double newClock) {
+        return new BotRequest(simulator, ballX, ballY, strokesTaken, seed, noise, newClock);
     }
 
     /** A request without noise. */

@@ -49,6 +49,8 @@ public final class CountingSimulator {
         final List<String> errors = new ArrayList<>();
         /** Whoever plays the shot can only putt (the game): bots must not choose chips. */
         boolean puttsOnly;
+        /** The course clock the shots are played at (plus their wait). */
+        double clock;
 
         Account(long budget, CancellationToken token, BotProgress progress) {
             this.budget = budget;
@@ -64,6 +66,8 @@ public final class CountingSimulator {
     private final boolean primary;
     /** The simulator of the real world (not a variant): all its results are real, for {@link #knownResult}. */
     private final boolean real;
+    /** Whether obstacles move in this world (then the clock and a shot's wait matter). */
+    private final boolean moving;
     /** The watchdog every shot runs under, reused (a shot allocates nothing for it). */
     private final Watchdog watchdog;
 
@@ -82,6 +86,7 @@ public final class CountingSimulator {
     }
 
     private CountingSimulator(World world, Simulator simulator, Account account, boolean primary, boolean real) {
+        this.moving = world.moving() != null;
         this.world = world;
         this.simulator = simulator;
         this.account = account;
@@ -216,6 +221,7 @@ public final class CountingSimulator {
      */
     public ShotResult simulate(double x, double y, Shot shot, TrajectoryListener listener) {
         account.token.throwIfCancelled();
+        if (moving && shot.waitSeconds() != 0) return simulateLater(x, y, shot, listener);
         if (account.used >= account.budget) throw new BudgetExhaustedException(account.budget);
         Shot limited = limit(shot);
         account.used++;
@@ -228,7 +234,7 @@ public final class CountingSimulator {
         watchdog.steps = 0;
         ShotResult result;
         try {
-            result = play(simulator, x, y, limited, watchdog);
+            result = play(simulator, account.clock, x, y, limited, watchdog);
         } finally {
             watchdog.inner = null;
             watchdog.busy = false;
@@ -249,11 +255,55 @@ public final class CountingSimulator {
     }
 
     /**
-     * Runs a shot on the engine: a putt with the rolling call, a shot with a vertical component
-     * (a chip) with the 3-component one, exactly as the game plays them.
+     * A shot with a wait, where obstacles move: played at the clock plus its wait. Counted as any
+     * simulation, but not kept as a candidate of this moment (its result belongs to a later one).
      */
+    private ShotResult simulateLater(double x, double y, Shot shot, TrajectoryListener listener) {
+        if (account.used >= account.budget) throw new BudgetExhaustedException(account.budget);
+        account.used++;
+        if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
+        Watchdog watchdog = new Watchdog(account.token);
+        watchdog.inner = listener;
+        return play(simulator, account.clock, x, y, limit(shot), watchdog);
+    }
+
+    /**
+     * The course clock (s) the shots are played at (plus their wait): the moment the bot is asked.
+     * Where obstacles move a new moment forgets what was simulated at the old one (its results and
+     * best shot): the same shot does something else now.
+     */
+    public void setClock(double clock) {
+        if (!(clock >= 0) || !Double.isFinite(clock)) throw new IllegalArgumentException("the clock must be >= 0, got " + clock);
+        if (moving && clock != account.clock) {
+            account.results.clear();
+            account.best = null;
+            account.bestResult = null;
+            account.bestScore = Double.POSITIVE_INFINITY;
+        }
+        account.clock = clock;
+    }
+
+    public double clock() {
+        return account.clock;
+    }
+
+    /** Runs a shot on the engine at course clock 0 (see {@link #play(Simulator, double, double, double, Shot, TrajectoryListener)}). */
     public static ShotResult play(Simulator simulator, double x, double y, Shot shot, TrajectoryListener listener) {
+        return play(simulator, 0, x, y, shot, listener);
+    }
+
+    /**
+     * Runs a shot on the engine: a putt with the rolling call, a shot with a vertical component
+     * (a chip) with the 3-component one, exactly as the game plays them; where obstacles move, at
+     * course clock {@code clock} plus the shot's wait.
+     */
+    public static ShotResult play(Simulator simulator, double clock, double x, double y, Shot shot, TrajectoryListener listener) {
         try {
+            if (simulator.world().moving() != null) {
+                double at = clock + shot.waitSeconds();
+                if (shot.isPutt()) return simulator.simulatePuttAt(at, x, y, shot.vx(), shot.vy(), listener);
+                return simulator.simulateAt(at, x, y, shot.vx(), shot.vy(), shot.vz(), listener, false);
+            }
             if (shot.isPutt()) return simulator.simulate(x, y, shot.vx(), shot.vy(), listener);
             return simulator.simulate(x, y, shot.vx(), shot.vy(), shot.vz(), listener, false);
         } catch (minigolf.physics.NonFiniteMotionException e) {

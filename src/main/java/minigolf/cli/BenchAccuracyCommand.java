@@ -65,17 +65,23 @@ final class BenchAccuracyCommand implements Callable<Integer> {
         ObjectNode worst = null;
         double worstError = -1;
         double x0 = world.course().start().x(), y0 = world.course().start().y();
+        // With moving obstacles each shot is played at a random moment of their longest period.
+        double period = 0;
+        for (var o : world.course().obstacles()) {
+            if (o instanceof minigolf.course.Obstacle.Moving m) period = Math.max(period, m.motion().period());
+        }
         for (int i = 0; i < shots; i++) {
             double[] v = random.next();
-            ReferenceResult b = reference.simulate(x0, y0, v[0], v[1]);
+            double clock = period > 0 ? random.clock(period) : 0;
+            ReferenceResult b = reference.simulateAt(clock, x0, y0, v[0], v[1], 0);
             if (!b.covered()) {
                 notCovered.merge(b.note(), 1, Integer::sum);
                 continue;
             }
             covered++;
-            ShotResult a = tested.simulate(x0, y0, v[0], v[1]);
+            ShotResult a = tested.simulateAt(clock, x0, y0, v[0], v[1], 0);
             double error = Math.hypot(a.endX() - b.endX(), a.endY() - b.endY());
-            double spread = Conditioning.spread(reference, x0, y0, v[0], v[1], b);
+            double spread = Conditioning.spread(reference, clock, x0, y0, v[0], v[1], b);
             if (Conditioning.illConditioned(spread)) {
                 ObjectNode shot = illConditioned.addObject();
                 shot.put("shot", i);
@@ -94,6 +100,7 @@ final class BenchAccuracyCommand implements Callable<Integer> {
             if (error > worstError) {
                 worstError = error;
                 worst = worstShot(i, v, a, b, error);
+                if (period > 0) worst.put("clock", clock);
             }
         }
         double[] sorted = Arrays.copyOf(errors, compared);

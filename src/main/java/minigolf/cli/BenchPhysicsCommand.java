@@ -131,7 +131,8 @@ final class BenchPhysicsCommand implements Callable<Integer> {
 
         void warmUp(long until) {
             RandomShots warmUp = new RandomShots(first + 1_000_003L, world.physics().maxSpeed());
-            while (System.nanoTime() < until) run(warmUp.next());
+            int k = 0;
+            while (System.nanoTime() < until) run(warmUp.next(), clockOf(k++));
         }
 
         void time() {
@@ -142,13 +143,22 @@ final class BenchPhysicsCommand implements Callable<Integer> {
             boolean cpu = bean.isCurrentThreadCpuTimeSupported();
             long cpuStart = cpu ? bean.getCurrentThreadCpuTime() : 0;
             long bytesStart = sun != null ? sun.getThreadAllocatedBytes(id) : -1;
-            for (int i = first; i < velocities.length; i += stride) results[i] = run(velocities[i]);
+            for (int i = first; i < velocities.length; i += stride) results[i] = run(velocities[i], clockOf(i));
             if (cpu) cpuNanos = bean.getCurrentThreadCpuTime() - cpuStart;
             if (sun != null && bytesStart >= 0) bytes = sun.getThreadAllocatedBytes(id) - bytesStart;
         }
 
-        private ShotResult run(double[] v) {
-            return simulator.simulate(world.course().start().x(), world.course().start().y(), v[0], v[1]);
+        /**
+         * Shot i's course clock where obstacles move: spread evenly over 60 s (the golden ratio's
+         * sequence), so the shots meet the moving obstacles at every phase; 0 elsewhere.
+         */
+        private double clockOf(int i) {
+            return world.moving() == null ? 0 : 60 * ((i * 0.6180339887498949) % 1.0);
+        }
+
+        private ShotResult run(double[] v, double clock) {
+            double x = world.course().start().x(), y = world.course().start().y();
+            return clock == 0 ? simulator.simulate(x, y, v[0], v[1]) : simulator.simulateAt(clock, x, y, v[0], v[1], 0);
         }
     }
 }

@@ -21,6 +21,8 @@ import minigolf.bot.experiment.Progress;
 import minigolf.bot.experiment.Results;
 import minigolf.bot.experiment.RunLog;
 import minigolf.bot.experiment.RunPlan;
+import minigolf.bot.experiment.RunRecord;
+import minigolf.bot.play.Playthrough;
 import minigolf.bot.experiment.Shard;
 import minigolf.bot.play.Bots;
 import picocli.CommandLine.Command;
@@ -144,14 +146,23 @@ final class ExperimentCommand implements Callable<Integer> {
                     + ", " + pending.length + " to run on " + workers + " thread(s); rows in " + logFile);
             err.flush();
             try (RunLog log = RunLog.openForAppend(logFile, contents);
+                 ShotLog shots = new ShotLog(folder.resolve(ShotLog.FILE_NAME));
                  Progress progress = new Progress(err, Progress.onTerminal(), total, contents.rows().size(), 60)) {
-                experiment.run(pending, (run, record) -> {
-                    try {
-                        log.append(run, record);
-                    } catch (IOException e) {
-                        throw new UncheckedIOException(e);
+                experiment.run(pending, new Experiment.Sink() {
+                    @Override
+                    public void played(int run, RunPlan.Run description, Playthrough.Result result) throws IOException {
+                        shots.append(run, description, result);
                     }
-                    progress.finished();
+
+                    @Override
+                    public void finished(int run, RunRecord record) {
+                        try {
+                            log.append(run, record);
+                        } catch (IOException e) {
+                            throw new UncheckedIOException(e);
+                        }
+                        progress.finished();
+                    }
                 });
             }
             if (shard != null) {

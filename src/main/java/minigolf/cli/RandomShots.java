@@ -12,6 +12,11 @@ final class RandomShots {
         this.maxSpeed = maxSpeed;
     }
 
+    /** A moment of the course clock in [0, period) (for courses with moving obstacles). */
+    double clock(double period) {
+        return random.nextDouble() * period;
+    }
+
     /** The next shot's velocity {vx, vy}. */
     double[] next() {
         double angle = random.nextDouble() * 2 * Math.PI;

@@ -90,6 +90,8 @@ final class SolveCommand implements Callable<Integer> {
             ObjectNode shot = shots.addObject();
             shot.set("velocity", velocity(s.shot()));
             shot.set("intended", velocity(s.intended()));
+            // The wait before the shot (s): where obstacles move, a bot times its shot (issue 24).
+            shot.put("wait", s.intended().waitSeconds());
             // With position noise the stroke did not start where the ball lay: where it did.
             if (conditions.noise().position() > 0) shot.set("start", Json.array(s.startX(), s.startY()));
             shot.put("outcome", s.result().outcome().jsonName());
@@ -116,7 +118,7 @@ final class SolveCommand implements Callable<Integer> {
         return out;
     }
 
-    private static ArrayNode velocity(Shot s) {
+    static ArrayNode velocity(Shot s) {
         return s.isPutt() ? Json.array(s.vx(), s.vy()) : Json.array(s.vx(), s.vy(), s.vz());
     }
 }

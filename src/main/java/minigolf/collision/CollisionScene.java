@@ -8,8 +8,9 @@ import minigolf.course.HeightProbe;
 import minigolf.course.Obstacle;
 
 /**
- * The course's obstacles as static collision geometry for a ball of one radius: triangles (walls,
- * boxes, models) and vertical cylinders (trees), in a uniform grid over the course plane.
+ * The course's still obstacles as static collision geometry for a ball of one radius: triangles
+ * (walls, boxes, models) and vertical cylinders (trees, bumpers), in a uniform grid over the course
+ * plane. Gates and moving obstacles are left out (they have their own collision code).
  *
  * <p>Broad phase: each shape is listed in every grid cell its bounding box touches; a sweep visits
  * only the cells its own bounding box touches and skips shapes whose 3-D bounding box it misses,
@@ -109,8 +110,10 @@ public final class CollisionScene {
         List<Integer> triOwner = new ArrayList<>(), cylOwner = new ArrayList<>();
         for (int k = 0; k < obstacles.size(); k++) {
             Obstacle o = obstacles.get(k);
-            if (o instanceof Obstacle.Tree tree) {
-                cyls.add(ObstacleGeometry.treeCylinder(tree, ground));
+            // Gates and moving obstacles have their own collision code (minigolf.collision.Gates, MovingObstacles).
+            if (!ObstacleGeometry.isStillSolid(o)) continue;
+            if (ObstacleGeometry.isCylinder(o)) {
+                cyls.add(ObstacleGeometry.cylinder(o, ground));
                 cylRest.add(o.restitution());
                 cylOwner.add(k);
                 continue;
@@ -161,6 +164,19 @@ public final class CollisionScene {
 
     public double ballRadius() {
         return radius;
+    }
+
+    /** The box round every shape, {minX, minY, minZ, maxX, maxY, maxZ} (all infinities when empty). */
+    public double[] extent() {
+        double[] e = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int b = 0; b < boxes.length; b += 6) {
+            for (int k = 0; k < 3; k++) {
+                e[k] = Math.min(e[k], boxes[b + k]);
+                e[k + 3] = Math.max(e[k + 3], boxes[b + k + 3]);
+            }
+        }
+        return e;
     }
 
     public int triangleCount() {
@@ -249,12 +265,7 @@ public final class CollisionScene {
                             : cylinder(s - triangleCount, x0, y0, z0, dx, dy, dz, best, scratch);
                     if (t < best) {
                         best = t;
-                        hit.fraction = t;
-                        hit.nx = scratch[0];
-                        hit.ny = scratch[1];
-                        hit.nz = scratch[2];
-                        hit.restitution = restitution[s];
-                        hit.obstacle = obstacleOf[s];
+                        hit.still(t, scratch[0], scratch[1], scratch[2], restitution[s], obstacleOf[s]);
                     }
                 }
             }

@@ -9,4 +9,36 @@ public final class Hit {
     public double restitution;
     /** Index of the obstacle in the course's list. */
     public int obstacle;
+    /** The velocity of the obstacle's surface at the contact (m/s): 0 for a still obstacle, set for a moving one. */
+    public double ux, uy, uz;
+    /** Whether the obstacle hit moves (then {@link #ux}, {@link #uy}, {@link #uz} hold its velocity there). */
+    public boolean moving;
+
+    /** A contact with a still obstacle. */
+    public void still(double fraction, double nx, double ny, double nz, double restitution, int obstacle) {
+        this.fraction = fraction;
+        this.nx = nx;
+        this.ny = ny;
+        this.nz = nz;
+        this.restitution = restitution;
+        this.obstacle = obstacle;
+        ux = 0;
+        uy = 0;
+        uz = 0;
+        moving = false;
+    }
+
+    /** Copies another contact into this one. */
+    public void set(Hit other) {
+        fraction = other.fraction;
+        nx = other.nx;
+        ny = other.ny;
+        nz = other.nz;
+        restitution = other.restitution;
+        obstacle = other.obstacle;
+        ux = other.ux;
+        uy = other.uy;
+        uz = other.uz;
+        moving = other.moving;
+    }
 }

@@ -33,19 +33,35 @@ public final class ObstacleGeometry {
         if (obstacle instanceof Obstacle.Wall w) return wall(w, ground);
         if (obstacle instanceof Obstacle.Box b) return box(b);
         if (obstacle instanceof Obstacle.Model m) return model(m);
-        throw new IllegalArgumentException("a tree is a cylinder, not triangles: use treeCylinder");
+        throw new IllegalArgumentException(obstacle.getClass().getSimpleName()
+                + " is not made of triangles (a tree or bumper is a cylinder: use cylinder; a gate is a line)");
+    }
+
+    /** Whether the obstacle is a vertical cylinder (a tree's trunk, a bumper), see {@link #cylinder}. */
+    public static boolean isCylinder(Obstacle obstacle) {
+        return obstacle instanceof Obstacle.Tree || obstacle instanceof Obstacle.Bumper;
+    }
+
+    /** A tree trunk or a bumper: {cx, cy, radius, zBottom, zTop}. */
+    public static double[] cylinder(Obstacle obstacle, HeightProbe ground) {
+        if (obstacle instanceof Obstacle.Tree t) return cylinder(t.position().x(), t.position().y(), t.radius(), t.height(), ground);
+        Obstacle.Bumper b = (Obstacle.Bumper) obstacle;
+        return cylinder(b.position().x(), b.position().y(), b.radius(), b.height(), ground);
     }
 
     /** A tree trunk: {cx, cy, radius, zBottom, zTop}. */
     public static double[] treeCylinder(Obstacle.Tree tree, HeightProbe ground) {
-        double cx = tree.position().x(), cy = tree.position().y(), r = tree.radius();
+        return cylinder(tree, ground);
+    }
+
+    private static double[] cylinder(double cx, double cy, double r, double height, HeightProbe ground) {
         double lowest = Double.POSITIVE_INFINITY;
         for (int k = 0; k <= GROUND_SAMPLES; k++) {
             double a = 2 * Math.PI * k / GROUND_SAMPLES;
             lowest = Math.min(lowest, ground.height(cx + r * Math.cos(a), cy + r * Math.sin(a)));
         }
         lowest = Math.min(lowest, ground.height(cx, cy));
-        return new double[] {cx, cy, r, lowest - FOOTING, ground.height(cx, cy) + tree.height()};
+        return new double[] {cx, cy, r, lowest - FOOTING, ground.height(cx, cy) + height};
     }
 
     private static double[] wall(Obstacle.Wall w, HeightProbe ground) {
@@ -131,10 +147,18 @@ public final class ObstacleGeometry {
         return out;
     }
 
-    /** Every obstacle's triangles (trees excluded) concatenated, for drawing or checks. */
+    /** The number of triangles of the still obstacles (walls, boxes, models: not cylinders, gates or moving ones). */
     public static int triangleCount(List<Obstacle> obstacles, HeightProbe ground) {
         int n = 0;
-        for (Obstacle o : obstacles) if (!(o instanceof Obstacle.Tree)) n += triangles(o, ground).length / 9;
+        for (Obstacle o : obstacles) if (isStillSolid(o) && !isCylinder(o)) n += triangles(o, ground).length / 9;
         return n;
+    }
+
+    /**
+     * Whether the obstacle is still solid geometry of the course's collision scene: not a gate (which
+     * the ball crosses one way) and not a moving obstacle (collided in its own frame).
+     */
+    public static boolean isStillSolid(Obstacle obstacle) {
+        return !(obstacle instanceof Obstacle.Gate) && !(obstacle instanceof Obstacle.Moving);
     }
 }

@@ -9,16 +9,34 @@ import minigolf.theme.Themes;
  * world it is set in (minigolf.theme.Themes; scenery, light and materials only, never physics).
  */
 public record Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
-                     Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, String world) {
+                     Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, List<PushZone> pushZones,
+                     List<Magnet> magnets, List<Teleport> teleports, String world) {
     public static final int FORMAT = 1;
 
     public Course {
         zones = List.copyOf(zones);
         obstacles = List.copyOf(obstacles);
+        pushZones = List.copyOf(pushZones);
+        magnets = List.copyOf(magnets);
+        teleports = List.copyOf(teleports);
         if (world == null) world = Themes.DEFAULT_ID;
     }
 
     /** A course in the default world. */
+    public Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
+                  Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, List<PushZone> pushZones,
+                  List<Magnet> magnets, List<Teleport> teleports) {
+        this(format, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones, magnets, teleports,
+                Themes.DEFAULT_ID);
+    }
+
+    /** A course without push zones, magnets and teleports. */
+    public Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
+                  Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, String world) {
+        this(format, name, terrain, bounds, physics, start, hole, zones, obstacles, List.of(), List.of(), List.of(), world);
+    }
+
+    /** A course in the default world without push zones, magnets and teleports. */
     public Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
                   Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles) {
         this(format, name, terrain, bounds, physics, start, hole, zones, obstacles, Themes.DEFAULT_ID);
@@ -31,14 +49,29 @@ public record Course(int format, String name, TerrainSpec terrain, Bounds bounds
     }
 
     public Course withPhysics(PhysicsSettings newPhysics) {
-        return new Course(format, name, terrain, bounds, newPhysics, start, hole, zones, obstacles, world);
+        return new Course(format, name, terrain, bounds, newPhysics, start, hole, zones, obstacles, pushZones, magnets,
+                teleports, world);
     }
 
     public Course withObstacles(List<Obstacle> newObstacles) {
-        return new Course(format, name, terrain, bounds, physics, start, hole, zones, newObstacles, world);
+        return new Course(format, name, terrain, bounds, physics, start, hole, zones, newObstacles, pushZones, magnets,
+                teleports, world);
     }
 
     public Course withWorld(String newWorld) {
-        return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, newWorld);
+        return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones, magnets,
+                teleports, newWorld);
+    }
+
+    /** The same course with other push zones, magnets and teleports. */
+    public Course withElements(List<PushZone> newPushZones, List<Magnet> newMagnets, List<Teleport> newTeleports) {
+        return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, newPushZones, newMagnets,
+                newTeleports, world);
+    }
+
+    /** Whether any obstacle moves (its motion is a function of the course clock). */
+    public boolean hasMovingObstacles() {
+        for (Obstacle o : obstacles) if (o instanceof Obstacle.Moving) return true;
+        return false;
     }
 }

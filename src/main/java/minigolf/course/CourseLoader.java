@@ -36,7 +36,8 @@ import java.util.function.Function;
  */
 public final class CourseLoader {
     static final List<String> TOP_FIELDS = List.of(
-            "format", "name", "world", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles");
+            "format", "name", "world", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles", "pushZones",
+            "magnets", "teleports");
     static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
     static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction",
             "deletedCells");
@@ -50,10 +51,20 @@ public final class CourseLoader {
     static final List<String> RECT_FIELDS = List.of("type", "min", "max");
     static final List<String> CIRCLE_FIELDS = List.of("type", "center", "radius");
     static final List<String> POLYGON_FIELDS = List.of("type", "points");
-    static final List<String> WALL_FIELDS = List.of("type", "from", "to", "thickness", "height", "restitution");
-    static final List<String> TREE_FIELDS = List.of("type", "position", "radius", "height", "restitution");
-    static final List<String> BOX_FIELDS = List.of("type", "min", "max", "rotationDeg", "restitution");
-    static final List<String> MODEL_FIELDS = List.of("type", "file", "position", "rotationDeg", "scale", "restitution");
+    static final List<String> WALL_FIELDS = List.of("type", "from", "to", "thickness", "height", "restitution", "motion");
+    static final List<String> TREE_FIELDS = List.of("type", "position", "radius", "height", "restitution", "motion");
+    static final List<String> BOX_FIELDS = List.of("type", "min", "max", "rotationDeg", "restitution", "motion");
+    static final List<String> MODEL_FIELDS = List.of("type", "file", "position", "rotationDeg", "scale", "restitution",
+            "motion");
+    static final List<String> BUMPER_FIELDS = List.of("type", "position", "radius", "height", "restitution", "motion");
+    static final List<String> GATE_FIELDS = List.of("type", "from", "to", "height", "passTo", "restitution");
+    static final List<String> ROTATE_FIELDS = List.of("type", "pivot", "axis", "period", "phase");
+    static final List<String> SWING_FIELDS = List.of("type", "pivot", "axis", "amplitudeDeg", "period", "phase");
+    static final List<String> SLIDE_FIELDS = List.of("type", "path", "period", "phase", "closed");
+    static final List<String> PUSH_ZONE_FIELDS = List.of("shape", "push");
+    static final List<String> MAGNET_FIELDS = List.of("position", "radius", "strength");
+    static final List<String> TELEPORT_FIELDS = List.of("entry", "exits");
+    static final List<String> EXIT_FIELDS = List.of("position", "directionDeg");
 
     /** Strict JSON: no NaN/Infinity literals, no comments, no duplicate keys, nothing after the object. */
     private static final ObjectMapper MAPPER = JsonMapper.builder(JsonFactory.builder()
@@ -239,7 +250,12 @@ public final class CourseLoader {
             Hole hole = hole(required(o, "", "hole"), "hole");
             List<Zone> zones = obstacleReader.zones(o.get("zones"), "zones");
             List<Obstacle> obstacles = obstacleReader.obstacles(o.get("obstacles"), "obstacles");
-            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles, world);
+            ElementReader elements = new ElementReader(source, obstacleReader);
+            List<PushZone> pushZones = elements.pushZones(o.get("pushZones"), "pushZones");
+            List<Magnet> magnets = elements.magnets(o.get("magnets"), "magnets");
+            List<Teleport> teleports = elements.teleports(o.get("teleports"), "teleports");
+            return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones,
+                    magnets, teleports, world);
         }
 
         // ---- terrain ----

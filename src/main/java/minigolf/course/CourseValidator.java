@@ -2,6 +2,7 @@ package minigolf.course;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
+import java.util.List;
 
 /** Checks of a course that need more than its own fields: where the start and the hole lie on the terrain. */
 public final class CourseValidator {
@@ -17,6 +18,12 @@ public final class CourseValidator {
         checkInBounds(course, sourceName);
         checkDry(course.start(), "start", probe, sourceName);
         checkDry(course.hole().position(), "hole.position", probe, sourceName);
+        for (int i = 0; i < course.teleports().size(); i++) {
+            List<Teleport.Exit> exits = course.teleports().get(i).exits();
+            for (int k = 0; k < exits.size(); k++) {
+                checkDry(exits.get(k).position(), "teleports[" + i + "].exits[" + k + "].position", probe, sourceName);
+            }
+        }
         checkHeights(course, probe, sourceName);
     }
 
@@ -58,7 +65,40 @@ public final class CourseValidator {
             checkNotDeleted(course.start(), "start", g, sourceName);
             checkNotDeleted(course.hole().position(), "hole.position", g, sourceName);
         }
+        checkTeleports(course, sourceName);
         checkNoHazard(course.start(), "start", course, sourceName);
+    }
+
+    /**
+     * Teleport exits lie in the play area, and no exit, the start or the hole lies in a teleport's
+     * entry: a ball would be sent on at once, round and round.
+     */
+    private static void checkTeleports(Course course, String sourceName) throws CourseException {
+        List<Teleport> teleports = course.teleports();
+        for (int i = 0; i < teleports.size(); i++) {
+            List<Teleport.Exit> exits = teleports.get(i).exits();
+            for (int k = 0; k < exits.size(); k++) {
+                String path = "teleports[" + i + "].exits[" + k + "].position";
+                Vec2 p = exits.get(k).position();
+                checkInBounds(p, path, course.bounds(), sourceName);
+                if (course.terrain() instanceof TerrainSpec.HeightGrid g && g.deleted() != null) {
+                    checkNotDeleted(p, path, g, sourceName);
+                }
+                checkOutsideEntries(p, path, teleports, sourceName);
+            }
+        }
+        checkOutsideEntries(course.start(), "start", teleports, sourceName);
+        checkOutsideEntries(course.hole().position(), "hole.position", teleports, sourceName);
+    }
+
+    private static void checkOutsideEntries(Vec2 p, String path, List<Teleport> teleports, String sourceName)
+            throws CourseException {
+        for (int j = 0; j < teleports.size(); j++) {
+            if (teleports.get(j).entry().contains(p.x(), p.y())) {
+                throw new CourseException(sourceName, path, point(p) + " is inside the entry of teleports[" + j
+                        + "] (the ball would be sent on at once)");
+            }
+        }
     }
 
     /**

@@ -91,8 +91,10 @@ public final class CourseWriter {
             sb.append("  ],\n");
         }
         List<Obstacle> obstacles = course.obstacles();
+        // The newer lists only when they have entries, so files without them are written back as they were.
+        boolean more = !course.pushZones().isEmpty() || !course.magnets().isEmpty() || !course.teleports().isEmpty();
         if (obstacles.isEmpty()) {
-            sb.append("  \"obstacles\": []\n");
+            sb.append("  \"obstacles\": []").append(more ? ",\n" : "\n");
         } else {
             sb.append("  \"obstacles\": [\n");
             for (int i = 0; i < obstacles.size(); i++) {
@@ -100,8 +102,9 @@ public final class CourseWriter {
                 obstacle(sb, require(obstacles.get(i), "obstacles[" + i + "]"), "obstacles[" + i + "]");
                 sb.append(i + 1 < obstacles.size() ? ",\n" : "\n");
             }
-            sb.append("  ]\n");
+            sb.append(more ? "  ],\n" : "  ]\n");
         }
+        ElementWriter.write(sb, course);
         sb.append("}\n");
         return sb.toString();
     }
@@ -189,7 +192,7 @@ public final class CourseWriter {
         sb.append("      ]");
     }
 
-    private static void shape(StringBuilder sb, Shape s, String path) {
+    static void shape(StringBuilder sb, Shape s, String path) {
         if (s instanceof Shape.Rect r) {
             sb.append("{ \"type\": \"rect\", \"min\": ");
             vec(sb, require(r.min(), path + ".min"), path + ".min");
@@ -228,6 +231,31 @@ public final class CourseWriter {
     }
 
     private static void obstacle(StringBuilder sb, Obstacle o, String path) {
+        Obstacle body = o instanceof Obstacle.Moving m ? require(m.body(), path + ".body") : o;
+        if (body instanceof Obstacle.Bumper b) {
+            sb.append("{ \"type\": \"bumper\", \"position\": ");
+            vec(sb, require(b.position(), path + ".position"), path + ".position");
+            sb.append(", \"radius\": ").append(num(b.radius(), path + ".radius"))
+                    .append(", \"height\": ").append(num(b.height(), path + ".height"));
+        } else if (body instanceof Obstacle.Gate g) {
+            sb.append("{ \"type\": \"gate\", \"from\": ");
+            vec(sb, require(g.from(), path + ".from"), path + ".from");
+            sb.append(", \"to\": ");
+            vec(sb, require(g.to(), path + ".to"), path + ".to");
+            sb.append(", \"height\": ").append(num(g.height(), path + ".height"))
+                    .append(", \"passTo\": ").append(quote(require(g.passTo(), path + ".passTo").jsonName()));
+        } else {
+            stillObstacle(sb, body, path);
+        }
+        sb.append(", \"restitution\": ").append(num(o.restitution(), path + ".restitution"));
+        if (o instanceof Obstacle.Moving m) {
+            sb.append(", \"motion\": ");
+            ElementWriter.motion(sb, require(m.motion(), path + ".motion"), path + ".motion");
+        }
+        sb.append(" }");
+    }
+
+    private static void stillObstacle(StringBuilder sb, Obstacle o, String path) {
         if (o instanceof Obstacle.Wall w) {
             sb.append("{ \"type\": \"wall\", \"from\": ");
             vec(sb, require(w.from(), path + ".from"), path + ".from");
@@ -254,15 +282,14 @@ public final class CourseWriter {
             sb.append(", \"rotationDeg\": ").append(num(m.rotationDeg(), path + ".rotationDeg"))
                     .append(", \"scale\": ").append(num(m.scale(), path + ".scale"));
         }
-        sb.append(", \"restitution\": ").append(num(o.restitution(), path + ".restitution")).append(" }");
     }
 
-    private static void vec3(StringBuilder sb, Vec3 v, String path) {
+    static void vec3(StringBuilder sb, Vec3 v, String path) {
         sb.append('[').append(num(v.x(), path)).append(", ").append(num(v.y(), path)).append(", ")
                 .append(num(v.z(), path)).append(']');
     }
 
-    private static void vec(StringBuilder sb, Vec2 v, String path) {
+    static void vec(StringBuilder sb, Vec2 v, String path) {
         vec(sb, v.x(), v.y(), path);
     }
 
@@ -281,11 +308,11 @@ public final class CourseWriter {
         return s;
     }
 
-    private static String quote(String s) {
+    static String quote(String s) {
         return '"' + new String(JsonStringEncoder.getInstance().quoteAsString(s)) + '"';
     }
 
-    private static <T> T require(T value, String path) {
+    static <T> T require(T value, String path) {
         if (value == null) throw new IllegalArgumentException(path + ": missing (null)");
         return value;
     }

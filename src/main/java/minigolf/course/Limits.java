@@ -35,6 +35,28 @@ public final class Limits {
     public static final int POLYGON_POINTS = 1_000;
     /** Points of all polygon zones together (the friction lookup visits them on every step). */
     public static final int ALL_POLYGON_POINTS = 10_000;
+    /** Push zones of one course (their pushes are looked up on every step, as the friction zones). */
+    public static final int PUSH_ZONES = 500;
+    /** Magnets of one course. */
+    public static final int MAGNETS = 100;
+    /** Teleports of one course. */
+    public static final int TELEPORTS = 100;
+    /** Exits of one teleport. */
+    public static final int TELEPORT_EXITS = 16;
+    /** Moving obstacles of one course (each is swept separately, in its own frame, on every step near it). */
+    public static final int MOVING_OBSTACLES = 64;
+    /** Points of one sliding obstacle's path. */
+    public static final int PATH_POINTS = 100;
+    /** The strongest push or magnet (m/s²): five times gravity. */
+    public static final double FORCE = 50;
+    /** A motion's shortest period (s): a turn takes at least this long. */
+    public static final double SHORTEST_PERIOD = 0.2;
+    /** A motion's longest period (s). */
+    public static final double LONGEST_PERIOD = 3600;
+    /** The fastest a sliding obstacle may move (m/s). */
+    public static final double SLIDE_SPEED = 20;
+    /** How far a turning or swinging obstacle's body may reach from its pivot (m), so its edge moves at most ~300 m/s. */
+    public static final double MOTION_REACH = 10;
     /** Cells of one cells shape (a classic track's 735 x 375 pixels is 275,625). */
     public static final int CELLS = 1 << 20;
     /** Row spans of one cells shape. */

@@ -174,9 +174,15 @@ final class ObstacleReader extends CourseJsonReader {
         }
         List<Obstacle> obstacles = new ArrayList<>(n.size());
         long triangles = 0;
+        int moving = 0;
         for (int i = 0; i < n.size(); i++) {
             Obstacle obstacle = obstacle(n.get(i), path + "[" + i + "]");
-            if (obstacle instanceof Obstacle.Model m) {
+            if (obstacle instanceof Obstacle.Moving && ++moving > Limits.MOVING_OBSTACLES) {
+                throw error(path + "[" + i + "]", "too many moving obstacles: " + moving + " with this one (the limit is "
+                        + Limits.MOVING_OBSTACLES + ")");
+            }
+            Obstacle body = obstacle instanceof Obstacle.Moving mo ? mo.body() : obstacle;
+            if (body instanceof Obstacle.Model m) {
                 triangles += m.mesh().triangleCount();
                 if (triangles > Limits.TRIANGLES) {
                     throw error(path + "[" + i + "]", "too many model triangles in all: " + triangles
@@ -190,6 +196,15 @@ final class ObstacleReader extends CourseJsonReader {
 
     Obstacle obstacle(JsonNode n, String path) throws CourseException {
         ObjectNode o = object(n, path);
+        Obstacle body = still(o, path);
+        if (!o.has("motion")) return body;
+        Motion motion = new MotionReader(source).motion(o.get("motion"), join(path, "motion"));
+        MotionReader.checkReach(this, body, motion, join(path, "motion"));
+        return new Obstacle.Moving(body, motion);
+    }
+
+    /** The obstacle as the file places it (a moving obstacle's body, its motion aside). */
+    private Obstacle still(ObjectNode o, String path) throws CourseException {
         JsonNode t = required(o, path, "type");
         String type = t.isTextual() ? t.textValue() : "";
         switch (type) {
@@ -242,13 +257,47 @@ final class ObstacleReader extends CourseJsonReader {
                 }
                 return new Obstacle.Model(file, position, rotation, scale, restitution, mesh);
             }
-            default -> throw error(join(path, "type"), "expected one of wall, tree, box, model, got " + show(t));
+            case "bumper" -> {
+                knownFields(o, path, BUMPER_FIELDS);
+                Vec2 position = vec(required(o, path, "position"), join(path, "position"));
+                String rp = join(path, "radius");
+                double radius = positive(number(required(o, path, "radius"), rp), rp);
+                double height = optionalPositive(o, path, "height", BUMPER_HEIGHT);
+                return new Obstacle.Bumper(position, radius, height,
+                        restitution(o, path, Obstacle.DEFAULT_BUMPER_RESTITUTION));
+            }
+            case "gate" -> {
+                knownFields(o, path, GATE_FIELDS);
+                Vec2 from = vec(required(o, path, "from"), join(path, "from"));
+                Vec2 to = vec(required(o, path, "to"), join(path, "to"));
+                if (from.equals(to)) throw error(path, "from and to are the same point: the gate has no extent");
+                String hp = join(path, "height");
+                double height = positive(number(required(o, path, "height"), hp), hp);
+                String sp = join(path, "passTo");
+                JsonNode side = required(o, path, "passTo");
+                Obstacle.Side passTo = side.isTextual() ? Obstacle.Side.fromJsonName(side.textValue()) : null;
+                if (passTo == null) throw error(sp, "expected one of left, right, got " + show(side));
+                return new Obstacle.Gate(from, to, height, passTo, restitution(o, path));
+            }
+            default -> throw error(join(path, "type"), "expected one of wall, tree, box, model, bumper, gate, got " + show(t));
         }
     }
 
+    /** A bumper's height when the field is not given (m). */
+    static final double BUMPER_HEIGHT = 0.1;
+
     private double restitution(ObjectNode o, String path) throws CourseException {
-        if (!o.has("restitution")) return Obstacle.DEFAULT_RESTITUTION;
+        return restitution(o, path, Obstacle.DEFAULT_RESTITUTION);
+    }
+
+    private double restitution(ObjectNode o, String path, double fallback) throws CourseException {
+        if (!o.has("restitution")) return fallback;
         String p = join(path, "restitution");
-        return unit(number(o.get("restitution"), p), p);
+        double v = number(o.get("restitution"), p);
+        if (!(v >= 0 && v <= Obstacle.MAX_RESTITUTION)) {
+            throw error(p, "must be between 0 and " + CourseValidator.number(Obstacle.MAX_RESTITUTION) + ", got "
+                    + CourseValidator.number(v));
+        }
+        return v;
     }
 }

@@ -20,11 +20,44 @@ public final class CourseChecks {
         List<Problem> problems = new ArrayList<>();
         boolean startOk = place(c, world, world.course().start(), "start", problems);
         boolean holeOk = place(c, world, world.hole().position(), "hole", problems);
+        teleports(world, problems);
         if (startOk && holeOk && Reachability.path(c, world) == null) {
             Vec2 h = world.hole().position();
             problems.add(new Problem("hole: no way from the start to the hole (A* on the course grid)", h.x(), h.y()));
         }
         return problems;
+    }
+
+    /**
+     * The teleports as the loader wants them (docs/course-format.md, "Teleports"): every exit in the
+     * bounds, on dry land and outside every entry; the start and the hole outside every entry.
+     */
+    private static void teleports(World world, List<Problem> problems) {
+        List<minigolf.course.Teleport> teleports = world.course().teleports();
+        List<Vec2> points = new ArrayList<>(List.of(world.course().start(), world.hole().position()));
+        List<String> names = new ArrayList<>(List.of("start", "hole"));
+        for (int i = 0; i < teleports.size(); i++) {
+            for (int k = 0; k < teleports.get(i).exits().size(); k++) {
+                Vec2 p = teleports.get(i).exits().get(k).position();
+                points.add(p);
+                names.add("teleport " + i + " exit " + k);
+                String at = String.format(Locale.ROOT, "(%.2f, %.2f)", p.x(), p.y());
+                if (!world.playArea().contains(p.x(), p.y())) {
+                    problems.add(new Problem(names.get(names.size() - 1) + ": " + at + " is outside the course", p.x(), p.y()));
+                } else if (world.terrain().height(p.x(), p.y()) < 0) {
+                    problems.add(new Problem(names.get(names.size() - 1) + ": " + at + " is in water", p.x(), p.y()));
+                }
+            }
+        }
+        for (int n = 0; n < points.size(); n++) {
+            Vec2 p = points.get(n);
+            for (int j = 0; j < teleports.size(); j++) {
+                if (teleports.get(j).entry().contains(p.x(), p.y())) {
+                    problems.add(new Problem(names.get(n) + String.format(Locale.ROOT, ": (%.2f, %.2f)", p.x(), p.y())
+                            + " is inside the entry of teleport " + j, p.x(), p.y()));
+                }
+            }
+        }
     }
 
     private static boolean place(EditableCourse c, World world, Vec2 p, String what, List<Problem> problems) {

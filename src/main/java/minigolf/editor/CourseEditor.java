@@ -9,7 +9,10 @@ import minigolf.course.CourseException;
 import minigolf.course.CourseWriter;
 import minigolf.course.Hole;
 import minigolf.course.HoleRule;
+import minigolf.course.Magnet;
 import minigolf.course.Obstacle;
+import minigolf.course.PushZone;
+import minigolf.course.Teleport;
 import minigolf.course.PhysicsSettings;
 import minigolf.course.TerrainSpec;
 import minigolf.course.Vec2;
@@ -48,8 +51,8 @@ public final class CourseEditor {
     /** Edits a course (an expression terrain is first sampled to a grid, see {@link CourseGrids}). */
     public static CourseEditor of(Course c, Path file) {
         TerrainSpec.HeightGrid grid = CourseGrids.toGrid(c);
-        EditableCourse ec = new EditableCourse(grid, c.bounds(), c.zones(), c.obstacles(),
-                new EditableCourse.Properties(c.name(), c.start(), c.hole(), c.physics()));
+        EditableCourse ec = new EditableCourse(grid, c.bounds(), c.zones(), c.obstacles(), c.pushZones(), c.magnets(),
+                c.teleports(), new EditableCourse.Properties(c.name(), c.start(), c.hole(), c.physics()));
         ec.world = c.world();
         CourseEditor e = new CourseEditor(ec, file);
         // A sampled expression course is not yet a file: it counts as unsaved.
@@ -346,11 +349,123 @@ public final class CourseEditor {
                 "model scale");
     }
 
-    /** The share of the normal speed a ball keeps when it bounces off the object, 0 to 1. */
+    /** The share of the normal speed a ball keeps when it bounces off the object, 0 to 2 (above 1 a bumper). */
     public void setRestitution(int index, double restitution) {
         Obstacle o = obstacle(index);
-        if (!(restitution >= 0 && restitution <= 1)) throw new IllegalArgumentException("restitution must be between 0 and 1");
+        if (!(restitution >= 0 && restitution <= Obstacle.MAX_RESTITUTION)) {
+            throw new IllegalArgumentException("restitution must be between 0 and " + (int) Obstacle.MAX_RESTITUTION);
+        }
         replaceObstacle(index, ObstacleTools.withRestitution(o, restitution), "restitution");
+    }
+
+    /** A bumper's radius and height (both > 0). */
+    public void setBumperSize(int index, double radius, double height) {
+        Obstacle o = obstacle(index);
+        Obstacle body = o instanceof Obstacle.Moving m ? m.body() : o;
+        if (!(body instanceof Obstacle.Bumper b)) throw new IllegalArgumentException("object " + index + " is not a bumper");
+        if (!(radius > 0) || !(height > 0) || !Double.isFinite(radius + height)) {
+            throw new IllegalArgumentException("bumper radius and height must be > 0");
+        }
+        Obstacle sized = new Obstacle.Bumper(b.position(), radius, height, b.restitution());
+        replaceObstacle(index, o instanceof Obstacle.Moving m ? new Obstacle.Moving(sized, m.motion()) : sized, "bumper size");
+    }
+
+    /** Turns a one-way gate round: the side the ball may pass to becomes the other. */
+    public void flipGate(int index) {
+        if (!(obstacle(index) instanceof Obstacle.Gate g)) throw new IllegalArgumentException("object " + index + " is not a gate");
+        Obstacle.Side other = g.passTo() == Obstacle.Side.LEFT ? Obstacle.Side.RIGHT : Obstacle.Side.LEFT;
+        replaceObstacle(index, new Obstacle.Gate(g.from(), g.to(), g.height(), other, g.restitution()), "gate direction");
+    }
+
+    /**
+     * A moving obstacle's period and phase (s), its kind of motion kept; the limits of the course
+     * format (docs/course-format.md, "Moving obstacles").
+     */
+    public void setMotionTiming(int index, double period, double phase) {
+        if (!(obstacle(index) instanceof Obstacle.Moving m)) throw new IllegalArgumentException("object " + index + " does not move");
+        if (!(period >= minigolf.course.Limits.SHORTEST_PERIOD && period <= minigolf.course.Limits.LONGEST_PERIOD)) {
+            throw new IllegalArgumentException("the period must be between " + minigolf.course.Limits.SHORTEST_PERIOD + " and "
+                    + (int) minigolf.course.Limits.LONGEST_PERIOD + " s");
+        }
+        if (!Double.isFinite(phase)) throw new IllegalArgumentException("the phase must be a number");
+        replaceObstacle(index, new Obstacle.Moving(m.body(), MotionTools.withTiming(m.motion(), period, phase)), "motion timing");
+    }
+
+    // ---- push zones, magnets, teleports ----
+
+    public List<PushZone> pushZones() {
+        return List.copyOf(course.pushZones);
+    }
+
+    public List<Magnet> magnets() {
+        return List.copyOf(course.magnets);
+    }
+
+    public List<Teleport> teleports() {
+        return List.copyOf(course.teleports);
+    }
+
+    /** Adds a push zone (at most {@link minigolf.course.Limits#PUSH_ZONES}); false when full. */
+    public boolean addPushZone(PushZone z) {
+        if (course.pushZones.size() >= minigolf.course.Limits.PUSH_ZONES) return false;
+        endStroke();
+        perform(ListItemEdit.element(c -> c.pushZones, course.pushZones.size(), null, z, "place push zone"));
+        return true;
+    }
+
+    public boolean addMagnet(Magnet m) {
+        if (course.magnets.size() >= minigolf.course.Limits.MAGNETS) return false;
+        endStroke();
+        perform(ListItemEdit.element(c -> c.magnets, course.magnets.size(), null, m, "place magnet"));
+        return true;
+    }
+
+    public boolean addTeleport(Teleport t) {
+        if (course.teleports.size() >= minigolf.course.Limits.TELEPORTS) return false;
+        endStroke();
+        perform(ListItemEdit.element(c -> c.teleports, course.teleports.size(), null, t, "place teleport"));
+        return true;
+    }
+
+    /** Replaces push zone {@code index} (null removes it). */
+    public void setPushZone(int index, PushZone z) {
+        PushZone before = item(course.pushZones, index, "push zone");
+        if (z != null) {
+            double strength = Math.hypot(z.push().x(), z.push().y());
+            if (!(strength <= minigolf.course.Limits.FORCE)) {
+                throw new IllegalArgumentException("a push must be at most " + (int) minigolf.course.Limits.FORCE + " m/s^2");
+            }
+        }
+        if (before.equals(z)) return;
+        endStroke();
+        perform(ListItemEdit.element(c -> c.pushZones, index, before, z, z == null ? "delete push zone" : "edit push zone"));
+    }
+
+    /** Replaces magnet {@code index} (null removes it). */
+    public void setMagnet(int index, Magnet m) {
+        Magnet before = item(course.magnets, index, "magnet");
+        if (m != null && (!(m.radius() > 0) || !(Math.abs(m.strength()) <= minigolf.course.Limits.FORCE))) {
+            throw new IllegalArgumentException("a magnet's radius must be > 0 and its strength within +-"
+                    + (int) minigolf.course.Limits.FORCE + " m/s^2");
+        }
+        if (before.equals(m)) return;
+        endStroke();
+        perform(ListItemEdit.element(c -> c.magnets, index, before, m, m == null ? "delete magnet" : "edit magnet"));
+    }
+
+    /** Replaces teleport {@code index} (null removes it). */
+    public void setTeleport(int index, Teleport t) {
+        Teleport before = item(course.teleports, index, "teleport");
+        if (before.equals(t)) return;
+        endStroke();
+        perform(ListItemEdit.element(c -> c.teleports, index, before, t, t == null ? "delete teleport" : "edit teleport"));
+    }
+
+    private static <T> T item(List<T> list, int index, String what) {
+        if (index < 0 || index >= list.size()) {
+            throw new IllegalArgumentException("no " + what + " " + index + " (the course has " + list.size() + ")");
+        }
+        return list.get(index);
     }
 
     public void removeObstacle(int index) {

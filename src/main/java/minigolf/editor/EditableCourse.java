@@ -5,7 +5,10 @@ import java.util.List;
 import minigolf.course.Bounds;
 import minigolf.course.Course;
 import minigolf.course.Hole;
+import minigolf.course.Magnet;
 import minigolf.course.Obstacle;
+import minigolf.course.PushZone;
+import minigolf.course.Teleport;
 import minigolf.course.PhysicsSettings;
 import minigolf.course.TerrainSpec;
 import minigolf.course.Vec2;
@@ -28,6 +31,9 @@ public final class EditableCourse {
     Properties properties;
     final Bounds bounds;
     final List<Zone> zones = new ArrayList<>();
+    final List<PushZone> pushZones = new ArrayList<>();
+    final List<Magnet> magnets = new ArrayList<>();
+    final List<Teleport> teleports = new ArrayList<>();
     /** The themed world the course is set in (kept as loaded; the editor does not change it). */
     String world = minigolf.theme.Themes.DEFAULT_ID;
 
@@ -55,6 +61,15 @@ public final class EditableCourse {
         this.zones.addAll(zones);
         this.obstacles.addAll(obstacles);
         this.properties = properties;
+    }
+
+    /** As above, with the course's push zones, magnets and teleports. */
+    EditableCourse(TerrainSpec.HeightGrid grid, Bounds bounds, List<Zone> zones, List<Obstacle> obstacles,
+                   List<PushZone> pushZones, List<Magnet> magnets, List<Teleport> teleports, Properties properties) {
+        this(grid, bounds, zones, obstacles, properties);
+        this.pushZones.addAll(pushZones);
+        this.magnets.addAll(magnets);
+        this.teleports.addAll(teleports);
     }
 
     private double[] flatten(double[][] m) {
@@ -87,7 +102,8 @@ public final class EditableCourse {
     /** A snapshot as an immutable course. */
     public Course toCourse() {
         Properties p = properties;
-        return new Course(Course.FORMAT, p.name(), grid(), bounds, p.physics(), p.start(), p.hole(), zones, obstacles, world);
+        return new Course(Course.FORMAT, p.name(), grid(), bounds, p.physics(), p.start(), p.hole(), zones, obstacles,
+                pushZones, magnets, teleports, world);
     }
 
     public int columns() {

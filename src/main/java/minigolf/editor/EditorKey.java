@@ -10,6 +10,8 @@ public enum EditorKey {
     WALL,
     /** B: the object tool places trees. */
     TREE,
+    /** N: the object tool places the next kind (wall, tree, ... windmill, push zone, magnet, teleport). */
+    NEXT_KIND,
     /** ENTER: place the object, or apply the terrain tool, at the tool's position. */
     PLACE,
     /** P: delete the object under the tool, or with the terrain tool the terrain cell under it. */

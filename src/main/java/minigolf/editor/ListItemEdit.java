@@ -32,6 +32,11 @@ final class ListItemEdit<T> implements Edit {
         return new ListItemEdit<>(c -> c.obstacles, ChangeSet::obstacles, index, before, after, label);
     }
 
+    /** A push zone, a magnet or a teleport: drawn by the elements' pass, refreshed with the obstacles. */
+    static <E> ListItemEdit<E> element(Function<EditableCourse, List<E>> list, int index, E before, E after, String label) {
+        return new ListItemEdit<>(list, ChangeSet::obstacles, index, before, after, label);
+    }
+
     /** Friction colours the terrain and changes the physics: the scene is rebuilt. */
     static ListItemEdit<Zone> zone(int index, Zone before, Zone after, String label) {
         return new ListItemEdit<>(c -> c.zones, ChangeSet::structure, index, before, after, label);

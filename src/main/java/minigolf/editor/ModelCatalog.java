@@ -17,7 +17,8 @@ import minigolf.mesh.TriangleMesh;
  */
 public final class ModelCatalog {
     /** The bundled models, by the file string a course writes (courses/models/ and src/main/resources/models/). */
-    public static final List<String> BUNDLED = List.of("models/windmill.obj", "models/tree-crown.obj");
+    public static final List<String> BUNDLED = List.of("models/windmill.obj", "models/tree-crown.obj",
+            "models/windmill-blades.obj");
 
     private static final Map<String, TriangleMesh> CACHE = new ConcurrentHashMap<>();
 

@@ -1,5 +1,6 @@
 package minigolf.editor;
 
+import minigolf.course.Motion;
 import minigolf.course.Obstacle;
 import minigolf.course.Vec2;
 import minigolf.course.Vec3;
@@ -11,23 +12,37 @@ public final class ObstacleTools {
 
     /** The obstacle's reference point in the plane: a wall's midpoint, a box's centre, a tree's or model's position. */
     public static Vec2 center(Obstacle o) {
+        if (o instanceof Obstacle.Moving m) return center(m.body());
         if (o instanceof Obstacle.Wall w) return new Vec2(0.5 * (w.from().x() + w.to().x()), 0.5 * (w.from().y() + w.to().y()));
+        if (o instanceof Obstacle.Gate g) return new Vec2(0.5 * (g.from().x() + g.to().x()), 0.5 * (g.from().y() + g.to().y()));
         if (o instanceof Obstacle.Tree t) return t.position();
+        if (o instanceof Obstacle.Bumper b) return b.position();
         if (o instanceof Obstacle.Box b) return new Vec2(0.5 * (b.min().x() + b.max().x()), 0.5 * (b.min().y() + b.max().y()));
         Obstacle.Model m = (Obstacle.Model) o;
         return new Vec2(m.position().x(), m.position().y());
     }
 
-    /** A short name for lists: "wall", "tree", "box", "model windmill.obj". */
+    /** A short name for lists: "wall", "tree", "box", "model windmill.obj", "bumper", "gate", "turning box". */
     public static String describe(Obstacle o) {
+        if (o instanceof Obstacle.Moving m) {
+            String how = m.motion() instanceof Motion.Rotate ? "turning " : m.motion() instanceof Motion.Swing ? "swinging " : "sliding ";
+            return how + describe(m.body());
+        }
         if (o instanceof Obstacle.Wall) return "wall";
         if (o instanceof Obstacle.Tree) return "tree";
+        if (o instanceof Obstacle.Bumper) return "bumper";
+        if (o instanceof Obstacle.Gate) return "one-way gate";
         if (o instanceof Obstacle.Box) return "box";
         return "model " + ((Obstacle.Model) o).file();
     }
 
     /** The obstacle shifted by (dx, dy) in the plane (a box and a model keep their absolute heights). */
     public static Obstacle moved(Obstacle o, double dx, double dy) {
+        if (o instanceof Obstacle.Moving m) return new Obstacle.Moving(moved(m.body(), dx, dy), MotionTools.moved(m.motion(), dx, dy));
+        if (o instanceof Obstacle.Bumper b) return new Obstacle.Bumper(shift(b.position(), dx, dy), b.radius(), b.height(), b.restitution());
+        if (o instanceof Obstacle.Gate g) {
+            return new Obstacle.Gate(shift(g.from(), dx, dy), shift(g.to(), dx, dy), g.height(), g.passTo(), g.restitution());
+        }
         if (o instanceof Obstacle.Wall w) {
             return new Obstacle.Wall(shift(w.from(), dx, dy), shift(w.to(), dx, dy), w.thickness(), w.height(), w.restitution());
         }
@@ -41,6 +56,15 @@ public final class ObstacleTools {
 
     /** The obstacle turned counter-clockwise by {@code degrees} about its {@link #center}; a tree is unchanged. */
     public static Obstacle rotated(Obstacle o, double degrees) {
+        if (o instanceof Obstacle.Moving m) {
+            return new Obstacle.Moving(rotated(m.body(), degrees), MotionTools.rotated(m.motion(), center(m.body()), degrees));
+        }
+        if (o instanceof Obstacle.Bumper) return o;
+        if (o instanceof Obstacle.Gate g) {
+            Vec2 c = center(g);
+            double a = Math.toRadians(degrees), cos = Math.cos(a), sin = Math.sin(a);
+            return new Obstacle.Gate(turn(g.from(), c, cos, sin), turn(g.to(), c, cos, sin), g.height(), g.passTo(), g.restitution());
+        }
         if (o instanceof Obstacle.Wall w) {
             Vec2 c = center(w);
             double a = Math.toRadians(degrees), cos = Math.cos(a), sin = Math.sin(a);
@@ -55,8 +79,11 @@ public final class ObstacleTools {
 
     /** The distance from (x, y) to the obstacle's reference (a wall's segment, else its centre), for picking. */
     public static double distance(Obstacle o, double x, double y) {
-        if (o instanceof Obstacle.Wall w) {
-            double ax = w.from().x(), ay = w.from().y(), bx = w.to().x() - ax, by = w.to().y() - ay;
+        if (o instanceof Obstacle.Moving m) return distance(m.body(), x, y);
+        if (o instanceof Obstacle.Wall || o instanceof Obstacle.Gate) {
+            Vec2 from = o instanceof Obstacle.Wall w ? w.from() : ((Obstacle.Gate) o).from();
+            Vec2 to = o instanceof Obstacle.Wall w ? w.to() : ((Obstacle.Gate) o).to();
+            double ax = from.x(), ay = from.y(), bx = to.x() - ax, by = to.y() - ay;
             double len2 = bx * bx + by * by;
             double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((x - ax) * bx + (y - ay) * by) / len2));
             return Math.hypot(x - ax - t * bx, y - ay - t * by);
@@ -67,6 +94,9 @@ public final class ObstacleTools {
 
     /** The same obstacle with another restitution. */
     public static Obstacle withRestitution(Obstacle o, double r) {
+        if (o instanceof Obstacle.Moving m) return new Obstacle.Moving(withRestitution(m.body(), r), m.motion());
+        if (o instanceof Obstacle.Bumper b) return new Obstacle.Bumper(b.position(), b.radius(), b.height(), r);
+        if (o instanceof Obstacle.Gate g) return new Obstacle.Gate(g.from(), g.to(), g.height(), g.passTo(), r);
         if (o instanceof Obstacle.Wall w) return new Obstacle.Wall(w.from(), w.to(), w.thickness(), w.height(), r);
         if (o instanceof Obstacle.Tree t) return new Obstacle.Tree(t.position(), t.radius(), t.height(), r);
         if (o instanceof Obstacle.Box b) return new Obstacle.Box(b.min(), b.max(), b.rotationDeg(), r);

@@ -1,7 +1,12 @@
 package minigolf.editor;
 
 import java.util.Locale;
+import minigolf.course.Magnet;
+import minigolf.course.Motion;
 import minigolf.course.Obstacle;
+import minigolf.course.PushZone;
+import minigolf.course.Shape;
+import minigolf.course.Teleport;
 import minigolf.course.Vec2;
 import minigolf.course.Vec3;
 
@@ -24,8 +29,25 @@ public final class ToolController {
         }
     }
 
-    /** What the object tool places. */
-    public enum ObjectKind { WALL, TREE, BOX, MODEL }
+    /**
+     * What the object tool places: obstacles (the moving ones turn, slide, as issue 24 has them) and
+     * the course elements that are areas or points (push zone, magnet, teleport).
+     */
+    public enum ObjectKind {
+        WALL, TREE, BOX, MODEL, BUMPER, GATE, WINDMILL, TURNING_BAR, SLIDING_GATE, PUSH_ZONE, MAGNET, TELEPORT;
+
+        /** Whether this kind is an obstacle (else a push zone, magnet or teleport). */
+        public boolean isObstacle() {
+            return ordinal() <= SLIDING_GATE.ordinal();
+        }
+
+        public String label() {
+            return name().toLowerCase(Locale.ROOT).replace('_', ' ');
+        }
+    }
+
+    /** The bundled model of a windmill's hub and blades (tools/generate_blades.py), turning about its x axis. */
+    public static final String WINDMILL_BLADES = "models/windmill-blades.obj";
 
     /** How far from the tool an object counts as under it, in metres. */
     public static final double PICK_DISTANCE = 0.35;
@@ -48,6 +70,16 @@ public final class ToolController {
     public String modelFile = ModelCatalog.BUNDLED.get(0);
     public double modelScale = 1.0;
     public double restitution = Obstacle.DEFAULT_RESTITUTION;
+    // The elements of issue 24.
+    public double bumperRadius = 0.1, bumperRestitution = Obstacle.DEFAULT_BUMPER_RESTITUTION;
+    public double gateLength = 0.8;
+    /** A moving obstacle's period (s), and the windmill's hub height above the ground (its blades reach 0.5 m). */
+    public double motionPeriod = 4, windmillHub = 0.53;
+    /** A push zone's side (m), push (m/s²) and its direction (degrees from +x). */
+    public double pushSize = 1.0, pushStrength = 1.0, pushDirectionDeg = 0;
+    public double magnetRadius = 0.5, magnetStrength = 2;
+    /** A teleport's entry radius and where its exit lies from the entry (m), the exit's direction (degrees, NaN: the ball keeps its own). */
+    public double teleportRadius = 0.15, exitDx = 2, exitDy = 0, exitDirectionDeg = Double.NaN;
 
     public ToolController(CourseEditor editor) {
         this.editor = editor;
@@ -113,7 +145,7 @@ public final class ToolController {
             case RIGHT -> moveTo(g.nodeX(ni + 1), g.nodeY(nj));
             case TOGGLE_TOOL -> {
                 mode = mode == Mode.TERRAIN ? Mode.OBJECT : Mode.TERRAIN;
-                return (mode == Mode.TERRAIN ? "terrain tool: " + action.label() : "object tool: " + kind.name().toLowerCase(Locale.ROOT));
+                return (mode == Mode.TERRAIN ? "terrain tool: " + action.label() : "object tool: " + kind.label());
             }
             case WALL -> {
                 setKind(ObjectKind.WALL);
@@ -122,6 +154,11 @@ public final class ToolController {
             case TREE -> {
                 setKind(ObjectKind.TREE);
                 return "object tool: tree";
+            }
+            case NEXT_KIND -> {
+                ObjectKind[] kinds = ObjectKind.values();
+                setKind(kinds[(kind.ordinal() + 1) % kinds.length]);
+                return "object tool: " + kind.label();
             }
             case PLACE -> {
                 return applyAt(x, y);
@@ -151,6 +188,7 @@ public final class ToolController {
     public String applyAt(double px, double py) {
         moveTo(px, py);
         try {
+            if (mode == Mode.OBJECT && !kind.isObstacle()) return placeElement(x, y);
             if (mode == Mode.OBJECT) {
                 Obstacle o = newObstacle(x, y);
                 return editor.addObstacle(o) ? "placed " + ObstacleTools.describe(o)
@@ -194,7 +232,7 @@ public final class ToolController {
         moveTo(px, py);
         if (mode == Mode.OBJECT) {
             int k = editor.obstacleNear(x, y, PICK_DISTANCE);
-            if (k < 0) return "no object under the tool";
+            if (k < 0) return deleteElementAt(x, y);
             String what = ObstacleTools.describe(editor.course().obstacles().get(k));
             editor.removeObstacle(k);
             return "deleted " + what;
@@ -224,6 +262,77 @@ public final class ToolController {
             // Stands on the ground at the tool: the model's z = 0 goes to the terrain height there.
             case MODEL -> new Obstacle.Model(modelFile, new Vec3(px, py, editor.world().terrain().height(px, py)), 0,
                     modelScale, restitution, ModelCatalog.load(modelFile));
+            case BUMPER -> new Obstacle.Bumper(new Vec2(px, py), bumperRadius, 0.1, bumperRestitution);
+            case GATE -> new Obstacle.Gate(new Vec2(px, py - gateLength / 2), new Vec2(px, py + gateLength / 2), 0.1,
+                    Obstacle.Side.RIGHT, restitution);
+            case WINDMILL -> {
+                // Blades turning about the horizontal x axis through the hub, across a lane that runs along x.
+                Vec3 hub = new Vec3(px, py, editor.world().terrain().height(px, py) + windmillHub);
+                yield new Obstacle.Moving(new Obstacle.Model(WINDMILL_BLADES, hub, 0, 1, restitution, ModelCatalog.load(WINDMILL_BLADES)),
+                        new Motion.Rotate(hub, new Vec3(1, 0, 0), motionPeriod, 0));
+            }
+            case TURNING_BAR -> {
+                double ground = editor.world().terrain().height(px, py);
+                yield new Obstacle.Moving(new Obstacle.Box(new Vec3(px - 0.5, py - 0.03, ground - 0.05),
+                        new Vec3(px + 0.5, py + 0.03, ground + 0.12), 0, restitution),
+                        new Motion.Rotate(new Vec3(px, py, ground), new Vec3(0, 0, 1), motionPeriod, 0));
+            }
+            case SLIDING_GATE -> {
+                double ground = editor.world().terrain().height(px, py);
+                yield new Obstacle.Moving(new Obstacle.Box(new Vec3(px - 0.04, py - 0.3, ground - 0.05),
+                        new Vec3(px + 0.04, py + 0.3, ground + 0.2), 0, restitution),
+                        new Motion.Slide(java.util.List.of(new Vec3(0, 0, 0), new Vec3(0, 0.65, 0)), motionPeriod, 0, false));
+            }
+            default -> throw new IllegalArgumentException(kind.label() + " is not an obstacle");
         };
+    }
+
+    /** Deletes the magnet within reach of (px, py), else the teleport or push zone it lies in (the last placed first). */
+    private String deleteElementAt(double px, double py) {
+        java.util.List<Magnet> magnets = editor.magnets();
+        for (int i = magnets.size() - 1; i >= 0; i--) {
+            if (Math.hypot(magnets.get(i).position().x() - px, magnets.get(i).position().y() - py) <= PICK_DISTANCE) {
+                editor.setMagnet(i, null);
+                return "deleted magnet";
+            }
+        }
+        java.util.List<Teleport> teleports = editor.teleports();
+        for (int i = teleports.size() - 1; i >= 0; i--) {
+            if (teleports.get(i).entry().contains(px, py)) {
+                editor.setTeleport(i, null);
+                return "deleted teleport";
+            }
+        }
+        java.util.List<PushZone> pushes = editor.pushZones();
+        for (int i = pushes.size() - 1; i >= 0; i--) {
+            if (pushes.get(i).shape().contains(px, py)) {
+                editor.setPushZone(i, null);
+                return "deleted push zone";
+            }
+        }
+        return "no object under the tool";
+    }
+
+    /** Places the push zone, magnet or teleport of the tool's kind at (px, py). */
+    private String placeElement(double px, double py) {
+        switch (kind) {
+            case PUSH_ZONE -> {
+                double a = Math.toRadians(pushDirectionDeg), h = pushSize / 2;
+                PushZone z = new PushZone(new Shape.Rect(new Vec2(px - h, py - h), new Vec2(px + h, py + h)),
+                        new Vec2(pushStrength * Math.cos(a), pushStrength * Math.sin(a)));
+                return editor.addPushZone(z) ? "placed push zone" : "the course already has the most push zones";
+            }
+            case MAGNET -> {
+                return editor.addMagnet(new Magnet(new Vec2(px, py), magnetRadius, magnetStrength)) ? "placed magnet"
+                        : "the course already has the most magnets";
+            }
+            default -> {
+                Teleport t = new Teleport(new Shape.Circle(new Vec2(px, py), teleportRadius),
+                        java.util.List.of(new Teleport.Exit(new Vec2(px + exitDx, py + exitDy),
+                                Double.isNaN(exitDirectionDeg) ? null : exitDirectionDeg)));
+                return editor.addTeleport(t) ? "placed teleport (exit at " + String.format(Locale.ROOT, "%.2f, %.2f", px + exitDx, py + exitDy) + ")"
+                        : "the course already has the most teleports";
+            }
+        }
     }
 }

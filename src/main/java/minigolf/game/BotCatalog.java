@@ -11,6 +11,7 @@ import minigolf.bot.BotRequest;
 import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
+import minigolf.bot.play.TimedBot;
 import minigolf.bot.friction.FrictionEstimator;
 import minigolf.bot.friction.FrictionPrior;
 import minigolf.bot.level.Level;
@@ -141,8 +142,13 @@ public final class BotCatalog {
                 World seen = conditions.hideFriction() ? FrictionPrior.scaled(world, 1) : world;
                 CountingSimulator sim = new CountingSimulator(seen, settings, budget, token, progress);
                 CountingSimulator botSim = conditions.hideFriction() ? estimated(sim, conditions) : sim;
-                Shot shot = sim.limit(bot.nextShot(new BotRequest(botSim, x, y, strokes, seed, conditions.noise())));
-                return new double[]{shot.vx(), shot.vy(), shot.vz()}; // the game plays chips too
+                botSim.setClock(conditions.clock());
+                Bot player = TimedBot.forWorld(bot, seen);
+                Shot shot = sim.limit(player.nextShot(new BotRequest(botSim, x, y, strokes, seed, conditions.noise(),
+                        conditions.clock())));
+                // The game plays chips too, and waits the bot's planned time where obstacles move.
+                return shot.waitSeconds() > 0 ? new double[]{shot.vx(), shot.vy(), shot.vz(), shot.waitSeconds()}
+                        : new double[]{shot.vx(), shot.vy(), shot.vz()};
             }
         };
     }

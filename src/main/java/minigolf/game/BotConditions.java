@@ -7,12 +7,18 @@ import minigolf.physics.Outcome;
 
 /**
  * What a bot player is told besides the course and its ball: the game's noise, whether friction is
- * hidden from it, and (for the friction estimate) its own strokes so far on this hole. The game
+ * hidden from it, (for the friction estimate) its own strokes so far on this hole, and the course
+ * clock at the moment it is asked (where obstacles move). The game
  * records only the stroke as played, so that is what the estimate uses (the command line's
  * Playthrough uses the stroke the bot chose).
  */
-public record BotConditions(NoiseModel noise, boolean hideFriction, List<OwnStroke> ownStrokes) {
+public record BotConditions(NoiseModel noise, boolean hideFriction, List<OwnStroke> ownStrokes, double clock) {
     public static final BotConditions NONE = new BotConditions(NoiseModel.NONE, false, List.of());
+
+    /** Conditions at course clock 0. */
+    public BotConditions(NoiseModel noise, boolean hideFriction, List<OwnStroke> ownStrokes) {
+        this(noise, hideFriction, ownStrokes, 0);
+    }
 
     /** One of the bot's strokes: where it started, the shot, where it ended, and how. */
     public record OwnStroke(FrictionEstimator.Observation observation, Outcome outcome) {
@@ -31,6 +37,7 @@ public record BotConditions(NoiseModel noise, boolean hideFriction, List<OwnStro
             own.add(new OwnStroke(new FrictionEstimator.Observation(r.startX(), r.startY(),
                     minigolf.bot.Shot.of(r.vx(), r.vy()), r.endX(), r.endY()), r.outcome()));
         }
-        return new BotConditions(game.noise(), hideFriction, own);
+        // The clock stands still while the bot thinks: its shot (and its wait) is planned from this moment.
+        return new BotConditions(game.noise(), hideFriction, own, game.clock());
     }
 }

@@ -12,6 +12,8 @@ public final class BotTurn {
     private final BotControl control = new BotControl();
     private final Thread thread;
     private volatile double[] shot;
+    /** The wait (s) the bot planned before its shot (moving obstacles), 0 when it plays at once. */
+    private volatile double waitSeconds;
     private volatile String failure;
     private volatile boolean done;
 
@@ -28,11 +30,12 @@ public final class BotTurn {
                 double[] v = planner.plan(world, settings, x, y, strokesTaken, seed, conditions, control);
                 if (control.isCancelled()) {
                     failure = "cancelled";
-                } else if (v == null || v.length < 2 || v.length > 3 || !java.util.Arrays.stream(v).allMatch(Double::isFinite)
-                        || (v.length == 3 && v[2] < 0)) {
+                } else if (v == null || v.length < 2 || v.length > 4 || !java.util.Arrays.stream(v).allMatch(Double::isFinite)
+                        || (v.length >= 3 && v[2] < 0) || (v.length == 4 && v[3] < 0)) {
                     failure = planner.name() + " gave no shot";
                 } else {
-                    double vz = v.length == 3 ? v[2] : 0;
+                    double vz = v.length >= 3 ? v[2] : 0;
+                    waitSeconds = v.length == 4 ? v[3] : 0;
                     double speed = Math.sqrt(v[0] * v[0] + v[1] * v[1] + vz * vz), max = world.physics().maxSpeed();
                     // A bot may round just past the limit; the game never hits harder than maxSpeed (the whole vector).
                     double k = speed > max ? max / speed : 1;
@@ -70,6 +73,11 @@ public final class BotTurn {
     /** The shot (vx, vy, vz; vz = 0 for a putt) once done and successful, else null. */
     public double[] shot() {
         return shot;
+    }
+
+    /** The wait (s) before the shot the bot planned: the course clock runs on this long, then it is hit. */
+    public double waitSeconds() {
+        return waitSeconds;
     }
 
     /** Why there is no shot ("cancelled", an error line), or null. */

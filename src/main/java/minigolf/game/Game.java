@@ -52,6 +52,11 @@ public final class Game {
     private double strokeVx, strokeVy, strokeVz;
     /** The stroke in flight as played (what the history and replays keep). */
     private PlayedStroke strokePlayed;
+    /**
+     * The course clock (s): where moving obstacles are. It runs on between strokes (the game loop
+     * calls {@link #advanceClock}) and through each stroke; a stroke is played at its current value.
+     */
+    private double clock;
 
     public Game(World world, SimulationSettings settings, List<Player> players, int strokeLimit) {
         this(world, settings, players, strokeLimit, NoiseModel.NONE, 0);
@@ -91,6 +96,7 @@ public final class Game {
         game.states.clear();
         game.states.addAll(saved.states());
         game.history.addAll(saved.history());
+        game.clock = saved.clock();
         if (saved.pendingShot() != null) {
             int who = game.currentPlayer();
             if (who < 0) throw new IllegalArgumentException("the saved game has a shot in flight but nobody left to play");
@@ -104,7 +110,34 @@ public final class Game {
     public GameState state() {
         PendingShot pending = stroke == null ? null : new PendingShot(strokeVx, strokeVy, strokeVz);
         return new GameState(settings, players, strokeLimit, List.copyOf(states), List.copyOf(history), pending, noise,
-                noiseSeed);
+                noiseSeed, clock);
+    }
+
+    /**
+     * The course clock (s): with a stroke rolling, the moment it has reached; otherwise where it
+     * stands (the next stroke is played at it).
+     */
+    public double clock() {
+        return stroke != null ? stroke.clock() : clock;
+    }
+
+    /** Lets the course clock run on by {@code seconds} between strokes (the players aim, a bot's planned wait). */
+    public void advanceClock(double seconds) {
+        if (stroke != null) throw new IllegalStateException("a stroke is rolling: its own time moves the clock");
+        if (!(seconds >= 0) || !Double.isFinite(seconds)) throw new IllegalArgumentException("seconds must be >= 0, got " + seconds);
+        clock += seconds;
+    }
+
+    /** Runs the course clock on to exactly {@code moment} (a bot's planned moment), never back. */
+    public void advanceClockTo(double moment) {
+        if (stroke != null) throw new IllegalStateException("a stroke is rolling: its own time moves the clock");
+        if (!(moment >= clock) || !Double.isFinite(moment)) throw new IllegalArgumentException("the clock cannot go back to " + moment);
+        clock = moment;
+    }
+
+    /** Whether the course has moving obstacles (then the clock matters). */
+    public boolean hasMovingObstacles() {
+        return world.moving() != null;
     }
 
     /** The noise every stroke is played with ({@link NoiseModel#NONE}: as aimed). */
@@ -244,12 +277,12 @@ public final class Game {
         if (!(vz >= 0)) throw new IllegalArgumentException("the vertical velocity must be 0 or more, got " + vz);
         PlayerState s = states.get(who);
         // The aimed stroke is checked as before (finite, not too fast); then the noise is drawn.
-        Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, vz, listener, false);
+        Stroke started = new Stroke(world, settings, s.x(), s.y(), vx, vy, vz, clock, listener, false);
         PlayedStroke played = new PlayedStroke(s.x(), s.y(), new Shot(vx, vy, vz));
         if (!noise.isNone()) {
             played = new ShotNoise(noise, world, noiseSeed + 0x9E3779B97F4A7C15L * history.size()).play(s.x(), s.y(), played.shot());
             Shot p = played.shot();
-            started = new Stroke(world, settings, played.x(), played.y(), p.vx(), p.vy(), p.vz(), listener, false);
+            started = new Stroke(world, settings, played.x(), played.y(), p.vx(), p.vy(), p.vz(), clock, listener, false);
         }
         stroke = started;
         strokePlayer = who;
@@ -280,8 +313,9 @@ public final class Game {
         // The stroke as played: a replay from the record ends exactly where play did.
         Shot v = strokePlayed.shot();
         ShotRecord record = new ShotRecord(strokePlayer, strokePlayed.x(), strokePlayed.y(), v.vx(), v.vy(), v.vz(),
-                r.outcome(), r.endX(), r.endY());
+                r.outcome(), r.endX(), r.endY(), clock);
         history.add(record);
+        clock = stroke.clock();
         stroke = null;
         strokePlayer = -1;
         strokePlayed = null;

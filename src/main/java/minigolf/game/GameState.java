@@ -7,11 +7,18 @@ import minigolf.physics.SimulationSettings;
 
 /**
  * A game's complete state, what a save file holds besides the course: who plays, each ball and
- * count, the shots so far, and the shot in flight (null when the balls are at rest).
+ * count, the shots so far, the shot in flight (null when the balls are at rest), and the course
+ * clock (s; where moving obstacles are; with a shot in flight, the moment it was played).
  */
 public record GameState(SimulationSettings settings, List<Player> players, int strokeLimit,
                         List<PlayerState> states, List<ShotRecord> history, PendingShot pendingShot, NoiseModel noise,
-                        long noiseSeed) {
+                        long noiseSeed, double clock) {
+    /** A game at course clock 0. */
+    public GameState(SimulationSettings settings, List<Player> players, int strokeLimit, List<PlayerState> states,
+                     List<ShotRecord> history, PendingShot pendingShot, NoiseModel noise, long noiseSeed) {
+        this(settings, players, strokeLimit, states, history, pendingShot, noise, noiseSeed, 0);
+    }
+
     /** A game without noise. */
     public GameState(SimulationSettings settings, List<Player> players, int strokeLimit, List<PlayerState> states,
                      List<ShotRecord> history, PendingShot pendingShot) {
@@ -20,6 +27,7 @@ public record GameState(SimulationSettings settings, List<Player> players, int s
 
     public GameState {
         if (noise == null) noise = NoiseModel.NONE;
+        if (!Double.isFinite(clock) || clock < 0) throw new IllegalArgumentException("the course clock must be finite and >= 0, got " + clock);
         players = List.copyOf(players);
         states = List.copyOf(states);
         history = List.copyOf(history);

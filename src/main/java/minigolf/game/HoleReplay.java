@@ -52,13 +52,13 @@ public final class HoleReplay {
     /** The next stroke, ready to be stepped (or run). */
     public Stroke nextStroke(TrajectoryListener listener) {
         ShotRecord r = shots.get(next++);
-        return new Stroke(world, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), listener, false);
+        return new Stroke(world, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), listener, false);
     }
 
     /** Replays every stroke to its end; true if each ends with the outcome and at the very point recorded in play. */
     public boolean matchesPlay() {
         for (ShotRecord r : shots) {
-            ShotResult res = new Stroke(world, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), null, false).run();
+            ShotResult res = new Stroke(world, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), null, false).run();
             if (!matches(r, res)) return false;
         }
         return true;

@@ -28,10 +28,10 @@ public final class SavedGames {
     public static final int FORMAT = 1;
     static final String KIND = "minigolf-saved-game";
     private static final List<String> TOP = List.of("format", "kind", "course", "simulation", "strokeLimit",
-            "players", "history", "pendingShot", "noise");
+            "players", "history", "pendingShot", "noise", "clock");
     private static final List<String> SIMULATION = List.of("integrator", "dt", "maxTime");
     private static final List<String> PLAYER = List.of("name", "kind", "bot", "ball", "strokes", "penalties", "status");
-    private static final List<String> SHOT = List.of("player", "start", "velocity", "outcome", "end");
+    private static final List<String> SHOT = List.of("player", "start", "velocity", "outcome", "end", "clock");
     private static final List<String> PENDING = List.of("velocity");
     /** The "realistic" noise and its seed; absent in a game without noise (and in files from before it). */
     private static final List<String> NOISE = List.of("position", "velocity", "seed");
@@ -87,6 +87,8 @@ public final class SavedGames {
             o.put("penalties", st.penalties());
             o.put("status", st.status().jsonName());
         }
+        // The course clock only where it is not 0, so saves from before it (and of still courses) stay as they were.
+        if (s.clock() != 0) root.put("clock", s.clock());
         writeHistory(root.putArray("history"), s.history());
         if (s.pendingShot() != null) {
             PendingShot p = s.pendingShot();
@@ -223,7 +225,15 @@ public final class SavedGames {
             }
             noiseSeed = seed.longValue();
         }
-        return new Loaded(world, new GameState(settings, players, strokeLimit, states, history, pending, noise, noiseSeed));
+        double clock = root.has("clock") ? clock(f, root, null) : 0;
+        return new Loaded(world, new GameState(settings, players, strokeLimit, states, history, pending, noise, noiseSeed, clock));
+    }
+
+    /** The course clock field of {@code o} (s): a finite number, 0 or more. */
+    private static double clock(JsonFields f, JsonNode o, String path) throws SaveGameException {
+        double c = f.number(o, path, "clock");
+        if (!(c >= 0) || !Double.isFinite(c)) throw f.error(path == null ? "clock" : path + ".clock", "must be 0 or more, got " + c);
+        return c;
     }
 
     private static Outcome outcomeNamed(String name) {
@@ -240,6 +250,7 @@ public final class SavedGames {
             velocity(o, r.vx(), r.vy(), r.vz());
             o.put("outcome", r.outcome().jsonName());
             o.putArray("end").add(r.endX()).add(r.endY());
+            if (r.clock() != 0) o.put("clock", r.clock());
         }
     }
 
@@ -254,7 +265,8 @@ public final class SavedGames {
             double[] start = f.vec(o, p, "start"), v = f.velocity(o, p, "velocity"), end = f.vec(o, p, "end");
             Outcome outcome = outcomeNamed(f.text(o, p, "outcome"));
             if (outcome == null) throw f.error(p + ".outcome", "must be holed, stopped, water, out or timeout");
-            history.add(new ShotRecord(who, start[0], start[1], v[0], v[1], v[2], outcome, end[0], end[1]));
+            double clock = o.has("clock") ? clock(f, o, p) : 0;
+            history.add(new ShotRecord(who, start[0], start[1], v[0], v[1], v[2], outcome, end[0], end[1], clock));
         }
         return history;
     }

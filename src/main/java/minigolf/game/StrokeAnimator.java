@@ -18,6 +18,8 @@ public final class StrokeAnimator {
     private double accumulator;
     private double prevX, prevY, prevZ, prevVx, prevVy;
     private double curX, curY, curZ, curVx, curVy;
+    /** The course clock at the last two states (moving obstacles are drawn between them, as the ball is). */
+    private double prevClock, curClock;
     private double ax, ay;
     private double alpha;
 
@@ -29,6 +31,7 @@ public final class StrokeAnimator {
         prevZ = curZ = stroke.z();
         prevVx = curVx = stroke.vx();
         prevVy = curVy = stroke.vy();
+        prevClock = curClock = stroke.clock();
     }
 
     /** Advances by {@code seconds} of real time (times {@code speed}, 1 = real time); returns steps taken. */
@@ -46,6 +49,7 @@ public final class StrokeAnimator {
             prevZ = curZ;
             prevVx = curVx;
             prevVy = curVy;
+            prevClock = curClock;
             try {
                 stroke.step();
             } catch (NonFiniteMotionException e) {
@@ -60,6 +64,7 @@ public final class StrokeAnimator {
             curZ = Double.isFinite(endZ) ? endZ : curZ;
             curVx = stroke.vx();
             curVy = stroke.vy();
+            curClock = stroke.clock();
             double stepTime = dt;
             ax = (curVx - prevVx) / stepTime;
             ay = (curVy - prevVy) / stepTime;
@@ -68,6 +73,11 @@ public final class StrokeAnimator {
         }
         alpha = stroke.isFinished() ? 1 : Math.min(1, accumulator / dt);
         return taken;
+    }
+
+    /** The course clock the frame shows (interpolated as the ball's position is). */
+    public double clock() {
+        return prevClock + alpha * (curClock - prevClock);
     }
 
     public boolean isFinished() {

@@ -12,11 +12,18 @@ import minigolf.physics.Outcome;
  * One thing that changed the score in an online room: a stroke as the server played it, or a seat
  * picked up without one ({@code stroke} null). {@code after} is the seat's ball and count as the
  * server left them, so a client (or the server itself, restarting from its database) settles
- * exactly there. {@code seq} counts the room's events from 1.
+ * exactly there. {@code seq} counts the room's events from 1. {@code clockAfter} is the room's course
+ * clock once the stroke has run (s; the stroke's own clock is when it started): clients do not
+ * simulate, so this is how they know where moving obstacles stand.
  */
-public record RoomEvent(long seq, int hole, int seat, ShotRecord stroke, PlayerState after, double waitSeconds) {
+public record RoomEvent(long seq, int hole, int seat, ShotRecord stroke, PlayerState after, double waitSeconds, double clockAfter) {
     private static final List<String> FIELDS = List.of("type", "seq", "hole", "seat", "start", "velocity", "wait",
-            "outcome", "end", "ball", "strokes", "penalties", "status", "turn");
+            "outcome", "end", "ball", "strokes", "penalties", "status", "turn", "clock", "clockAfter");
+
+    /** An event whose clock after is the stroke's own (a pick-up, or a course where the clock does not matter). */
+    public RoomEvent(long seq, int hole, int seat, ShotRecord stroke, PlayerState after, double waitSeconds) {
+        this(seq, hole, seat, stroke, after, waitSeconds, stroke == null ? 0 : stroke.clock());
+    }
 
     public RoomEvent {
         if (seq < 1) throw new IllegalArgumentException("events count from 1, got " + seq);
@@ -37,6 +44,9 @@ public record RoomEvent(long seq, int hole, int seat, ShotRecord stroke, PlayerS
             o.put("wait", waitSeconds);
             o.put("outcome", stroke.outcome().jsonName());
             o.putArray("end").add(stroke.endX()).add(stroke.endY());
+            // The course clock the stroke was played at (moving obstacles: docs/course-format.md); 0 is left out.
+            if (stroke.clock() != 0) o.put("clock", stroke.clock());
+            if (clockAfter != 0) o.put("clockAfter", clockAfter);
         }
         o.putArray("ball").add(after.x()).add(after.y());
         o.put("strokes", after.strokes()).put("penalties", after.penalties()).put("status", after.status().jsonName());
@@ -65,7 +75,9 @@ public record RoomEvent(long seq, int hole, int seat, ShotRecord stroke, PlayerS
         for (Outcome c : Outcome.values()) if (c.jsonName().equals(outcomeName)) outcome = c;
         if (outcome == null) throw Json.bad("outcome", "unknown outcome " + Json.shown(outcomeName));
         double wait = Json.number(o, "wait", 0, Protocol.MAX_WAIT_SECONDS);
-        return new RoomEvent(seq, hole, seat, new ShotRecord(seat, start[0], start[1], v[0], v[1], v[2], outcome, end[0], end[1]),
-                after, wait);
+        double clock = o.has("clock") ? Json.number(o, "clock", 0, Double.MAX_VALUE) : 0;
+        double clockAfter = o.has("clockAfter") ? Json.number(o, "clockAfter", clock, Double.MAX_VALUE) : 0;
+        return new RoomEvent(seq, hole, seat, new ShotRecord(seat, start[0], start[1], v[0], v[1], v[2], outcome, end[0], end[1],
+                clock), after, wait, clockAfter);
     }
 }

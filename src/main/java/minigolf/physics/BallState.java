@@ -10,22 +10,41 @@ package minigolf.physics;
 final class BallState {
     private final GroundCache ground;
     private final FrictionField friction;
+    /** Push zones and magnets; null without them. */
+    private final ForceField forces;
+    private final double gravity;
+    private final boolean complete;
+    private final double[] sample = new double[3];
+
+    /** Where the stroke began (a ball a moving obstacle crushes or catches is put back there). */
+    double startX, startY;
+    /** The ground's height where the stroke began. */
+    double startZ;
 
     // The ball and the terrain sample at it (reused as the first stage of the next step).
     double x, y, vx, vy, t;
     double h, hx, hy, muK;
+    /**
+     * The force of push zones and magnets at the ball (m/s², 0 without them), and the pull gradient
+     * the rules of rest see (ForceField.pullGradient; the ground's gradient without forces).
+     */
+    double fx, fy, pullX, pullY;
     int steps;
     // The third dimension: z is the contact point's height (h while rolling), vz its rate of change in flight.
     double z, vz;
     boolean flying;
 
     // The state at the start of the last committed rolling step.
-    double px, py, pvx, pvy, pt, ph, phx, phy, pMuK;
+    double px, py, pvx, pvy, pt, ph, phx, phy, pMuK, pfx, pfy, pPullX, pPullY;
 
     /** Set by a piece of a step (a contact, a launch, a landing) when the rest of the step is to be integrated. */
     boolean resume;
     /** Set when the piece was one the error control shortened: no contact, so it does not count towards a wedge. */
     boolean subPiece;
+    /** Set when the ball meets a moving obstacle within the current step (a wedge there crushes it). */
+    boolean movingContact;
+    /** Contacts with moving obstacles in this stroke (too many and the ball is caught: out). */
+    int movingContacts;
     /** The time the current piece took. */
     double pieceTime;
 
@@ -33,9 +52,12 @@ final class BallState {
     Outcome outcome;
     double endX, endY, endZ;
 
-    BallState(GroundCache ground, FrictionField friction) {
+    BallState(GroundCache ground, FrictionField friction, ForceField forces, double gravity, boolean complete) {
         this.ground = ground;
         this.friction = friction;
+        this.forces = forces;
+        this.gravity = gravity;
+        this.complete = complete;
     }
 
     /** A new stroke: the ball at (x, y) with velocity (vx, vy) on the ground, everything else cleared. */
@@ -44,14 +66,21 @@ final class BallState {
         this.y = y;
         this.vx = vx;
         this.vy = vy;
+        startX = x;
+        startY = y;
+        startZ = 0;
         t = 0;
         h = hx = hy = muK = 0;
+        fx = fy = pullX = pullY = 0;
         steps = 0;
         z = vz = 0;
         flying = false;
         px = py = pvx = pvy = pt = ph = phx = phy = pMuK = 0;
+        pfx = pfy = pPullX = pPullY = 0;
         resume = false;
         subPiece = false;
+        movingContact = false;
+        movingContacts = 0;
         pieceTime = 0;
         outcome = null;
         endX = endY = endZ = 0;
@@ -67,14 +96,25 @@ final class BallState {
         return friction.entersHazard(x, y);
     }
 
-    /** Samples the terrain and friction under the ball into h, hx, hy, muK. */
+    /** Samples the terrain, friction and forces under the ball into h, hx, hy, muK, fx, fy, pullX, pullY. */
     void sampleGround() {
-        double[] sample = ground.at(x, y);
-        h = sample[0];
-        hx = sample[1];
-        hy = sample[2];
+        double[] g = ground.at(x, y);
+        h = g[0];
+        hx = g[1];
+        hy = g[2];
         if (!Double.isFinite(h + hx + hy)) throw NonFiniteMotionException.terrain(x, y);
         muK = friction.kinetic(x, y);
+        if (forces == null) {
+            pullX = hx;
+            pullY = hy;
+            return;
+        }
+        forces.force(x, y, sample);
+        fx = sample[0];
+        fy = sample[1];
+        ForceField.pullGradient(hx, hy, fx, fy, gravity, complete, sample);
+        pullX = sample[0];
+        pullY = sample[1];
     }
 
     /** Vertical velocity: in flight its own, while rolling the rate at which the ground under the ball rises. */
@@ -93,6 +133,10 @@ final class BallState {
         phx = hx;
         phy = hy;
         pMuK = muK;
+        pfx = fx;
+        pfy = fy;
+        pPullX = pullX;
+        pPullY = pullY;
     }
 
     /** Goes back to the start of the last committed rolling step. */
@@ -105,6 +149,10 @@ final class BallState {
         hx = phx;
         hy = phy;
         muK = pMuK;
+        fx = pfx;
+        fy = pfy;
+        pullX = pPullX;
+        pullY = pPullY;
         t = pt;
     }
 

@@ -16,9 +16,13 @@ final class EnergyGuard {
     private final Terrain terrain;
     private final double gravity;
     private final boolean complete;
+    /** Push zones and magnets, whose work counts as energy gained; null without them. */
+    private final ForceField forces;
+    private final double[] push = new double[2];
 
     EnergyGuard(BallState ball, RollingTrial trial, StrokeReports reports, Terrain terrain, double gravity,
-                boolean complete) {
+                boolean complete, ForceField forces) {
+        this.forces = forces;
         this.ball = ball;
         this.trial = trial;
         this.reports = reports;
@@ -40,6 +44,18 @@ final class EnergyGuard {
     }
 
     /**
+     * The work per unit mass of the push zones and magnets from the step's start to (x, y): the
+     * start's push (a step never crosses a push zone's edge) along the chord, and the magnets'
+     * potential difference. 0 without them.
+     */
+    private double forceWork(double x, double y) {
+        if (forces == null) return 0;
+        BallState b = ball;
+        forces.push(b.px, b.py, push);
+        return push[0] * (x - b.px) + push[1] * (y - b.py) + forces.magnetPotential(b.px, b.py) - forces.magnetPotential(x, y);
+    }
+
+    /**
      * Checks the step just committed (from the ball's step start to its state). Returns true when
      * it dissipates enough; false when it has rewritten the step (and reported the new state).
      */
@@ -48,6 +64,7 @@ final class EnergyGuard {
         double e0 = energy(b.pvx, b.pvy, b.ph, b.phx, b.phy);
         double cx = b.x - b.px, cy = b.y - b.py;
         double allowed = e0 - halfFrictionWork(Math.sqrt(cx * cx + cy * cy));
+        if (forces != null) allowed += forceWork(b.x, b.y);
         double slack = 1e-9 * (Math.abs(e0) + 1);
         double e1 = energy(b.vx, b.vy, b.h, b.hx, b.hy);
         if (e1 <= allowed + slack) return true;
@@ -69,6 +86,7 @@ final class EnergyGuard {
             trial.run(mid, kind, a1x, a1y);
             double need = gravity * terrain.height(trial.nx, trial.ny)
                     + halfFrictionWork(Math.hypot(trial.nx - b.x, trial.ny - b.y));
+            if (forces != null) need -= forceWork(trial.nx, trial.ny);
             if (need <= e0) reach = mid; else beyond = mid;
         }
         trial.run(reach, kind, a1x, a1y);

@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import minigolf.collision.CollisionScene;
 
 /**
  * The flying pieces of a stroke: a step of {@link FlightStep}, cut where the ball comes down
@@ -16,7 +15,7 @@ final class FlightPhase {
     private final RestRule rest;
     private final PlayArea area;
     /** The obstacles; null without them. */
-    private final CollisionScene scene;
+    private final Solids scene;
     private final PathSweep paths;
     private final ObstacleContact contact;
     private final double ballRadius;
@@ -27,7 +26,7 @@ final class FlightPhase {
     private double fx, fy, fz, fvx, fvy, fvz;
 
     FlightPhase(BallState ball, StrokeReports reports, FlightStep flight, GroundImpact impact, HoleRules hole,
-                RestRule rest, PlayArea area, CollisionScene scene, PathSweep paths, ObstacleContact contact,
+                RestRule rest, PlayArea area, Solids scene, PathSweep paths, ObstacleContact contact,
                 double ballRadius, double dt, double maxTime) {
         this.ball = ball;
         this.reports = reports;

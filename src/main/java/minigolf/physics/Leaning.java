@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import minigolf.collision.CollisionScene;
 import minigolf.collision.Hit;
 import minigolf.terrain.Terrain;
 
@@ -21,22 +20,21 @@ final class Leaning {
     /** Contacts whose normal is within 45 degrees of horizontal (|n_z| below this) can hold a ball. */
     private static final double MAX_NORMAL_Z = Math.sqrt(0.5);
 
-    private final CollisionScene scene;
+    private final Solids solids;
     private final Terrain terrain;
     private final RollingStep rolling;
     private final double radius;
     private final double gravity;
     private final boolean complete;
     private final Hit hit = new Hit();
-    private final double[] scratch = new double[3];
 
     /** The velocity and the position offset {@link #settles} leaves. */
     double vx, vy, dx, dy;
     /** The gradient {@link #effective} leaves. */
     double gx, gy;
 
-    Leaning(CollisionScene scene, Terrain terrain, RollingStep rolling, double radius, double gravity, boolean complete) {
-        this.scene = scene;
+    Leaning(Solids solids, Terrain terrain, RollingStep rolling, double radius, double gravity, boolean complete) {
+        this.solids = solids;
         this.terrain = terrain;
         this.rolling = rolling;
         this.radius = radius;
@@ -85,8 +83,9 @@ final class Leaning {
     /** Whether the ball at (x, y), moved REACH towards the obstacle, would touch it. */
     boolean touches(double x, double y) {
         double ex = x - REACH * rolling.leanX, ey = y - REACH * rolling.leanY;
-        if (!scene.anyNear(Math.min(x, ex), Math.min(y, ey), Math.max(x, ex), Math.max(y, ey))) return false;
-        return scene.sweep(x, y, terrain.height(x, y) + radius, ex, ey, terrain.height(ex, ey) + radius, hit, scratch);
+        if (!solids.anyStillNear(Math.min(x, ex), Math.min(y, ey), Math.max(x, ex), Math.max(y, ey))) return false;
+        // Leaning is on still obstacles and gates only (a moving one pushes or leaves the ball).
+        return solids.sweepStill(x, y, terrain.height(x, y) + radius, ex, ey, terrain.height(ex, ey) + radius, hit);
     }
 
     /**

@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import minigolf.collision.CollisionScene;
 import minigolf.collision.Hit;
 import minigolf.terrain.Terrain;
 
@@ -22,10 +21,12 @@ final class PathSweep {
     /** A ball stops this far short of its contact point along its path, so it never ends a step touching. */
     static final double SKIN = 1e-7;
 
-    private final CollisionScene scene;
+    private final Solids solids;
     private final Terrain terrain;
     private final double ballRadius;
-    private final double[] scratch = new double[3];
+    /** The stroke's ball (its time is the step's start) and the course clock when the stroke began. */
+    private final BallState ball;
+    private double startClock;
     /** The last contact: normal, restitution, fraction of the chord it was found on. */
     final Hit hit = new Hit();
     /** The last contact: the fraction of the step, and the sphere's centre there. */
@@ -34,11 +35,19 @@ final class PathSweep {
     private double x0, y0, z0, mx0, my0, mz0, x1, y1, z1, mx1, my1, mz1;
     private boolean rolling;
     private double px, py, pz;
+    // The course clock at the step's start, and its length: the moving obstacles' times.
+    private double clock0, tau;
 
-    PathSweep(CollisionScene scene, Terrain terrain, double ballRadius) {
-        this.scene = scene;
+    PathSweep(Solids solids, Terrain terrain, double ballRadius, BallState ball) {
+        this.solids = solids;
+        this.ball = ball;
         this.terrain = terrain;
         this.ballRadius = ballRadius;
+    }
+
+    /** A new stroke played at course clock {@code clock}. */
+    void start(double clock) {
+        startClock = clock;
     }
 
     /**
@@ -62,14 +71,14 @@ final class PathSweep {
         double loX = Math.min(x0, x1), loY = Math.min(y0, y1), hiX = Math.max(x0, x1), hiY = Math.max(y0, y1);
         // The curve strays from the chord by at most |v0 - v1| tau / 8 (a cubic's bound is smaller).
         double bulge = 0.125 * tau * (Math.abs(vx0 - vx1) + Math.abs(vy0 - vy1));
-        if (!scene.anyNear(loX - bulge, loY - bulge, hiX + bulge, hiY + bulge)) return false;
+        if (!solids.anyNear(loX - bulge, loY - bulge, hiX + bulge, hiY + bulge)) return false;
         // Every point of the Hermite curve lies within (4/27)(|v0 tau - c| + |v1 tau - c|) of its
         // chord c, so every chord swept below lies in this rectangle: with no shape near it, no
         // sweep can meet one, and the terrain samples and sweeps of the chords are saved.
         double ex0 = vx0 * tau - (x1 - x0), ey0 = vy0 * tau - (y1 - y0);
         double ex1 = vx1 * tau - (x1 - x0), ey1 = vy1 * tau - (y1 - y0);
         double reach = 4.0 / 27 * (Math.sqrt(ex0 * ex0 + ey0 * ey0) + Math.sqrt(ex1 * ex1 + ey1 * ey1)) * (1 + 1e-9) + 1e-12;
-        if (!scene.anyShapeNear(loX - reach, loY - reach, hiX + reach, hiY + reach)) return false;
+        if (!solids.anyShapeNear(loX - reach, loY - reach, hiX + reach, hiY + reach)) return false;
         // A path that does not turn (the velocity changes only along the chord, as on flat ground)
         // is its chord: one sweep. Sideways, the cubic strays by about |dv x chord| tau / 8.
         double cx = x1 - x0, cy = y1 - y0, chord = Math.sqrt(cx * cx + cy * cy);
@@ -89,6 +98,8 @@ final class PathSweep {
         my1 = vy1 * tau;
         mz1 = vz1 * tau;
         this.rolling = rolling;
+        this.clock0 = startClock + ball.t;
+        this.tau = tau;
         double s0 = 0;
         for (int k = 1; k <= pieces; k++) {
             double s1 = (double) k / pieces;
@@ -123,9 +134,10 @@ final class PathSweep {
      */
     private boolean sweepRange(double sa, double sb, double ax, double ay, double az,
                                double bx, double by, double bz, int refinements) {
-        if (!scene.sweep(ax, ay, az, bx, by, bz, hit, scratch)) return false;
+        if (!solids.sweep(ax, ay, az, clock0 + sa * tau, bx, by, bz, clock0 + sb * tau, SKIN, hit)) return false;
         if (refinements == 0) {
-            backOff(Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay) + (bz - az) * (bz - az)));
+            // A moving obstacle's contact is already backed off, in its own frame.
+            if (!hit.moving) backOff(Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay) + (bz - az) * (bz - az)));
             double f = hit.fraction;
             contactX = ax + f * (bx - ax);
             contactY = ay + f * (by - ay);

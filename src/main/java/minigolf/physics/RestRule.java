@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import minigolf.collision.CollisionScene;
 import minigolf.collision.Hit;
 import minigolf.terrain.Terrain;
 
@@ -19,19 +18,28 @@ public final class RestRule {
 
     private final Terrain terrain;
     private final FrictionField friction;
-    private final CollisionScene scene;
+    /** What the ball can lean on at rest: still obstacles and gates; null without them. */
+    private final Solids solids;
     private final double ballRadius;
     private final double gravity;
+    /** Push zones and magnets; null without them. */
+    private final ForceField forces;
     private final Hit hit = new Hit();
     private final double[] scratch = new double[3];
     private Turn turn = Turn.UNDECIDED;
 
     RestRule(World world) {
+        this(world, Solids.of(world));
+    }
+
+    /** With the stroke's solids (null without any), so the rule shares their buffers. */
+    RestRule(World world, Solids solids) {
         this.terrain = world.terrain();
         this.friction = world.friction();
-        this.scene = world.obstacles();
+        this.solids = solids;
         this.ballRadius = world.physics().ballRadius();
         this.gravity = world.physics().gravity();
+        this.forces = world.forces();
     }
 
     /** Whether the ball is turning on ground steeper than mu_k and the rule sends it back down. */
@@ -76,9 +84,11 @@ public final class RestRule {
     enum Turn { UNDECIDED, STOPS, ROLLS_BACK }
 
     /**
-     * Whether the ground holds a ball at rest: static (or kinetic) friction is at least the slope,
-     * or, at a crease where the slope jumps (a V-shaped valley's floor, a cone's tip), the ground
-     * one probe further down the slope is no lower than friction allows.
+     * Whether the ground holds a ball at rest: static (or kinetic) friction is at least the slope
+     * (the pull gradient (hx, hy): the ground's, tilted by push zones and magnets), or, at a crease
+     * where the slope jumps (a V-shaped valley's floor, a cone's tip, where two pushes meet), the
+     * ground one probe further down the pull is no lower than friction allows, the force's work over
+     * the probe (its mean at both ends) counted as a drop of the ground.
      */
     boolean holds(double x, double y, double h, double hx, double hy, double muK) {
         double slope = Math.sqrt(hx * hx + hy * hy);
@@ -86,8 +96,18 @@ public final class RestRule {
         if (mu >= slope) return true;
         double d = CREASE_PROBE / slope;
         double ex = x - hx * d, ey = y - hy * d;
-        if (terrain.height(ex, ey) >= h - mu * CREASE_PROBE) return true;
+        double ground = terrain.height(ex, ey);
+        if (forces != null) ground -= forceWork(x, y, ex, ey) / gravity;
+        if (ground >= h - mu * CREASE_PROBE) return true;
         return leansOnObstacle(x, y, h, ex, ey);
+    }
+
+    /** The work per unit mass of the push zones and magnets from (x, y) to (ex, ey): their mean force at both ends along the way. */
+    private double forceWork(double x, double y, double ex, double ey) {
+        forces.force(x, y, scratch);
+        double fx = scratch[0], fy = scratch[1];
+        forces.force(ex, ey, scratch);
+        return 0.5 * ((fx + scratch[0]) * (ex - x) + (fy + scratch[1]) * (ey - y));
     }
 
     /**
@@ -96,11 +116,11 @@ public final class RestRule {
      * this a ball rolling from rest into a wall is cut at the wall every step and never finishes.
      */
     private boolean leansOnObstacle(double x, double y, double h, double ex, double ey) {
-        if (scene == null || !scene.anyNear(Math.min(x, ex), Math.min(y, ey), Math.max(x, ex), Math.max(y, ey))) {
+        if (solids == null || !solids.anyStillNear(Math.min(x, ex), Math.min(y, ey), Math.max(x, ex), Math.max(y, ey))) {
             return false;
         }
         double r = ballRadius;
-        return scene.sweep(x, y, h + r, ex, ey, terrain.height(ex, ey) + r, hit, scratch);
+        return solids.sweepStill(x, y, h + r, ex, ey, terrain.height(ex, ey) + r, hit);
     }
 
 }

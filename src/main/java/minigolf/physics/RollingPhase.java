@@ -1,6 +1,5 @@
 package minigolf.physics;
 
-import minigolf.collision.CollisionScene;
 import minigolf.terrain.Terrain;
 
 /**
@@ -23,7 +22,7 @@ final class RollingPhase {
     private final HoleRules hole;
     private final EnergyGuard energy;
     /** The obstacles and the ball settled against one; null without obstacles. */
-    private final CollisionScene scene;
+    private final Solids scene;
     private final Leaning lean;
     private final PathSweep paths;
     private final ObstacleContact contact;
@@ -33,7 +32,7 @@ final class RollingPhase {
     /** The base step (the frame, 1/60 s by default); longer steps only where {@link #mayStepLong} allows. */
     private final double dt;
     private final double maxTime;
-    /** Whether the course has friction zones, whose edges cut steps. */
+    /** Whether the course has friction zones or push zones, whose edges cut steps. */
     private final boolean zoned;
     /** Whether RK4's error control chooses the steps' lengths. */
     private final boolean controlled;
@@ -42,11 +41,23 @@ final class RollingPhase {
     private final FrictionField friction;
     /** Whether the hole's capture rule is checked along every step. */
     private final boolean captureRule;
+    /** The teleports; null without them. */
+    private final Teleporter teleporter;
+    /** While a resting ball waits for a moving obstacle to reach it: the clock of the contact (else NaN). */
+    private double waitUntil = Double.NaN;
+    private final minigolf.collision.Hit waitHit = new minigolf.collision.Hit();
+    /** Push zones and magnets; null without them. */
+    private final ForceField forces;
+    /** The course clock when the stroke began. */
+    private double startClock;
 
     RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepControl control,
                  StepLocator locate, RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy,
-                 CollisionScene scene, Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain,
-                 FrictionField friction, PlayArea area, double gravity, double ballRadius, double dt, double maxTime) {
+                 Solids scene, Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain,
+                 FrictionField friction, ForceField forces, Teleporter teleporter, PlayArea area, double gravity,
+                 double ballRadius, double dt, double maxTime) {
+        this.teleporter = teleporter;
+        this.forces = forces;
         this.ball = ball;
         this.reports = reports;
         this.rolling = rolling;
@@ -67,10 +78,17 @@ final class RollingPhase {
         this.dt = dt;
         this.maxTime = maxTime;
         this.friction = friction;
-        this.zoned = friction.hasZones();
+        this.zoned = friction.hasZones() || (forces != null && forces.hasPushZones());
         this.controlled = control != null;
         this.smooth = terrain.isSmooth() && !area.hasDeletedCells();
         this.captureRule = hole.captureRule;
+    }
+
+    /** A new stroke played at course clock {@code clock}: no wait for a moving obstacle, the teleports' exits from the first. */
+    void start(double clock) {
+        startClock = clock;
+        waitUntil = Double.NaN;
+        if (teleporter != null) teleporter.reset();
     }
 
     /** One rolling piece of at most tau seconds; returns the time it took. */
@@ -82,11 +100,24 @@ final class RollingPhase {
         }
         // The time limit ends the stroke exactly (a preview of its first seconds ends there).
         if (tau > maxTime - b.t) tau = maxTime - b.t;
+        if (teleporter != null) {
+            // A ball that landed in a teleport's entry (or was put there) is sent on at once.
+            int k = teleporter.at();
+            if (k >= 0) {
+                if (lean != null) lean.release();
+                rest.forget();
+                teleporter.send(k);
+                reports.state();
+                b.pieceTime = 0;
+                b.resume = true;
+                return 0;
+            }
+        }
         double speed = Math.sqrt(b.vx * b.vx + b.vy * b.vy);
         // A ball leaning on an obstacle leaves it at rest, where the ground no longer pulls it
         // towards it, or where the obstacle is out of reach (its end).
         boolean leaning = lean != null && lean.active();
-        if (leaning && (speed == 0 || !lean.holds(b.x, b.y, b.hx, b.hy))) {
+        if (leaning && (speed == 0 || !lean.holds(b.x, b.y, b.pullX, b.pullY))) {
             lean.release();
             leaning = false;
         }
@@ -94,19 +125,22 @@ final class RollingPhase {
         // when an energy cut leaves it at v = 0 at its turn: it starts down again, once.
         boolean sentBack = speed == 0 && rest.rollsBack();
         if (sentBack) rest.forget();
-        if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.hx, b.hy, b.muK)) {
-            reports.finish(hole.isInHole(b.x, b.y) ? Outcome.HOLED : b.restsInHazard() ? Outcome.WATER : Outcome.STOPPED,
-                    b.x, b.y, b.z);
+        if (speed == 0 && !sentBack && rest.holds(b.x, b.y, b.h, b.pullX, b.pullY, b.muK)) {
+            boolean holed = hole.isInHole(b.x, b.y);
+            if (!holed && scene != null && scene.hasMoving()) return waitForMoving(tau);
+            reports.finish(holed ? Outcome.HOLED : b.restsInHazard() ? Outcome.WATER : Outcome.STOPPED, b.x, b.y, b.z);
             return 0;
         }
-        rolling.acceleration(b.hx, b.hy, b.muK, b.vx, b.vy);
+        waitUntil = Double.NaN;
+        rolling.acceleration(b.hx, b.hy, b.fx, b.fy, b.muK, b.vx, b.vy);
         double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
             double decelerationAlongV = -(a1x * b.vx + a1y * b.vy) / speed;
-            // Leaning, the rule sees the ground without the part of its slope the obstacle takes.
-            double ghx = b.hx, ghy = b.hy;
+            // The rule sees the pull gradient (the ground's, tilted by push zones and magnets);
+            // leaning, without the part the obstacle takes.
+            double ghx = b.pullX, ghy = b.pullY;
             if (leaning) {
-                lean.effective(b.hx, b.hy);
+                lean.effective(b.pullX, b.pullY);
                 ghx = lean.gx;
                 ghy = lean.gy;
             }
@@ -157,6 +191,39 @@ final class RollingPhase {
     }
 
     /**
+     * A ball the ground holds at rest, on a course with moving obstacles: it stays (the stroke
+     * ends) only if no moving obstacle will ever reach it; otherwise it waits, still, until one
+     * does (within a period: they repeat) and is hit (docs/course-format.md, "Moving obstacles").
+     */
+    private double waitForMoving(double tau) {
+        BallState b = ball;
+        double now = startClock + b.t;
+        if (Double.isNaN(waitUntil)) {
+            waitUntil = scene.stillContact(b.x, b.y, b.h + ballRadius, now, waitHit);
+        }
+        if (waitUntil == Double.POSITIVE_INFINITY) {
+            waitUntil = Double.NaN;
+            reports.finish(Outcome.STOPPED, b.x, b.y, b.z);
+            return 0;
+        }
+        double wait = waitUntil - now;
+        if (wait >= tau) {
+            b.t += tau;
+            b.pieceTime = tau;
+            reports.state();
+            return tau;
+        }
+        b.t = waitUntil - startClock;
+        waitUntil = Double.NaN;
+        paths.hit.set(waitHit);
+        contact.whileRolling();
+        reports.state();
+        b.pieceTime = Math.max(0, wait);
+        b.resume = true;
+        return b.pieceTime;
+    }
+
+    /**
      * Whether the long step being chosen starts on ground shallower than mu_k, where the ball
      * cannot turn: it may come nearer its stop (clearOfHazards checks that it stayed so).
      */
@@ -165,9 +232,10 @@ final class RollingPhase {
     /**
      * The longest step up to tau that may be taken from here (docs/physics.md, "Step control"):
      * dt, or longer where nothing it could reach needs the step's own length. A long step stays on
-     * smooth ground, clear of obstacles, friction zones' edges and (under the capture rule) the
-     * hole; the ball leans on no obstacle, and is fast enough that it can neither stop within the
-     * step nor come within the rest rule's horizon of a turn (on ground shallower than mu_k it
+     * smooth ground, clear of obstacles (still, gates, moving: their reach over a whole period),
+     * friction zones' edges, push zones, magnets, teleports' entries and (under the capture rule)
+     * the hole; the ball leans on no obstacle, and is fast enough that it can neither stop within
+     * the step nor come within the rest rule's horizon of a turn (on ground shallower than mu_k it
      * cannot turn: only the stop counts). Cut from tau to the length that qualifies.
      */
     private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
@@ -183,7 +251,7 @@ final class RollingPhase {
         double spare = speed - RestRule.REST_SPEED - braking * (dt + (shallowStep ? 0 : RestRule.TURN_HORIZON));
         if (braking * tau >= spare) tau = spare / braking;
         if (!control.isLong(tau)) return dt;
-        if (!(scene != null || zoned || captureRule)) return tau;
+        if (!(scene != null || zoned || captureRule || forces != null || teleporter != null)) return tau;
         // From the shortest long step up, each as long as nothing is within its reach: near an
         // obstacle a single small square is looked at.
         BallState b = ball;
@@ -193,8 +261,7 @@ final class RollingPhase {
             double length = Math.min(step, tau);
             double reach = speed * length + acceleration * length * length;
             double minX = b.x - reach, minY = b.y - reach, maxX = b.x + reach, maxY = b.y + reach;
-            if (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY)) break;
-            if (zoned && friction.mayChangeWithin(minX, minY, maxX, maxY)) break;
+            if (elementNear(minX, minY, maxX, maxY)) break;
             if (captureRule && hole.within(b.x, b.y, reach)) break;
             chosen = length;
             if (length >= tau) break;
@@ -203,15 +270,29 @@ final class RollingPhase {
     }
 
     /**
+     * Whether anything that a step's own length must follow reaches into the rectangle of centre
+     * positions: an obstacle (still, a gate, or a moving one anywhere in its period), a friction
+     * zone's edge, a push zone or a magnet, a teleport's entry.
+     */
+    private boolean elementNear(double minX, double minY, double maxX, double maxY) {
+        return (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY))
+                || (zoned && friction.mayChangeWithin(minX, minY, maxX, maxY))
+                || (forces != null && forces.near(minX, minY, maxX, maxY))
+                || (teleporter != null && teleporter.near(minX, minY, maxX, maxY));
+    }
+
+    /**
      * Whether a long step, integrated into the trial, keeps clear of what a step's end alone would
-     * not show: water or the bounds touched by its stages between its ends, and ground curving
-     * away fast enough to come within a quarter of the take-off threshold.
+     * not show: water or the bounds touched by its stages between its ends, an element its stages
+     * came near (they may stray a little outside the reach longestStep looked at), and ground
+     * curving away fast enough to come within a quarter of the take-off threshold.
      */
     private boolean clearOfHazards(double tau) {
         RollingStep r = rolling;
         if (r.stageLowest < 0 || !locate.inPlay(r.stageMinX, r.stageMinY) || !locate.inPlay(r.stageMaxX, r.stageMaxY)) {
             return false;
         }
+        if (elementNear(r.stageMinX, r.stageMinY, r.stageMaxX, r.stageMaxY)) return false;
         BallState b = ball;
         if (shallowStep) {
             // Still braking, short of its stop by at least half the dt of speed it was left with.
@@ -229,6 +310,7 @@ final class RollingPhase {
             commitStep(tau, kind, a1x, a1y, speed0);
         } finally {
             rolling.frozenMuK = Double.NaN;
+            rolling.pushFrozen = false;
         }
     }
 
@@ -275,8 +357,24 @@ final class RollingPhase {
             collided = true;
             leaves = false;
         }
+        int teleport = -1;
+        if (teleporter != null) {
+            // The ball enters a teleport's entry before the step's end: the step ends there.
+            double entry = teleporter.locate(endTau, kind, a1x, a1y);
+            if (entry >= 0) {
+                endTau = entry;
+                teleport = teleporter.entered;
+                stopping = false;
+                event = null;
+                collided = false;
+                leaves = false;
+            } else if (collided) {
+                tr.nx = paths.contactX;
+                tr.ny = paths.contactY;
+            }
+        }
         double speed1 = stopping && event == null ? 0 : Math.sqrt(tr.nvx * tr.nvx + tr.nvy * tr.nvy);
-        boolean pathEndsHere = stopping || event != null || collided;
+        boolean pathEndsHere = stopping || event != null || collided || teleport >= 0;
         if (captureRule && hole.captures(tr.nx, tr.ny, speed0, speed1, endTau, pathEndsHere)) {
             return;
         }
@@ -299,6 +397,15 @@ final class RollingPhase {
         }
         b.sampleGround();
         b.z = b.h;
+        if (teleport >= 0) {
+            if (lean != null) lean.release();
+            rest.forget();
+            reports.state();
+            teleporter.send(teleport);
+            reports.state();
+            b.resume = true;
+            return;
+        }
         if (collided) {
             contact.whileRolling();
             reports.state();
@@ -319,7 +426,7 @@ final class RollingPhase {
     /** Whether the ball leaves the ground within the coming tau (docs/physics.md, "Taking off"). */
     private boolean takesOffWithin(double tau, double a1x, double a1y) {
         BallState b = ball;
-        takeOff.from(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, b.muK);
+        takeOff.from(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, b.muK, b.fx, b.fy);
         return takeOff.takesOff(tau, a1x, a1y);
     }
 

@@ -21,17 +21,23 @@ final class RollingStep {
 
     private final Terrain terrain;
     private final FrictionField friction;
+    /** Push zones and magnets; null without them. */
+    private final ForceField forces;
     private final double gravity;
     private final boolean complete;
     private final Integrator integrator;
     /** Integrator steps longer than this are long steps ({@link #advanceLong}); infinite unless RK4 is controlled. */
     private final double longFrom;
     private final double[] sample = new double[3];
+    private final double[] force = new double[2];
 
-    // The start state of the sub-steps: position, velocity, slope and kinetic friction there.
-    private double x, y, vx, vy, hx, hy, muK;
+    // The start state of the sub-steps: position, velocity, slope, kinetic friction and force there.
+    private double x, y, vx, vy, hx, hy, muK, fx, fy;
     /** While not NaN, the kinetic friction every stage uses (a step that ends at a zone's edge). */
     double frozenMuK = Double.NaN;
+    /** While set, the push every stage uses (a step that ends at a push zone's edge): frozenPushX, frozenPushY. */
+    boolean pushFrozen;
+    double frozenPushX, frozenPushY;
     /**
      * While leaning, the ball rolls along an obstacle whose horizontal normal (pointing away from
      * it) is (leanX, leanY): the obstacle takes the part of the acceleration that pushes into it.
@@ -55,19 +61,21 @@ final class RollingStep {
      * @param dt the base step: RK4 steps longer than it are long steps ({@link #advanceLong}); with
      *           Euler and RK2 every step is theirs
      */
-    RollingStep(Terrain terrain, FrictionField friction, double gravity, boolean complete, Integrator integrator,
-                double dt) {
+    RollingStep(Terrain terrain, FrictionField friction, ForceField forces, double gravity, boolean complete,
+                Integrator integrator, double dt) {
         this.terrain = terrain;
         this.friction = friction;
+        this.forces = forces;
         this.gravity = gravity;
         this.complete = complete;
         this.integrator = integrator;
         this.longFrom = integrator == Integrator.RK4 ? dt * (1 + 1e-9) : Double.POSITIVE_INFINITY;
     }
 
-    /** A new stroke: no frozen friction, not leaning. */
+    /** A new stroke: no frozen friction or push, not leaning. */
     void reset() {
         frozenMuK = Double.NaN;
+        pushFrozen = false;
         leaning = false;
     }
 
@@ -78,8 +86,8 @@ final class RollingStep {
         this.cache = ground;
     }
 
-    /** Sets the start state of the following sub-steps. */
-    void from(double x, double y, double vx, double vy, double hx, double hy, double muK) {
+    /** Sets the start state of the following sub-steps (fx, fy: the force of push zones and magnets there). */
+    void from(double x, double y, double vx, double vy, double hx, double hy, double muK, double fx, double fy) {
         this.x = x;
         this.y = y;
         this.vx = vx;
@@ -87,6 +95,8 @@ final class RollingStep {
         this.hx = hx;
         this.hy = hy;
         this.muK = muK;
+        this.fx = fx;
+        this.fy = fy;
     }
 
     /** Writes the state after a sub-step of length tau from the current state into n*. */
@@ -232,19 +242,40 @@ final class RollingStep {
      * |w| &lt;= tau F (Coulomb friction as physics engines treat it). Position by the trapezoid rule.
      */
     private void slowSubStep(double tau) {
-        slowSubStep(tau, hx, hy);
+        slowSubStep(tau, hx, hy, fx, fy);
         terrain.sample(nx, ny, sample);
-        if (hx * sample[1] + hy * sample[2] < 0) {
-            // The slope turned over within the step: a valley's floor or a crease lies between.
-            // Gravity from the start alone would throw the ball up the far side (in a V-shaped
-            // valley, higher every step: energy from nowhere); the mean of both ends' slopes does not.
-            slowSubStep(tau, 0.5 * (hx + sample[1]), 0.5 * (hy + sample[2]));
+        double endHx = sample[1], endHy = sample[2];
+        double startX = hx, startY = hy, endX = endHx, endY = endHy, endFx = fx, endFy = fy;
+        if (forces != null) {
+            forceAt(nx, ny);
+            endFx = force[0];
+            endFy = force[1];
+            ForceField.pullGradient(endHx, endHy, endFx, endFy, gravity, complete, force);
+            endX = force[0];
+            endY = force[1];
+            ForceField.pullGradient(hx, hy, fx, fy, gravity, complete, force);
+            startX = force[0];
+            startY = force[1];
+        }
+        if (startX * endX + startY * endY < 0) {
+            // The pull turned over within the step: a valley's floor or a crease lies between (or
+            // two pushes meet). Gravity from the start alone would throw the ball up the far side (in
+            // a V-shaped valley, higher every step: energy from nowhere); the mean of both ends' does not.
+            slowSubStep(tau, 0.5 * (hx + endHx), 0.5 * (hy + endHy), 0.5 * (fx + endFx), 0.5 * (fy + endFy));
         }
     }
 
-    private void slowSubStep(double tau, double hx, double hy) {
+    private void slowSubStep(double tau, double hx, double hy, double fx, double fy) {
         double normalisation = complete ? 1 + hx * hx + hy * hy : 1;
-        double gx = -gravity * hx / normalisation, gy = -gravity * hy / normalisation;
+        double gx, gy;
+        if (fx == 0 && fy == 0) {
+            gx = -gravity * hx / normalisation;
+            gy = -gravity * hy / normalisation;
+        } else {
+            ForceField.pullGradient(hx, hy, fx, fy, gravity, complete, force);
+            gx = -gravity * force[0] / normalisation;
+            gy = -gravity * force[1] / normalisation;
+        }
         if (leaning) {
             double into = gx * leanX + gy * leanY;
             if (into < 0) {
@@ -306,31 +337,61 @@ final class RollingStep {
     private void accelerationAt(double px, double py, double pvx, double pvy) {
         terrain.sample(px, py, sample);
         double mu = Double.isNaN(frozenMuK) ? friction.kinetic(px, py) : frozenMuK;
-        acceleration(sample[1], sample[2], mu, pvx, pvy);
+        if (forces == null) {
+            acceleration(sample[1], sample[2], 0, 0, mu, pvx, pvy);
+            return;
+        }
+        forceAt(px, py);
+        acceleration(sample[1], sample[2], force[0], force[1], mu, pvx, pvy);
+    }
+
+    /** The force of the push zones (or the frozen push) and the magnets at (px, py) into force[0..1]. */
+    private void forceAt(double px, double py) {
+        if (pushFrozen) {
+            force[0] = frozenPushX;
+            force[1] = frozenPushY;
+        } else {
+            forces.push(px, py, force);
+        }
+        forces.addMagnets(px, py, force);
     }
 
     /**
-     * The equations of motion: writes (ax, ay) for slope (gx, gy), friction mu and velocity v;
-     * while leaning on an obstacle, without the part that pushes into it.
+     * The equations of motion: writes (ax, ay) for slope (gx, gy), the force (fx, fy) of push zones
+     * and magnets, friction mu and velocity v; while leaning on an obstacle, without the part that
+     * pushes into it. The force acts as a tilt would (ForceField.pullGradient): classic
+     * a = -g grad h + f - friction; complete a = -g grad h/D + f - grad h (grad h . f)/D - friction.
      */
-    void acceleration(double gx, double gy, double mu, double pvx, double pvy) {
+    void acceleration(double gx, double gy, double fx, double fy, double mu, double pvx, double pvy) {
         double speedSquared = pvx * pvx + pvy * pvy;
         double normalisation = complete ? 1 + gx * gx + gy * gy : 1;
+        // Gravity's and the force's pull, as a gradient (px, py): a = -g p / D before friction.
+        double px = gx, py = gy;
+        if (fx != 0 || fy != 0) {
+            if (complete) {
+                double lift = 1 + (gx * fx + gy * fy) / gravity;
+                px = gx * lift - normalisation * fx / gravity;
+                py = gy * lift - normalisation * fy / gravity;
+            } else {
+                px = gx - fx / gravity;
+                py = gy - fy / gravity;
+            }
+        }
         if (speedSquared == 0) {
-            // Starting from rest: the limit of the moving equations as v -> 0 along -grad h.
-            double slope = Math.sqrt(gx * gx + gy * gy);
+            // Starting from rest: the limit of the moving equations as v -> 0 along -p.
+            double slope = Math.sqrt(px * px + py * py);
             double factor = slope > mu ? -gravity * (1 - mu / slope) / normalisation : 0;
-            ax = factor * gx;
-            ay = factor * gy;
+            ax = factor * px;
+            ay = factor * py;
         } else if (complete) {
             double along = gx * pvx + gy * pvy;
             double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
-            ax = -gravity * gx / normalisation - frictionScale * pvx;
-            ay = -gravity * gy / normalisation - frictionScale * pvy;
+            ax = -gravity * px / normalisation - frictionScale * pvx;
+            ay = -gravity * py / normalisation - frictionScale * pvy;
         } else {
             double frictionScale = mu * gravity / Math.sqrt(speedSquared);
-            ax = -gravity * gx - frictionScale * pvx;
-            ay = -gravity * gy - frictionScale * pvy;
+            ax = -gravity * px - frictionScale * pvx;
+            ay = -gravity * py - frictionScale * pvy;
         }
         if (leaning) {
             double into = ax * leanX + ay * leanY;

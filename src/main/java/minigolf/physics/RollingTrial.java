@@ -38,7 +38,7 @@ final class RollingTrial {
         held = false;
         BallState b = ball;
         RollingStep r = rolling;
-        r.from(b.x, b.y, b.vx, b.vy, b.hx, b.hy, b.muK);
+        r.from(b.x, b.y, b.vx, b.vy, b.hx, b.hy, b.muK, b.fx, b.fy);
         r.advance(tau, kind, a1x, a1y);
         nx = r.nx;
         ny = r.ny;
@@ -50,7 +50,7 @@ final class RollingTrial {
     double controlledLength(double tau, double a1x, double a1y) {
         BallState b = ball;
         RollingStep r = rolling;
-        r.from(b.x, b.y, b.vx, b.vy, b.hx, b.hy, b.muK);
+        r.from(b.x, b.y, b.vx, b.vy, b.hx, b.hy, b.muK, b.fx, b.fy);
         double length = control.length(tau, a1x, a1y);
         nx = r.nx;
         ny = r.ny;

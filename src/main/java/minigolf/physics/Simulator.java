@@ -25,30 +25,55 @@ public final class Simulator {
     }
 
     public ShotResult simulate(double x0, double y0, double vx, double vy) {
-        return run(x0, y0, vx, vy, 0, null, false);
+        return run(0, x0, y0, vx, vy, 0, null, false);
     }
 
     public ShotResult simulate(double x0, double y0, double vx, double vy, TrajectoryListener listener) {
-        return run(x0, y0, vx, vy, 0, listener, false);
+        return run(0, x0, y0, vx, vy, 0, listener, false);
     }
 
     /** A shot with a vertical component (a chip when vz &gt; 0); no events recorded. */
     public ShotResult simulate(double x0, double y0, double vx, double vy, double vz) {
-        return run(x0, y0, vx, vy, vz, null, false);
+        return run(0, x0, y0, vx, vy, vz, null, false);
     }
 
     /** A shot with a vertical component, its events recorded in the result ({@link ShotResult#events()}). */
     public ShotResult simulate(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener) {
-        return run(x0, y0, vx, vy, vz, listener, true);
+        return run(0, x0, y0, vx, vy, vz, listener, true);
     }
 
     /** A shot with a vertical component, heard by the listener; its events recorded in the result only if asked. */
     public ShotResult simulate(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener,
                                boolean recordEvents) {
-        return run(x0, y0, vx, vy, vz, listener, recordEvents);
+        return run(0, x0, y0, vx, vy, vz, listener, recordEvents);
     }
 
-    private ShotResult run(double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener,
+    /**
+     * A shot played at course clock {@code clock} (s), where moving obstacles make the moment
+     * matter (docs/course-format.md, "Moving obstacles"); no events recorded.
+     */
+    public ShotResult simulateAt(double clock, double x0, double y0, double vx, double vy, double vz) {
+        return run(clock, x0, y0, vx, vy, vz, null, false);
+    }
+
+    /** A putt played at course clock {@code clock}, its states to the listener (events not recorded). */
+    public ShotResult simulatePuttAt(double clock, double x0, double y0, double vx, double vy, TrajectoryListener listener) {
+        return run(clock, x0, y0, vx, vy, 0, listener, false);
+    }
+
+    /** As {@link #simulateAt(double, double, double, double, double, double)}, heard by the listener; events recorded only if asked. */
+    public ShotResult simulateAt(double clock, double x0, double y0, double vx, double vy, double vz,
+                                 TrajectoryListener listener, boolean recordEvents) {
+        return run(clock, x0, y0, vx, vy, vz, listener, recordEvents);
+    }
+
+    /** As {@link #simulateAt(double, double, double, double, double, double)}, its events recorded in the result. */
+    public ShotResult simulateAt(double clock, double x0, double y0, double vx, double vy, double vz,
+                                 TrajectoryListener listener) {
+        return run(clock, x0, y0, vx, vy, vz, listener, true);
+    }
+
+    private ShotResult run(double clock, double x0, double y0, double vx, double vy, double vz, TrajectoryListener listener,
                            boolean recordEvents) {
         Stroke s = stroke;
         // A listener that simulates on this simulator while its stroke runs gets a stroke of its own.
@@ -58,7 +83,7 @@ public final class Simulator {
         }
         s.running = true;
         try {
-            s.start(x0, y0, vx, vy, vz, listener, recordEvents, false);
+            s.start(x0, y0, vx, vy, vz, clock, listener, recordEvents, false);
             return s.run();
         } finally {
             s.running = false;

@@ -28,11 +28,15 @@ final class StepLocator {
     private final Terrain terrain;
     private final GroundCache ground;
     private final FrictionField friction;
+    /** Push zones and magnets; null without them. */
+    private final ForceField forces;
     private final PlayArea area;
+    private final double[] push = new double[2];
 
     StepLocator(BallState ball, RollingTrial trial, RollingStep rolling, Terrain terrain, GroundCache ground,
-                FrictionField friction, PlayArea area) {
+                FrictionField friction, ForceField forces, PlayArea area) {
         this.ground = ground;
+        this.forces = forces;
         this.ball = ball;
         this.trial = trial;
         this.rolling = rolling;
@@ -136,22 +140,35 @@ final class StepLocator {
     }
 
     /**
-     * Friction jumps at a zone's edge, and an integrator step across the jump loses its order.
-     * If the step would end in another zone, it is shortened to end just past the edge, with the
-     * friction of the zone it started in (frozen in {@link RollingStep#frozenMuK} until the step
-     * is committed); the next step starts with the new zone's friction.
+     * Friction jumps at a zone's edge, and so does the push at a push zone's edge: an integrator
+     * step across the jump loses its order. If the step would end in another zone (or under another
+     * push), it is shortened to end just past the edge, with the friction and the push of where it
+     * started (frozen in {@link RollingStep#frozenMuK} and {@link RollingStep#pushFrozen} until the
+     * step is committed); the next step starts with the new ones.
      */
     double zoneEdge(double tau, double a1x, double a1y) {
         int zone = friction.zoneAt(ball.x, ball.y);
         if (!trial.holds(tau)) trial.run(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
-        if (friction.zoneAt(trial.nx, trial.ny) == zone) return tau;
+        if (sameRegion(zone, trial.nx, trial.ny)) return tau;
         rolling.frozenMuK = ball.muK;
+        if (forces != null) {
+            forces.push(ball.x, ball.y, push);
+            rolling.pushFrozen = true;
+            rolling.frozenPushX = push[0];
+            rolling.frozenPushY = push[1];
+        }
         double inside = 0, beyond = tau;
         for (int k = 0; k < LOCATE_ITERATIONS; k++) {
             double mid = 0.5 * (inside + beyond);
             trial.run(mid, RollingStep.Kind.INTEGRATOR, a1x, a1y);
-            if (friction.zoneAt(trial.nx, trial.ny) == zone) inside = mid; else beyond = mid;
+            if (sameRegion(zone, trial.nx, trial.ny)) inside = mid; else beyond = mid;
         }
         return beyond;
+    }
+
+    /** Whether (x, y) has the friction zone {@code zone} and the push of the ball's position. */
+    private boolean sameRegion(int zone, double x, double y) {
+        if (friction.zoneAt(x, y) != zone) return false;
+        return forces == null || !forces.hasPushZones() || forces.samePush(ball.x, ball.y, x, y);
     }
 }

@@ -38,6 +38,9 @@ public final class Stroke {
     private final double maxTime;
     private final double maxSpeed;
     private final PlayArea area;
+    private final PathSweep paths;
+    /** The course clock when the ball was hit (s). */
+    private double startClock;
     private final BallState ball;
     private final StrokeReports reports;
     private final RollingStep steps;
@@ -76,8 +79,19 @@ public final class Stroke {
      */
     public Stroke(World world, SimulationSettings settings, double x0, double y0, double vx0, double vy0, double vz0,
                   TrajectoryListener listener, boolean recordEvents) {
+        this(world, settings, x0, y0, vx0, vy0, vz0, 0, listener, recordEvents);
+    }
+
+    /**
+     * As {@link #Stroke(World, SimulationSettings, double, double, double, double, double,
+     * TrajectoryListener, boolean)}, played at course clock {@code clock} (s): the moment the
+     * moving obstacles are at when the ball is hit (docs/course-format.md, "Moving obstacles");
+     * {@link #clock()} is the course clock as the stroke goes on.
+     */
+    public Stroke(World world, SimulationSettings settings, double x0, double y0, double vx0, double vy0, double vz0,
+                  double clock, TrajectoryListener listener, boolean recordEvents) {
         this(world, settings);
-        start(x0, y0, vx0, vy0, vz0, listener, recordEvents, true);
+        start(x0, y0, vx0, vy0, vz0, clock, listener, recordEvents, true);
     }
 
     /**
@@ -89,7 +103,7 @@ public final class Stroke {
         Terrain terrain = world.terrain();
         FrictionField friction = world.friction();
         PlayArea area = world.playArea();
-        CollisionScene scene = world.obstacles();
+        Solids scene = Solids.of(world);
         double gravity = physics.gravity();
         double hopSpeed = Math.sqrt(2 * gravity * HOP_HEIGHT);
         double ballRadius = physics.ballRadius();
@@ -99,27 +113,32 @@ public final class Stroke {
         this.maxSpeed = physics.maxSpeed();
         this.area = area;
         GroundCache ground = new GroundCache(terrain);
-        this.ball = new BallState(ground, friction);
+        ForceField forces = world.forces();
+        this.ball = new BallState(ground, friction, forces, gravity, complete);
         this.reports = new StrokeReports(ball, terrain, dt);
         this.view = new FrameView(terrain);
 
-        RollingStep steps = new RollingStep(terrain, friction, gravity, complete, settings.integrator(), dt);
+        RollingStep steps = new RollingStep(terrain, friction, forces, gravity, complete, settings.integrator(), dt);
         steps.share(ground);
         StepControl control = settings.integrator() == Integrator.RK4 ? new StepControl(steps, dt) : null;
         RollingTrial trial = new RollingTrial(ball, steps, control);
-        RestRule rest = new RestRule(world);
-        PathSweep paths = new PathSweep(scene, terrain, ballRadius);
+        RestRule rest = new RestRule(world, scene);
+        PathSweep paths = new PathSweep(scene, terrain, ballRadius, ball);
+        this.paths = paths;
         Leaning lean = scene == null ? null : new Leaning(scene, terrain, steps, ballRadius, gravity, complete);
         HoleRules hole = new HoleRules(ball, reports, terrain, world.hole());
-        ObstacleContact contact = new ObstacleContact(ball, reports, paths.hit, rest, lean, hopSpeed);
+        ObstacleContact contact = new ObstacleContact(ball, reports, paths.hit, rest, lean, hopSpeed, physics.maxSpeed(),
+                gravity);
         this.steps = steps;
         this.control = control;
         this.trial = trial;
         this.rest = rest;
         this.rolling = new RollingPhase(ball, reports, steps, trial, control,
-                new StepLocator(ball, trial, steps, terrain, ground, friction, area), rest, new TakeOff(terrain, steps, gravity),
-                hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete), scene, lean, paths, contact,
-                terrain, friction, area, gravity, ballRadius, dt, settings.maxTime());
+                new StepLocator(ball, trial, steps, terrain, ground, friction, forces, area), rest,
+                new TakeOff(terrain, steps, gravity), hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete, forces),
+                scene, lean, paths, contact, terrain, friction, forces,
+                world.teleports() == null ? null : new Teleporter(world.teleports(), ball, trial, reports), area, gravity,
+                ballRadius, dt, settings.maxTime());
         this.flight = new FlightPhase(ball, reports, new FlightStep(terrain, gravity, physics.dragFactor()),
                 new GroundImpact(physics.groundRestitution(), hopSpeed), hole, rest, area, scene, paths, contact,
                 ballRadius, dt, settings.maxTime());
@@ -133,7 +152,7 @@ public final class Stroke {
      *
      * @throws IllegalArgumentException if the shot is faster than the course's maxSpeed
      */
-    void start(double x0, double y0, double vx0, double vy0, double vz0, TrajectoryListener listener,
+    void start(double x0, double y0, double vx0, double vy0, double vz0, double clock, TrajectoryListener listener,
                boolean recordEvents, boolean framed) {
         double speed = Math.sqrt(vx0 * vx0 + vy0 * vy0 + vz0 * vz0);
         if (!Double.isFinite(speed)) {
@@ -143,8 +162,12 @@ public final class Stroke {
             throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
                     "shot speed %.3f m/s exceeds the course's maxSpeed of %s m/s", speed, maxSpeed));
         }
+        if (!Double.isFinite(clock)) throw new IllegalArgumentException("the course clock must be a finite number");
+        startClock = clock;
         BallState ball = this.ball;
         ball.reset(x0, y0, vx0, vy0);
+        paths.start(clock);
+        rolling.start(clock);
         this.framed = framed;
         frames = 0;
         shownEnd = false;
@@ -157,6 +180,7 @@ public final class Stroke {
 
         ball.sampleGround();
         ball.z = ball.h;
+        ball.startZ = ball.h;
         if (!area.contains(ball.x, ball.y)) {
             reports.finish(Outcome.OUT, ball.x, ball.y, ball.z);
         } else if (ball.h < 0 || ball.entersHazard()) {
@@ -199,6 +223,8 @@ public final class Stroke {
     public double vz() { return view.vz; }
     public boolean isFlying() { return view.flying; }
     public double time() { return view.t; }
+    /** The course clock at the last frame shown: the clock when the ball was hit plus {@link #time()}. */
+    public double clock() { return startClock + view.t; }
     /** Integration steps taken so far (they need not end on frames). */
     public int steps() { return ball.steps; }
 
@@ -225,6 +251,7 @@ public final class Stroke {
         BallState b = ball;
         double remaining = b.flying || control == null ? dt : control.allowed();
         int pieces = 0;
+        b.movingContact = false;
         while (pieces < MAX_PIECES) {
             b.resume = false;
             b.subPiece = false;
@@ -236,7 +263,13 @@ public final class Stroke {
             // A sub-step the error control asked for is no contact: it does not count towards a wedge.
             if (!b.subPiece) pieces++;
         }
-        // Wedged: more contacts in one step than we follow. The ball stops where it is for the rest of it.
+        // Wedged: more contacts in one step than we follow. Crushed by a moving obstacle (against
+        // another, or the ground), the ball is out of play; otherwise it stops where it is for the
+        // rest of the step.
+        if (b.movingContact) {
+            reports.removedFromPlay();
+            return;
+        }
         b.vx = 0;
         b.vy = 0;
         b.vz = 0;

@@ -15,6 +15,8 @@ public record StrokeEvent(double t, Type type, double x, double y, double z, dou
         BOUNCE("bounce"),
         /** The ball hits an obstacle. */
         COLLISION("collision"),
+        /** The ball enters a teleport's entry and leaves by an exit (the event's point: the exit). */
+        TELEPORT("teleport"),
         WATER("water"),
         OUT("out"),
         HOLED("holed"),

@@ -75,6 +75,18 @@ final class StrokeReports {
         if (detail) listener.onEvent(e);
     }
 
+    /**
+     * A ball crushed or caught by a moving obstacle is out of play: it is taken off the course and
+     * the stroke ends {@code out} where it began (docs/course-format.md, "Moving obstacles").
+     */
+    void removedFromPlay() {
+        BallState b = ball;
+        b.x = b.startX;
+        b.y = b.startY;
+        b.z = b.startZ;
+        finish(Outcome.OUT, b.x, b.y, b.z);
+    }
+
     /** Ends the stroke with this outcome at (ex, ey, ez), and reports it (a timeout is no event). */
     void finish(Outcome result, double ex, double ey, double ez) {
         ball.end(result, ex, ey, ez);

@@ -16,7 +16,7 @@ final class TakeOff {
     private final RollingStep rolling;
     private final double gravity;
     private final double[] sample = new double[3];
-    private double x, y, vx, vy, h, hx, hy, muK;
+    private double x, y, vx, vy, h, hx, hy, muK, fx, fy;
     private double lastX = Double.NaN, lastY = Double.NaN, lastH;
 
     TakeOff(Terrain terrain, RollingStep rolling, double gravity) {
@@ -25,8 +25,10 @@ final class TakeOff {
         this.gravity = gravity;
     }
 
-    /** The step's start: position, velocity, height, slope and kinetic friction there. */
-    void from(double x, double y, double vx, double vy, double h, double hx, double hy, double muK) {
+    /** The step's start: position, velocity, height, slope, kinetic friction and force there. */
+    void from(double x, double y, double vx, double vy, double h, double hx, double hy, double muK, double fx, double fy) {
+        this.fx = fx;
+        this.fy = fy;
         this.x = x;
         this.y = y;
         this.vx = vx;
@@ -152,7 +154,7 @@ final class TakeOff {
     private boolean curvesAway(double tau, double a1x, double a1y) {
         double sx = x, sy = y, svx = vx, svy = vy;
         if (tau > 0) {
-            rolling.from(x, y, vx, vy, hx, hy, muK);
+            rolling.from(x, y, vx, vy, hx, hy, muK, fx, fy);
             rolling.advance(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
             sx = rolling.nx;
             sy = rolling.ny;
@@ -174,7 +176,7 @@ final class TakeOff {
         double sx = x, sy = y, svx = vx, svy = vy, shx = hx, shy = hy;
         double sh = h;
         if (tau > 0) {
-            rolling.from(x, y, vx, vy, hx, hy, muK);
+            rolling.from(x, y, vx, vy, hx, hy, muK, fx, fy);
             rolling.advance(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
             terrain.sample(rolling.nx, rolling.ny, sample);
             sx = rolling.nx;

@@ -23,13 +23,26 @@ public final class World {
     private final FrictionField friction;
     private final CollisionScene obstacles;
     private final PlayArea playArea;
+    /** Push zones and magnets; null when the course has none. */
+    private final ForceField forces;
+    /** One-way gates and moving obstacles; null when the course has none. */
+    private final minigolf.collision.Gates gates;
+    private final minigolf.collision.MovingObstacles moving;
+    /** The teleports; null when the course has none. */
+    private final TeleportField teleports;
 
     public World(Course course, Terrain terrain) {
         this.course = course;
         this.terrain = terrain;
         this.friction = new FrictionField(course.physics(), course.zones(), course.terrain());
         this.playArea = new PlayArea(course);
-        this.obstacles = course.obstacles().isEmpty() ? null
+        ForceField field = new ForceField(course.pushZones(), course.magnets());
+        this.forces = field.isEmpty() ? null : field;
+        double radius = course.physics().ballRadius();
+        this.gates = minigolf.collision.Gates.build(course.obstacles(), terrain::height, radius);
+        this.moving = minigolf.collision.MovingObstacles.build(course.obstacles(), terrain::height, course.bounds(), radius);
+        this.teleports = course.teleports().isEmpty() ? null : new TeleportField(course.teleports());
+        this.obstacles = course.obstacles().stream().noneMatch(minigolf.collision.ObstacleGeometry::isStillSolid) ? null
                 : CollisionScene.build(course.obstacles(), terrain::height, course.bounds(), course.physics().ballRadius());
     }
 
@@ -69,9 +82,29 @@ public final class World {
         return friction;
     }
 
-    /** The obstacles as collision geometry, or null when the course has none. */
+    /** The still obstacles (not gates or moving ones) as collision geometry, or null when the course has none. */
     public CollisionScene obstacles() {
         return obstacles;
+    }
+
+    /** The one-way gates, or null when the course has none. */
+    public minigolf.collision.Gates gates() {
+        return gates;
+    }
+
+    /** The teleports, or null when the course has none. */
+    public TeleportField teleports() {
+        return teleports;
+    }
+
+    /** The moving obstacles, or null when none moves. */
+    public minigolf.collision.MovingObstacles moving() {
+        return moving;
+    }
+
+    /** The push zones and magnets, or null when the course has none. */
+    public ForceField forces() {
+        return forces;
     }
 
     /** The bounds less the deleted terrain cells: where the ball is in play. */

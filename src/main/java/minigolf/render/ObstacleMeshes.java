@@ -160,7 +160,9 @@ public final class ObstacleMeshes {
         List<Piece> solidPieces = new java.util.ArrayList<>(), crownPieces = new java.util.ArrayList<>();
         for (Obstacle o : obstacles) {
             int solidStart = solid.vertexCount(), crownStart = crowns.vertexCount();
-            if (o instanceof Obstacle.Tree tree && style.posts() && tree.height() < POST_HEIGHT) {
+            if (!ObstacleGeometry.isStillSolid(o) || o instanceof Obstacle.Bumper) {
+                // Gates, bumpers and moving obstacles are drawn by the course elements' own meshes.
+            } else if (o instanceof Obstacle.Tree tree && style.posts() && tree.height() < POST_HEIGHT) {
                 double[] c = ObstacleGeometry.treeCylinder(tree, ground);
                 float[] col = style.wallColor();
                 solid.material = style.wallMaterial();

@@ -28,6 +28,7 @@ public final class SceneRenderer implements AutoCloseable {
     private final TerrainPass terrain;
     private final ObjectsPass objects;
     private final ObstaclesPass obstacles;
+    private final ElementsPass elements;
     private final SurroundingsPass surroundings;
     private final WaterPass water;
     private final List<RenderPass> passes;
@@ -99,6 +100,7 @@ public final class SceneRenderer implements AutoCloseable {
         SkyPass s = null;
         TerrainPass t = null;
         ObstaclesPass ob = null;
+        ElementsPass el = null;
         ObjectsPass o = null;
         SurroundingsPass u = null;
         try {
@@ -111,21 +113,23 @@ public final class SceneRenderer implements AutoCloseable {
             ObstacleMeshes.Style style = ObstacleMeshes.Style.of(theme);
             ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit(), quality.vertexLit() ? style.squareWalls() : style,
                     TerrainMesh.skirtBase(t.minHeight(), course.bounds()));
+            el = new ElementsPass(course, surface::height, quality.vertexLit());
             o = new ObjectsPass(course, surface, quality.vertexLit());
             u = new SurroundingsPass(course, TerrainMesh.skirtBase(t.minHeight(), course.bounds()), theme,
                     SurroundingsPass.shareFor(quality));
             water = new WaterPass(course, surface);
         } catch (RuntimeException e) {
-            for (RenderPass p : new RenderPass[]{u, o, ob, t, s}) if (p != null) p.close();
+            for (RenderPass p : new RenderPass[]{u, o, el, ob, t, s}) if (p != null) p.close();
             throw e;
         }
         sky = s;
         terrain = t;
         obstacles = ob;
+        elements = el;
         objects = o;
         surroundings = u;
         sky.setGround(u.level(), theme.materials().surroundGround().toArray(), SurroundingsPass.FADE_START, SurroundingsPass.FADE_END);
-        passes = List.of(terrain, obstacles, objects, surroundings, sky, water);
+        passes = List.of(terrain, obstacles, elements, objects, surroundings, sky, water);
         ShaderProgram depth = null;
         try {
             depth = ShaderProgram.load("shadow");
@@ -206,6 +210,22 @@ public final class SceneRenderer implements AutoCloseable {
         minimapDirty = true;
         terrain.setShadowedCells(null);
         sunlitCountdown = SUNLIT_SETTLE_FRAMES;
+    }
+
+    public ElementsPass elementsPass() {
+        return elements;
+    }
+
+    /** Rebuilds the drawn course elements (bumpers, gates, push zones, magnets, teleports, moving obstacles). */
+    public void setElements(Course changed) {
+        elements.setCourse(changed);
+        shadowMapDirty = true;
+        minimapDirty = true;
+    }
+
+    /** The course clock (s) the moving obstacles are drawn at: the game's and the replays' clock. */
+    public void setClock(double clock) {
+        elements.setClock(clock);
     }
 
     /**
@@ -344,6 +364,7 @@ public final class SceneRenderer implements AutoCloseable {
         terrain.render(minimapFrame);
         water.renderSimple(minimapFrame);
         obstacles.renderMinimap(minimapFrame);
+        elements.renderMinimap(minimapFrame);
         glDisable(GL_SCISSOR_TEST);
         glEnable(GL_MULTISAMPLE);
     }
@@ -432,6 +453,8 @@ public final class SceneRenderer implements AutoCloseable {
         timer.mark("terrain");
         obstacles.renderInRect(frame, new int[]{0, 0, width, height});
         timer.mark("obstacles");
+        elements.render(frame);
+        timer.mark("elements");
         objects.render(frame);
         timer.mark("objects");
         if (ballShadowRedraw && shadows && frame.ballShadowCount > 0) drawBallShadows(width, height);
@@ -476,6 +499,7 @@ public final class SceneRenderer implements AutoCloseable {
         depthShader.set("uLightViewProjection", shadowMap.lightViewProjection());
         terrain.drawDepth(depthShader);
         obstacles.drawDepth(depthShader);
+        elements.drawDepth(depthShader);
         objects.drawShadowCasters(depthShader);
         shadowMap.end();
     }

@@ -41,7 +41,8 @@ class BotCommandsTest {
         assertEquals(2, json.get("strokes").asInt());
         JsonNode shots = json.get("shots");
         assertEquals(2, shots.size());
-        assertEquals(List.of("velocity", "intended", "outcome", "end", "simulations"), fields(shots.get(0)));
+        assertEquals(List.of("velocity", "intended", "wait", "outcome", "end", "simulations"), fields(shots.get(0)));
+        assertEquals(0.0, shots.get(0).get("wait").asDouble(), "nothing moves on this course: no wait");
         // Without noise the stroke is played as chosen.
         assertEquals(shots.get(0).get("intended"), shots.get(0).get("velocity"));
         assertEquals("stopped", shots.get(0).get("outcome").asText());
@@ -123,6 +124,26 @@ class BotCommandsTest {
             assertEquals('P', bytes[1]);
         }
         assertTrue(r.err().contains("8/8 runs"), r.err());
+        // Each run's strokes, one JSON line each, with the wait before every shot (0: nothing moves here).
+        List<String> shots = Files.readAllLines(out.resolve("shots.jsonl"));
+        assertEquals(8, shots.size());
+        com.fasterxml.jackson.databind.JsonNode first = new com.fasterxml.jackson.databind.ObjectMapper().readTree(shots.get(0));
+        assertEquals(0.0, first.get("shots").get(0).get("wait").asDouble());
+        assertTrue(first.get("shots").get(0).has("velocity") && first.has("seed") && first.has("course"));
+    }
+
+    @Test
+    void solveReportsTheWaitWhereObstaclesMove() throws IOException {
+        Path course = java.nio.file.Path.of(System.getProperty("minigolf.projectDir", "."), "src", "test", "resources",
+                "elements", "sliding-gate.json");
+        CliRun r = run("solve", course.toString(), "--bot", "planner", "--max-strokes", "3");
+        assertEquals(0, r.code(), r.err());
+        com.fasterxml.jackson.databind.JsonNode json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(r.out());
+        assertTrue(json.get("holed").asBoolean(), r.out());
+        for (com.fasterxml.jackson.databind.JsonNode shot : json.get("shots")) {
+            double wait = shot.get("wait").asDouble();
+            assertTrue(wait >= 0 && wait < 4, "a wait within the gate's 4 s period: " + wait);
+        }
     }
 
     @Test

@@ -29,7 +29,7 @@ class NoiseCommandsTest {
         JsonNode first = json.get("shots").get(0);
         List<String> keys = new java.util.ArrayList<>();
         first.fieldNames().forEachRemaining(keys::add);
-        assertEquals(List.of("velocity", "intended", "start", "outcome", "end", "simulations"), keys);
+        assertEquals(List.of("velocity", "intended", "wait", "start", "outcome", "end", "simulations"), keys);
         double startX = first.get("start").get(0).asDouble();
         assertTrue(startX != json.get("shots").get(0).get("end").get(0).asDouble() && Math.abs(startX + 8) < 0.06,
                 "the start strays by the position noise: " + startX);

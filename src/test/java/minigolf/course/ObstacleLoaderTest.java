@@ -70,9 +70,9 @@ class ObstacleLoaderTest {
                 error(withObstacles("{ \"type\": \"wall\", \"from\": [1, 1], \"to\": [1, 1], \"thickness\": 0, \"height\": 0.1 }")));
         assertEquals("courses/x.json: obstacles[0].radius: must be > 0, got -0.2",
                 error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": -0.2, \"height\": 2 }")));
-        assertEquals("courses/x.json: obstacles[0].restitution: must be between 0 and 1, got 1.5",
-                error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": 0.2, \"height\": 2, \"restitution\": 1.5 }")));
-        assertEquals("courses/x.json: obstacles[0].type: expected one of wall, tree, box, model, got \"rock\"",
+        assertEquals("courses/x.json: obstacles[0].restitution: must be between 0 and 2, got 2.5",
+                error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": 0.2, \"height\": 2, \"restitution\": 2.5 }")));
+        assertEquals("courses/x.json: obstacles[0].type: expected one of wall, tree, box, model, bumper, gate, got \"rock\"",
                 error(withObstacles("{ \"type\": \"rock\" }")));
         assertEquals("courses/x.json: obstacles[0]: min must be < max in all three axes, got min (0, 0, 1), max (1, 1, 1)",
                 error(withObstacles("{ \"type\": \"box\", \"min\": [0, 0, 1], \"max\": [1, 1, 1] }")));
@@ -80,7 +80,7 @@ class ObstacleLoaderTest {
                 error(withObstacles("{ \"type\": \"box\", \"min\": [0, 0, 1], \"max\": [1, 1] }")));
         assertEquals("courses/x.json: obstacles[0].thickness: expected a number, got a string",
                 error(withObstacles("{ \"type\": \"wall\", \"from\": [1, 1], \"to\": [2, 1], \"thickness\": \"NaN\", \"height\": 0.1 }")));
-        assertEquals("courses/x.json: obstacles[0].colour: unknown field (known: type, position, radius, height, restitution)",
+        assertEquals("courses/x.json: obstacles[0].colour: unknown field (known: type, position, radius, height, restitution, motion)",
                 error(withObstacles("{ \"type\": \"tree\", \"position\": [2, 2], \"radius\": 0.2, \"height\": 2, \"colour\": 1 }")));
         assertEquals("courses/x.json: physics.ballRadius: must be > 0, got 0",
                 error(edit("\"model\": \"classic\" }", "\"model\": \"classic\", \"ballRadius\": 0 }")));

@@ -165,8 +165,8 @@ class ObjectsAndZonesTest {
                 assertThrows(IllegalArgumentException.class, () -> e.setWallSize(1, 0.1, 0.2)).getMessage());
         assertEquals("tree radius and height must be > 0",
                 assertThrows(IllegalArgumentException.class, () -> e.setTreeSize(1, 0, 1)).getMessage());
-        assertEquals("restitution must be between 0 and 1",
-                assertThrows(IllegalArgumentException.class, () -> e.setRestitution(0, 1.5)).getMessage());
+        assertEquals("restitution must be between 0 and 2",
+                assertThrows(IllegalArgumentException.class, () -> e.setRestitution(0, 2.5)).getMessage());
         assertEquals("no obstacle 5 (the course has 2)",
                 assertThrows(IllegalArgumentException.class, () -> e.setRestitution(5, 0.5)).getMessage());
         assertEquals(size, e.historySize());

@@ -39,7 +39,7 @@ class RoundSyncTest {
             int seat = played.game().currentPlayer();
             ShotRecord r = played.game().play(shots[k][0], shots[k][1]);
             k = (k + 1) % shots.length;
-            RoomEvent e = new RoomEvent(++seq, hole, seat, r, played.game().player(seat), 0);
+            RoomEvent e = new RoomEvent(++seq, hole, seat, r, played.game().player(seat), 0, played.game().clock());
             RoomEvent wire = RoomEvent.parse(Json.parse(Json.write(e.toJson(-1))), 2);
             assertEquals(e, wire, "an event reads back exactly (every double too)");
             minigolf.online.RoundSync.advance(played);
@@ -64,5 +64,26 @@ class RoundSyncTest {
         assertEquals(PlayerStatus.PICKED_UP, pick.after().status());
         RoomEvent wrongHole = new RoomEvent(2, 0, 0, null, pick.after(), 0);
         assertThrows(IllegalStateException.class, () -> RoundSync.apply(after, wrongHole));
+    }
+
+    @Test
+    void theCourseClockOfAStrokeTravelsWithTheEventAndSettlesTheClientsClock() throws Exception {
+        RoundGame rg = new RoundGame(twoHoles(), SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 5);
+        rg.game().advanceClock(3.5);
+        ShotRecord r = rg.game().play(0.5, 0);
+        assertEquals(3.5, r.clock());
+        double after = rg.game().clock();
+        assertTrue(after > 3.5, "the stroke's own time runs the clock on: " + after);
+        RoomEvent e = new RoomEvent(1, 0, 0, r, rg.game().player(0), 3.5, after);
+        String json = Json.write(e.toJson(0));
+        assertTrue(json.contains("\"clock\":3.5,\"clockAfter\":" + after), json);
+        RoomEvent wire = RoomEvent.parse(Json.parse(json), 1);
+        assertEquals(e, wire);
+        RoundGame fresh = new RoundGame(twoHoles(), SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 5);
+        assertEquals(after, RoundSync.apply(fresh, wire).game().clock());
+        // A stroke at clock 0 leaves the field out, as before.
+        RoundGame zero = new RoundGame(twoHoles(), SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 5);
+        ShotRecord first = zero.game().play(0.5, 0);
+        assertTrue(!Json.write(new RoomEvent(1, 0, 0, first, zero.game().player(0), 0).toJson(0)).contains("clock"));
     }
 }

@@ -67,14 +67,14 @@ class ConvergenceTest {
 
     /** One second on the sine course in fixed steps of h (steps longer than longFrom are long steps). */
     private static double[] fixedSteps(double longFrom, double h) {
-        RollingStep step = new RollingStep(SINE.terrain(), SINE.friction(), TestWorlds.G, false, Integrator.RK4, longFrom);
+        RollingStep step = new RollingStep(SINE.terrain(), SINE.friction(), null, TestWorlds.G, false, Integrator.RK4, longFrom);
         step.reset();
         double x = -2, y = -1, vx = 2.5, vy = 1.5;
         double[] ground = new double[3];
         for (int i = 0; i < Math.round(1 / h); i++) {
             SINE.terrain().sample(x, y, ground);
-            step.acceleration(ground[1], ground[2], 0.05, vx, vy);
-            step.from(x, y, vx, vy, ground[1], ground[2], 0.05);
+            step.acceleration(ground[1], ground[2], 0, 0, 0.05, vx, vy);
+            step.from(x, y, vx, vy, ground[1], ground[2], 0.05, 0, 0);
             step.advance(h, RollingStep.Kind.INTEGRATOR, step.ax, step.ay);
             x = step.nx;
             y = step.ny;

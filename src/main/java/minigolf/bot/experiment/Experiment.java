@@ -30,6 +30,10 @@ public final class Experiment {
     /** Receives each finished run, from the worker threads. */
     public interface Sink {
         void finished(int run, RunRecord record) throws Exception;
+
+        /** The run's strokes as played (called before {@link #finished}); by default ignored. */
+        default void played(int run, RunPlan.Run description, Playthrough.Result result) throws Exception {
+        }
     }
 
     private final Map<String, World> worlds = new HashMap<>();
@@ -85,7 +89,10 @@ public final class Experiment {
                 int i;
                 while (failure.get() == null && (i = next.getAndIncrement()) < runs.length) {
                     try {
-                        sink.finished(runs[i], runOne(plan.run(runs[i])));
+                        RunPlan.Run description = plan.run(runs[i]);
+                        Playthrough.Result result = play(description);
+                        sink.played(runs[i], description, result);
+                        sink.finished(runs[i], record(description, result));
                     } catch (Throwable e) {
                         failure.compareAndSet(null, e);
                     }
@@ -110,11 +117,19 @@ public final class Experiment {
 
     /** One run, from its description alone. */
     public RunRecord runOne(RunPlan.Run run) {
+        return record(run, play(run));
+    }
+
+    /** Plays one run's game. */
+    private Playthrough.Result play(RunPlan.Run run) {
         Bot bot = Bots.create(run.bot());
         if (bot == null) throw new IllegalArgumentException("unknown bot " + run.bot());
-        Playthrough.Result result = Playthrough.play(bot, worlds.get(run.course()), SimulationSettings.DEFAULT, maxStrokes,
+        return Playthrough.play(bot, worlds.get(run.course()), SimulationSettings.DEFAULT, maxStrokes,
                 budget, run.seed(), Double.isNaN(timeLimit) ? CancellationToken.none() : CancellationToken.withTimeLimit(timeLimit),
                 BotProgress.NONE, new PlayConditions(run.noise(), hideFriction));
+    }
+
+    private static RunRecord record(RunPlan.Run run, Playthrough.Result result) {
         boolean holeInOne = result.holed() && result.shots().size() == 1
                 && result.shots().get(0).result().outcome() == Outcome.HOLED;
         return new RunRecord(run.course(), run.bot(), run.seed(), run.noise().position(), run.noise().velocity(),

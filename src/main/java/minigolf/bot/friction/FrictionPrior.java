@@ -60,7 +60,7 @@ public final class FrictionPrior {
             terrain = new TerrainSpec.HeightGrid(g.origin(), g.spacing(), g.heights(), null, null, g.deleted());
         }
         Course hidden = new Course(c.format(), c.name(), terrain, c.bounds(), physics, c.start(), c.hole(), zones,
-                c.obstacles());
+                c.obstacles(), c.pushZones(), c.magnets(), c.teleports());
         return new World(hidden, truth.terrain());
     }
 }

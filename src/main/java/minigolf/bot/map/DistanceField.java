@@ -36,6 +36,11 @@ public final class DistanceField {
         this.targetY = targetY;
         int n = grid.cols() * grid.rows();
         double[] weight = frictionAware ? frictionWeights(grid) : null;
+        // Push zones make a step cheaper along the push and dearer against it; a teleport's entry is as
+        // near the target as its (first) exit is.
+        double[][] push = pushes(grid);
+        int[][] portals = portals(grid);
+        double floor = push == null ? 0 : lowestFriction(grid) * grid.world().physics().gravity();
         distance = new double[n];
         Arrays.fill(distance, Double.POSITIVE_INFINITY);
         int start = grid.indexOf(targetX, targetY);
@@ -46,6 +51,18 @@ public final class DistanceField {
         while (!heap.isEmpty()) {
             int i = heap.pop();
             if ((++settled & 4095) == 0) token.throwIfCancelled();
+            if (portals != null) {
+                for (int[] portal : portals) {
+                    if (portal[0] != i) continue;
+                    for (int k = 1; k < portal.length; k++) {
+                        int j = portal[k];
+                        if (distance[i] < distance[j]) {
+                            distance[j] = distance[i];
+                            heap.push(j, distance[i]);
+                        }
+                    }
+                }
+            }
             int c = i % grid.cols(), r = i / grid.cols();
             for (int dr = -1; dr <= 1; dr++) {
                 for (int dc = -1; dc <= 1; dc++) {
@@ -59,6 +76,12 @@ public final class DistanceField {
                     double step = (diagonal ? SQRT2 : 1) * grid.cell() * (1 + NEAR_WATER_COST * nearWater);
                     // The step between two cells on the friction of both halves.
                     if (weight != null) step *= 0.5 * (weight[i] + weight[j]);
+                    if (push != null) {
+                        // The ball goes from j to i: a push along that way pays part of the friction.
+                        double ux = -dc / (diagonal ? SQRT2 : 1), uy = -dr / (diagonal ? SQRT2 : 1);
+                        double along = 0.5 * ((push[0][i] + push[0][j]) * ux + (push[1][i] + push[1][j]) * uy);
+                        step *= Math.max(0.1, 1 - along / floor);
+                    }
                     double d = distance[i] + step;
                     if (d < distance[j]) {
                         distance[j] = d;
@@ -67,6 +90,52 @@ public final class DistanceField {
                 }
             }
         }
+    }
+
+    /** The push (m/s²) at each cell's centre, {x[], y[]}; null on a course without push zones. */
+    static double[][] pushes(CourseGrid grid) {
+        var forces = grid.world().forces();
+        if (forces == null || !forces.hasPushZones()) return null;
+        int n = grid.cols() * grid.rows();
+        double[][] push = new double[2][n];
+        double[] out = new double[2];
+        for (int i = 0; i < n; i++) {
+            forces.push(grid.centreX(i % grid.cols()), grid.centreY(i / grid.cols()), out);
+            push[0][i] = out[0];
+            push[1][i] = out[1];
+        }
+        return push;
+    }
+
+    /** The lowest kinetic friction of the free cells (at least 1e-3). */
+    private static double lowestFriction(CourseGrid grid) {
+        double lowest = Double.POSITIVE_INFINITY;
+        var friction = grid.world().friction();
+        for (int i = 0; i < grid.cols() * grid.rows(); i++) {
+            if (!grid.blocked(i)) lowest = Math.min(lowest, friction.kinetic(grid.centreX(i % grid.cols()), grid.centreY(i / grid.cols())));
+        }
+        return Math.max(Double.isFinite(lowest) ? lowest : 0, 1e-3);
+    }
+
+    /**
+     * Each teleport as {exit cell, entry cells...}: the cell of its first exit (where a stroke's first
+     * entry sends the ball), then the free cells whose centres its entry holds. Null without teleports.
+     */
+    static int[][] portals(CourseGrid grid) {
+        var teleports = grid.world().teleports();
+        if (teleports == null) return null;
+        int[][] portals = new int[teleports.size()][];
+        for (int k = 0; k < teleports.size(); k++) {
+            var t = teleports.get(k);
+            var exit = t.exits().get(0).position();
+            List<Integer> cells = new ArrayList<>();
+            cells.add(grid.indexOf(exit.x(), exit.y()));
+            for (int i = 0; i < grid.cols() * grid.rows(); i++) {
+                if (!grid.blocked(i) && t.entry().contains(grid.centreX(i % grid.cols()), grid.centreY(i / grid.cols()))) cells.add(i);
+            }
+            portals[k] = cells.stream().mapToInt(Integer::intValue).toArray();
+        }
+        return portals;
     }
 
     /**

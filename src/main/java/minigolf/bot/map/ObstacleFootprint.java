@@ -73,6 +73,8 @@ public final class ObstacleFootprint {
                     Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY});
         } else if (o instanceof Obstacle.Tree t) {
             shapes.add(new double[] {CIRCLE, t.position().x(), t.position().y(), t.radius()});
+        } else if (o instanceof Obstacle.Bumper b) {
+            shapes.add(new double[] {CIRCLE, b.position().x(), b.position().y(), b.radius()});
         } else if (o instanceof Obstacle.Box b) {
             double a = Math.toRadians(b.rotationDeg());
             shapes.add(new double[] {RECT, (b.min().x() + b.max().x()) / 2, (b.min().y() + b.max().y()) / 2,

@@ -36,6 +36,8 @@ final class OnePuttMap {
     static final double RAY_SPEED = 1.6;
     /** The rays bounce with the inverse of each obstacle's restitution, at most this. */
     static final double MAX_INVERSE_RESTITUTION = 4;
+    /** The ray world's speed limit, per the course's: no bounce there is ever capped. */
+    private static final double UNCAPPED = 1e6;
 
     private final double minX, minY;
     private final int cols, rows;
@@ -67,7 +69,7 @@ final class OnePuttMap {
         double hx = w.hole().position().x(), hy = w.hole().position().y();
         double hh = w.terrain().height(hx, hy), g = w.physics().gravity();
         CountingSimulator fast = sim.variant(faster(w), false);
-        double v0 = fast.maxSpeed() * (1 - 1e-9);
+        double v0 = RAY_SPEED * sim.maxSpeed() * (1 - 1e-9);
         map.maxSpeed = sim.maxSpeed();
         for (int i = 0; i < RAYS; i++) {
             double a = 2 * Math.PI * i / RAYS;
@@ -85,8 +87,11 @@ final class OnePuttMap {
     static World faster(World w) {
         Course c = w.course();
         PhysicsSettings p = c.physics();
+        // The rays are shot at RAY_SPEED times the course's limit; the world's own limit is far above
+        // it, so that the bounce cap of bumpers (docs/course-format.md) never binds on the inverse
+        // restitutions above 1 that trace the rays backwards.
         PhysicsSettings quick = new PhysicsSettings(p.gravity(), p.kineticFriction(), p.staticFriction(),
-                RAY_SPEED * p.maxSpeed(), p.model(), p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(),
+                UNCAPPED * p.maxSpeed(), p.model(), p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(),
                 p.groundRestitution());
         Hole h = c.hole();
         List<Obstacle> inverse = new ArrayList<>();

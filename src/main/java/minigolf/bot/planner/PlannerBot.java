@@ -292,7 +292,8 @@ public final class PlannerBot extends SearchBot {
             Course c = world.course();
             Hole h = c.hole();
             Course probe = new Course(c.format(), c.name(), c.terrain(), c.bounds(), c.physics(), c.start(),
-                    new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones(), c.obstacles());
+                    new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones(), c.obstacles(), c.pushZones(),
+                    c.magnets(), c.teleports());
             probeWorld = new World(probe, world.terrain());
             probeSource = world;
         }

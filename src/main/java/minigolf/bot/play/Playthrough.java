@@ -94,17 +94,23 @@ public final class Playthrough {
         List<PlayedShot> played = new ArrayList<>();
         int strokes = 0;
         boolean holed = false;
+        // The course clock: it starts at 0 and runs on through each stroke's wait and its own time.
+        double clock = 0;
+        Bot player = TimedBot.forWorld(bot, world);
         while (played.size() < maxStrokes && !holed) {
             long before = counting.count();
-            Shot intended = bot.nextShot(new BotRequest(botSim, x, y, strokes, seeds.nextLong(), conditions.noise()));
+            botSim.setClock(clock);
+            Shot intended = player.nextShot(new BotRequest(botSim, x, y, strokes, seeds.nextLong(), conditions.noise(), clock));
             intended = counting.limit(intended);
             PlayedStroke stroke = conditions.noise().isNone() ? new PlayedStroke(x, y, intended) : noise.play(x, y, intended);
-            ShotResult result = CountingSimulator.play(game, stroke.x(), stroke.y(), stroke.shot(), null);
+            Shot shot = stroke.shot().withWait(intended.waitSeconds());
+            ShotResult result = CountingSimulator.play(game, clock, stroke.x(), stroke.y(), shot, null);
+            clock += intended.waitSeconds() + result.time();
             if (estimator != null && estimator.observe(counting,
                     new FrictionEstimator.Observation(x, y, intended, result.endX(), result.endY()), result.outcome())) {
                 botSim = counting.variant(estimator.world(), true);
             }
-            played.add(new PlayedShot(stroke.shot(), result, counting.count() - before, intended, stroke.x(), stroke.y(),
+            played.add(new PlayedShot(shot, result, counting.count() - before, intended, stroke.x(), stroke.y(),
                     estimator != null ? estimator.scale() : Double.NaN, estimator != null ? zoneScales(estimator) : List.of()));
             strokes++;
             if (result.outcome() == Outcome.HOLED) {

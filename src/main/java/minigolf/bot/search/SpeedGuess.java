@@ -33,7 +33,23 @@ public final class SpeedGuess {
                                double minSpeedSquared) {
         double mu = world.friction().kinetic(x, y);
         double rise = world.terrain().height(tx, ty) - world.terrain().height(x, y);
-        return Math.sqrt(Math.max(speedSquared(world.physics().gravity(), mu, length, rise), minSpeedSquared));
+        double g = world.physics().gravity();
+        // Push zones and magnets on the straight way give (or take) energy, as a drop (or rise) of the ground.
+        if (world.forces() != null) rise -= forceWork(world, x, y, tx, ty) / g;
+        return Math.sqrt(Math.max(speedSquared(g, mu, length, rise), minSpeedSquared));
+    }
+
+    /** The work per unit mass of the push zones and magnets along the straight way (16 pieces). */
+    static double forceWork(World world, double x, double y, double tx, double ty) {
+        double[] f = new double[2];
+        double work = 0;
+        int pieces = 16;
+        for (int k = 0; k < pieces; k++) {
+            double s = (k + 0.5) / pieces;
+            world.forces().force(x + s * (tx - x), y + s * (ty - y), f);
+            work += (f[0] * (tx - x) + f[1] * (ty - y)) / pieces;
+        }
+        return work;
     }
 
     /** How far a maximum-speed shot from (x, y) rolls towards a point at the height of (tx, ty). */

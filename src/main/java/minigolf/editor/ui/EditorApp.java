@@ -91,6 +91,8 @@ public final class EditorApp implements WindowApp {
     long fieldsVersion = -1;
     int selected = -1;
     int selectedZone = -1;
+    /** The selected push zone, magnet or teleport: an index into ElementPanels' combined list, or -1. */
+    int selectedElement = -1;
     float time;
     /** The loop's clock at this pass (autosave and validation pace themselves by it). */
     private double now;
@@ -204,7 +206,10 @@ public final class EditorApp implements WindowApp {
                 // The sun's shadow map and the minimap are redrawn once, when the stroke ends and the
                 // scene is rebuilt: redrawing them for every dab would cost more than the dab itself.
             }
-            if (changes.obstaclesChanged()) renderer.setObstacles(editor.course().obstacles());
+            if (changes.obstaclesChanged()) {
+                renderer.setObstacles(editor.course().obstacles());
+                renderer.setElements(editor.world().course());
+            }
         }
         // Validation (A* included) after the course settles, at most twice a second.
         if (problemsStale && !editor.isStroking() && now - lastValidation > 0.5) {
@@ -326,6 +331,7 @@ public final class EditorApp implements WindowApp {
         camera = null;
         selected = -1;
         selectedZone = -1;
+        selectedElement = -1;
         fieldsVersion = -1;
         problemsStale = true;
         rebuildScene = true;
@@ -335,6 +341,8 @@ public final class EditorApp implements WindowApp {
 
     private void drawFrame(int fw, int fh) {
         if (message != null && glfwGetTime() > messageUntil) message = null;
+        // The moving obstacles run on the window's clock: the designer sees them move as they will in play.
+        renderer.setClock(time);
         renderer.render(camera, fw, fh, time);
         int mini = minimapSize(fw, fh);
         renderer.renderMinimap(fw - MINIMAP_MARGIN - mini, MINIMAP_TOP, mini, fw, fh);

@@ -118,6 +118,7 @@ final class EditorInput {
             case GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT -> EditorKey.TOGGLE_TOOL;
             case GLFW_KEY_M -> EditorKey.WALL;
             case GLFW_KEY_B -> EditorKey.TREE;
+            case GLFW_KEY_N -> EditorKey.NEXT_KIND;
             case GLFW_KEY_ENTER, GLFW_KEY_KP_ENTER -> EditorKey.PLACE;
             case GLFW_KEY_P -> EditorKey.DELETE;
             case GLFW_KEY_Q -> EditorKey.ROTATE_LEFT;

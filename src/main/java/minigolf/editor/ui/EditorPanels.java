@@ -37,7 +37,9 @@ import static org.lwjgl.opengl.GL11.*;
 final class EditorPanels {
     private static final String[] ACTIONS = {"Raise", "Lower", "Smooth", "Flatten", "Paint grass", "Paint sand",
             "Paint friction", "Set height", "Delete cells", "Restore cells", "Place start", "Place hole"};
-    private static final String[] KINDS = {"Wall", "Tree", "Box", "Model"};
+    private static final ToolController.ObjectKind[] KINDS = ToolController.ObjectKind.values();
+    /** How many characters (label plus 4 for the button) of object kinds fit one row of the Tools panel. */
+    private static final int KIND_ROW_CHARS = 38;
 
     private final EditorApp app;
     // Dialog and panel fields.
@@ -50,6 +52,8 @@ final class EditorPanels {
     /** Where the Course panel's top was last drawn (interface units): the minimap stays above it. */
     private float courseTop = Float.MAX_VALUE;
     private int selectedFieldsFor = -1;
+    /** The push zones', magnets' and teleports' lists and the moving obstacles' fields. */
+    private final ElementPanels elements = new ElementPanels();
     private long selectedFieldsVersion = -1;
     private final GuiDouble zoneKinetic = new GuiDouble(), zoneStatic = new GuiDouble();
     private final GuiDouble holeRadius = new GuiDouble(), gravity = new GuiDouble(), kinetic = new GuiDouble(),
@@ -121,14 +125,16 @@ final class EditorPanels {
             Gui.text(String.format(Locale.ROOT, "Node (%d, %d): h = %.3f m", ni, nj, c.height(ni, nj)));
             Gui.text(String.format(Locale.ROOT, "mu_k %.3f  mu_s %.3f", c.kineticFriction(ni, nj), c.staticFriction(ni, nj)));
         } else {
+            int row = 0; // the row's width so far, in characters of a label plus a radio button's 4
             for (int i = 0; i < KINDS.length; i++) {
-                if (Gui.radioButton(KINDS[i], app.tool.kind() == ToolController.ObjectKind.values()[i])) {
-                    app.tool.setKind(ToolController.ObjectKind.values()[i]);
-                }
-                Gui.sameLine();
+                String label = KINDS[i].label();
+                label = Character.toUpperCase(label.charAt(0)) + label.substring(1);
+                if (row > 0 && row + label.length() + 4 <= KIND_ROW_CHARS) Gui.sameLine();
+                else row = 0;
+                row += label.length() + 4;
+                if (Gui.radioButton(label, app.tool.kind() == KINDS[i])) app.tool.setKind(KINDS[i]);
             }
-            Gui.newLine();
-            Gui.textDisabled("M wall, B tree, ENTER places,");
+            Gui.textDisabled("M wall, B tree, N next kind, ENTER places,");
             Gui.textDisabled("P deletes, Q/E turn");
             newObjectSettings();
         }
@@ -152,6 +158,7 @@ final class EditorPanels {
             if (app.selected >= 0) selectedObjectFields(list.get(app.selected));
         }
         zoneList();
+        elements.lists(app);
         Gui.end();
     }
 
@@ -181,9 +188,11 @@ final class EditorPanels {
                 float[] sc = {(float) app.tool.modelScale};
                 if (Gui.sliderFloat("Scale", sc, 0.1f, 3f, "%.2f")) app.tool.modelScale = Math.max(0.01, sc[0]);
             }
+            default -> ElementPanels.newElementSettings(app.tool);
         }
+        if (!app.tool.kind().isObstacle()) return;
         float[] re = {(float) app.tool.restitution};
-        if (Gui.sliderFloat("Restitution", re, 0f, 1f, "%.2f")) app.tool.restitution = re[0];
+        if (Gui.sliderFloat("Restitution", re, 0f, 2f, "%.2f")) app.tool.restitution = re[0];
     }
 
     /** The selected object's sizes and restitution; a typed value is one undoable edit when the field is left. */
@@ -198,6 +207,11 @@ final class EditorPanels {
             objRestitution.set(o.restitution());
         }
         try {
+            if (elements.selectedObject(app, o, objA, objB)) {
+                Gui.inputDouble("Restitution", objRestitution);
+                if (Gui.isItemDeactivatedAfterEdit()) app.editor.setRestitution(app.selected, objRestitution.get());
+                return;
+            }
             if (o instanceof Obstacle.Wall) {
                 Gui.inputDouble("Thickness m", objA);
                 if (Gui.isItemDeactivatedAfterEdit()) app.editor.setWallSize(app.selected, objA.get(), objB.get());
@@ -229,6 +243,9 @@ final class EditorPanels {
 
     /** The editable sizes of an object, in the order of its fields. */
     private static double[] sizes(Obstacle o) {
+        if (o instanceof Obstacle.Moving m) return new double[]{m.motion().period(), m.motion().phase(), 0};
+        if (o instanceof Obstacle.Bumper b) return new double[]{b.radius(), b.height(), 0};
+        if (o instanceof Obstacle.Gate g) return new double[]{g.height(), 0, 0};
         if (o instanceof Obstacle.Wall w) return new double[]{w.thickness(), w.height(), 0};
         if (o instanceof Obstacle.Tree t) return new double[]{t.radius(), t.height(), 0};
         if (o instanceof Obstacle.Box b) {

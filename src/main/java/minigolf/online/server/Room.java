@@ -279,13 +279,15 @@ final class Room {
     }
 
     /**
-     * Plays a stroke with the engine and records it. The wait changes nothing on a course without
-     * moving parts; it is kept with the stroke.
+     * Plays a stroke with the engine and records it. The wait runs the course clock on before the
+     * shot (where obstacles move it matters: docs/course-format.md, "Moving obstacles"); the room's
+     * clock is the strokes' times and waits, nothing else, so every client replays it exactly.
      */
     private void playStroke(int seat, double[] v, double waitSeconds) {
         Game g = round.game();
         int hole = round.holeIndex();
         int finishedBefore = round.holesFinished();
+        if (waitSeconds > 0) g.advanceClock(waitSeconds);
         Stroke stroke = g.startShot(v[0], v[1], v[2], null);
         try {
             stroke.run();
@@ -296,7 +298,7 @@ final class Room {
         ShotRecord record = g.completeShot();
         seq++;
         quietAtMs = svc.now() + (long) (1000 * Math.min(MAX_ROLL_WAIT, rollSeconds));
-        recordEvent(new RoomEvent(seq, hole, seat, record, g.player(seat), waitSeconds), finishedBefore);
+        recordEvent(new RoomEvent(seq, hole, seat, record, g.player(seat), waitSeconds, g.clock()), finishedBefore);
     }
 
     private void pickUp(int seat) {

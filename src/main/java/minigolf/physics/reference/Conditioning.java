@@ -25,12 +25,18 @@ public final class Conditioning {
      */
     public static double spread(ReferenceSimulator reference, double x0, double y0, double vx, double vy,
                                 ReferenceResult base) {
+        return spread(reference, 0, x0, y0, vx, vy, base);
+    }
+
+    /** As above, the shots played at course clock {@code clock} (moving obstacles). */
+    public static double spread(ReferenceSimulator reference, double clock, double x0, double y0, double vx, double vy,
+                                ReferenceResult base) {
         double worst = 0;
         for (int k = 0; k < 4; k++) {
             double d = (k % 2 == 0 ? 1 : -1) * PERTURBATION;
             ReferenceResult r = k < 2
-                    ? reference.simulate(x0, y0, vx + d, vy)
-                    : reference.simulate(x0, y0, vx, vy + d);
+                    ? reference.simulateAt(clock, x0, y0, vx + d, vy, 0)
+                    : reference.simulateAt(clock, x0, y0, vx, vy + d, 0);
             if (!r.covered()) return Double.POSITIVE_INFINITY;
             worst = Math.max(worst, Math.hypot(r.endX() - base.endX(), r.endY() - base.endY()));
         }

@@ -29,7 +29,11 @@ final class EventLocator {
         /** vᵀHv < −g: the ground curves away faster than gravity can hold the ball. */
         TAKE_OFF,
         /** A ball leaning on an obstacle is no longer pulled towards it, or is past its end. */
-        LEAVE_OBSTACLE
+        LEAVE_OBSTACLE,
+        /** The push under the ball is no longer the one held: a push zone's edge; the integration restarts there. */
+        PUSH,
+        /** The ball's centre enters a teleport's entry. */
+        TELEPORT
     }
 
     static final double TIME_TOLERANCE = 1e-12;
@@ -53,8 +57,14 @@ final class EventLocator {
     Type type;
     double lo, hi;
 
+    private final ReferenceForces forces;
+    private final ReferenceTeleports teleports;
+    private final double[] start = new double[4];
+
     EventLocator(World world, DormandPrince stepper, RollingEquations equations, ReferenceFriction friction,
-                 ReferenceLean lean) {
+                 ReferenceLean lean, ReferenceForces forces, ReferenceTeleports teleports) {
+        this.forces = forces;
+        this.teleports = teleports;
         this.lean = lean;
         this.stepper = stepper;
         this.equations = equations;
@@ -78,9 +88,25 @@ final class EventLocator {
         for (int s = 1; s <= SAMPLES; s++) {
             double sb = s == SAMPLES ? to : from + (to - from) * s / SAMPLES;
             if (!(sb > sa)) continue;
+            stepper.interpolate(sa, start);
             stepper.interpolate(sb, state);
             type = null;
             for (Type t : TYPES) {
+                if (t == Type.TELEPORT) {
+                    if (teleports.none()) continue;
+                    // An entry may be crossed between two samples: the chord between them says so,
+                    // then a moment inside is looked for and the entry bisected from before it.
+                    double inside = teleports.insideBetween(stepper, sa, sb, start, state);
+                    if (Double.isNaN(inside)) continue;
+                    double[] bracket = bisect(t, sa, inside);
+                    if (type == null || bracket[1] < hi) {
+                        type = t;
+                        lo = bracket[0];
+                        hi = bracket[1];
+                    }
+                    stepper.interpolate(sb, state);
+                    continue;
+                }
                 if (!armed[t.ordinal()] || !holds(t, state)) continue;
                 double[] bracket = bisect(t, sa, sb);
                 if (type == null || bracket[1] < hi) {
@@ -137,6 +163,10 @@ final class EventLocator {
                 return equations.curvatureTimesSpeedSquared(x, yy, vx, vy) < -g && insideAhead(x, yy, vx, vy);
             case LEAVE_OBSTACLE:
                 return lean.leavesAt(x, yy);
+            case PUSH:
+                return forces.hasPushes() && forces.pushChangedAt(x, yy);
+            case TELEPORT:
+                return teleports.entryAt(x, yy) >= 0;
             default:
                 throw new AssertionError(t);
         }

@@ -34,6 +34,10 @@ final class ReferenceFlight implements DormandPrince.Rhs {
     private boolean settled;
     long steps;
     int contacts;
+    /** Contacts with moving obstacles in the stroke so far (carried in and out as contacts). */
+    int movingContacts;
+    /** Where the shot was played from (a caught ball is put back there). */
+    double shotX, shotY;
 
     ReferenceFlight(World world, double maxTime, double tol) {
         PhysicsSettings physics = world.physics();
@@ -66,6 +70,11 @@ final class ReferenceFlight implements DormandPrince.Rhs {
      * stroke's end, or null when the ball settles into rolling ({@link #rolling}, {@link #time}).
      * {@link #steps} and {@link #contacts} carry the stroke's counts in and out.
      */
+    /** The course clock when the stroke began (the moving obstacles' time is it plus the stroke's). */
+    void clockOffset(double clock) {
+        obstacles.clockOffset = clock;
+    }
+
     ReferenceResult fly(double x, double y, double z, double vx, double vy, double vz, double t) {
         s[0] = x; s[1] = y; s[2] = z; s[3] = vx; s[4] = vy; s[5] = vz;
         double h = 1e-3;
@@ -96,6 +105,9 @@ final class ReferenceFlight implements DormandPrince.Rhs {
                 t = obstacles.time;
                 if (++contacts > ReferenceSimulator.MAX_CONTACTS) {
                     return notCovered("more than " + ReferenceSimulator.MAX_CONTACTS + " obstacle contacts", t);
+                }
+                if (obstacles.moving && ++movingContacts > ReferenceSimulator.MOST_MOVING_CONTACTS) {
+                    return new ReferenceResult(Outcome.OUT, shotX, shotY, t, true, "", steps);
                 }
                 double away = obstacles.reflect(s, 3);
                 // Too slow to bounce off a face turned upwards (within 60° of up): it would rest on

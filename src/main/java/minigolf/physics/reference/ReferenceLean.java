@@ -29,6 +29,16 @@ final class ReferenceLean {
 
     private boolean on;
     private double cx, cy;
+    /** Push zones and magnets tilt the pull (course-format.md, "Forces"); gates can be leant on too. */
+    private ReferenceForces forces;
+    private ReferenceGates gates;
+    private final double[] force = new double[2], pulled = new double[2];
+
+    /** The forces and the gates, once they exist (the simulator builds them after this). */
+    void with(ReferenceForces forces, ReferenceGates gates) {
+        this.forces = forces;
+        this.gates = gates;
+    }
 
     ReferenceLean(World world) {
         this.scene = world.obstacles();
@@ -84,14 +94,27 @@ final class ReferenceLean {
 
     private double pullAt(double x, double y, double ux, double uy) {
         terrain.sample(x, y, sample);
-        double hx = sample[1], hy = sample[2];
-        double p = g * (hx * ux + hy * uy);
+        double hx = sample[1], hy = sample[2], px = hx, py = hy;
+        if (forces != null && !forces.none()) {
+            forces.at(x, y, force);
+            forces.pull(hx, hy, force[0], force[1], pulled);
+            px = pulled[0];
+            py = pulled[1];
+        }
+        double p = g * (px * ux + py * uy);
         return complete ? p / (1 + hx * hx + hy * hy) : p;
     }
 
     private boolean reaches(double x, double y) {
         double tx = x - REACH * cx, ty = y - REACH * cy;
-        return scene.sweep(x, y, terrain.height(x, y) + radius, tx, ty, terrain.height(tx, ty) + radius, hit, scratch);
+        return touchesStill(x, y, tx, ty);
+    }
+
+    /** Whether the ball moved from (x, y) to (tx, ty) on the ground touches a still obstacle or a gate. */
+    private boolean touchesStill(double x, double y, double tx, double ty) {
+        double z0 = terrain.height(x, y) + radius, z1 = terrain.height(tx, ty) + radius;
+        if (scene != null && scene.sweep(x, y, z0, tx, ty, z1, hit, scratch)) return true;
+        return gates != null && !gates.none() && gates.touches(x, y, z0, tx, ty, z1);
     }
 
     /**
@@ -99,10 +122,10 @@ final class ReferenceLean {
      * the slope it would touch an obstacle, which takes the push.
      */
     boolean leansAtRest(double x, double y, double hx, double hy) {
-        if (scene == null || scene.isEmpty()) return false;
+        if ((scene == null || scene.isEmpty()) && (gates == null || gates.none())) return false;
         double slope = Math.hypot(hx, hy);
         if (slope == 0) return false;
         double tx = x - REACH * hx / slope, ty = y - REACH * hy / slope;
-        return scene.sweep(x, y, terrain.height(x, y) + radius, tx, ty, terrain.height(tx, ty) + radius, hit, scratch);
+        return touchesStill(x, y, tx, ty);
     }
 }

@@ -48,10 +48,24 @@ public final class ReferenceSimulator {
     private final ObstacleContact obstacles;
     private final ReferenceFlight flight;
     private final ReferenceLean lean;
-    private final double[] y = new double[4], a = new double[2], sample = new double[3];
+    private final ReferenceForces forces;
+    private final ReferenceTeleports teleports;
+    private final double[] y = new double[4], a = new double[2], sample = new double[3], pulled = new double[2],
+            force = new double[2];
     private double t;
     private long steps;
     private int contacts, launches;
+    /** Contacts with moving obstacles in this stroke: past {@value #MOST_MOVING_CONTACTS} the ball is caught (out). */
+    private int movingContacts;
+    /** Where the shot was played from: a crushed or caught ball goes back there (out). */
+    private double shotX, shotY;
+    static final int MOST_MOVING_CONTACTS = 500;
+    /** The course clock at the shot. */
+    private double clock;
+    /** The frame (of 1/60 s) in which the last contacts came, how many, and whether a moving obstacle was among them. */
+    private long contactFrame = -1;
+    private int frameContacts;
+    private boolean frameMoving;
 
     public ReferenceSimulator(World world) {
         this(world, SimulationSettings.DEFAULT_MAX_TIME);
@@ -70,9 +84,12 @@ public final class ReferenceSimulator {
         this.maxTime = maxTime;
         this.friction = new ReferenceFriction(world);
         this.lean = new ReferenceLean(world);
-        this.equations = new RollingEquations(world, friction, lean);
+        this.forces = new ReferenceForces(world);
+        this.teleports = new ReferenceTeleports(world);
+        lean.with(forces, new ReferenceGates(world));
+        this.equations = new RollingEquations(world, friction, lean, forces);
         this.stepper = new DormandPrince(new double[] {tolerance, tolerance, tolerance, tolerance});
-        this.events = new EventLocator(world, stepper, equations, friction, lean);
+        this.events = new EventLocator(world, stepper, equations, friction, lean, forces, teleports);
         this.obstacles = new ObstacleContact(world, stepper, false);
         this.flight = new ReferenceFlight(world, maxTime, tolerance);
     }
@@ -88,6 +105,18 @@ public final class ReferenceSimulator {
 
     /** A shot with a vertical component: it flies if vz is above the ground's rise along (vx, vy). */
     public ReferenceResult simulate(double x0, double y0, double vx, double vy, double vz) {
+        return simulateAt(0, x0, y0, vx, vy, vz);
+    }
+
+    /** A shot played at course clock {@code clockAtShot} (s), for courses with moving obstacles. */
+    public ReferenceResult simulateAt(double clockAtShot, double x0, double y0, double vx, double vy, double vz) {
+        clock = clockAtShot;
+        shotX = x0;
+        shotY = y0;
+        obstacles.clockOffset = clockAtShot;
+        flight.clockOffset(clockAtShot);
+        teleports.reset();
+        contactFrame = -1;
         y[0] = x0;
         y[1] = y0;
         y[2] = vx;
@@ -95,9 +124,11 @@ public final class ReferenceSimulator {
         t = 0;
         steps = 0;
         contacts = 0;
+        movingContacts = 0;
         launches = 0;
         lean.off();
         friction.holdZone(friction.zoneAt(x0, y0));
+        forces.holdPushAt(x0, y0);
         terrain.sample(x0, y0, sample);
         double rise = sample[1] * vx + sample[2] * vy;
         ReferenceResult end = null;
@@ -153,6 +184,18 @@ public final class ReferenceSimulator {
                     restartAt(events.hi);
                     friction.holdZone(friction.zoneAt(y[0], y[1]));
                     return null;
+                case PUSH:
+                    restartAt(events.hi);
+                    forces.holdPushAt(y[0], y[1]);
+                    return null;
+                case TELEPORT: {
+                    restartAt(events.hi);
+                    lean.off();
+                    teleports.send(teleports.entryAt(y[0], y[1]), y);
+                    friction.holdZone(friction.zoneAt(y[0], y[1]));
+                    forces.holdPushAt(y[0], y[1]);
+                    return null;
+                }
                 case SLOW:
                     restartAt(events.hi);
                     finishStop();
@@ -193,8 +236,14 @@ public final class ReferenceSimulator {
             if (++contacts > MAX_CONTACTS) {
                 return ReferenceResult.notCovered("more than " + MAX_CONTACTS + " obstacle contacts", y[0], y[1], t, steps);
             }
+            if (crushed(obstacles.moving) || caught(obstacles.moving)) return end(Outcome.OUT, shotX, shotY);
             if (obstacles.respond(y)) {
-                lean.afterContact(y, obstacles.nx, obstacles.ny, obstacles.nz);
+                if (obstacles.moving) {
+                    lean.off();
+                    separate();
+                } else {
+                    lean.afterContact(y, obstacles.nx, obstacles.ny, obstacles.nz);
+                }
             } else {
                 lean.off();
                 return fly(y[0], y[1], terrain.height(y[0], y[1]), obstacles.flight[0], obstacles.flight[1], obstacles.flight[2]);
@@ -207,6 +256,33 @@ public final class ReferenceSimulator {
     }
 
     /**
+     * A ball wedged by a moving obstacle is crushed (out of play): 16 contacts within one 1/60 s
+     * frame of the stroke's time, a moving obstacle among them (docs/physics.md).
+     */
+    private boolean crushed(boolean moving) {
+        long frame = (long) Math.floor(t * 60);
+        if (frame != contactFrame) {
+            contactFrame = frame;
+            frameContacts = 0;
+            frameMoving = false;
+        }
+        frameContacts++;
+        frameMoving |= moving;
+        return frameContacts > 16 && frameMoving;
+    }
+
+    /** Counts a moving obstacle's contact: whether the ball is now caught (docs/course-format.md). */
+    private boolean caught(boolean moving) {
+        return moving && ++movingContacts > MOST_MOVING_CONTACTS;
+    }
+
+    /** The least separation after a moving obstacle's contact (docs/physics.md), for the ball at y. */
+    private void separate() {
+        equations.pullAtRest(y[0], y[1], pulled);
+        obstacles.separate(y, friction.kinetic(y[0], y[1]), Math.hypot(pulled[0], pulled[1]));
+    }
+
+    /**
      * A flight from the contact point (x, y, z); returns the stroke's end, or null with (t, y) where
      * it settled into rolling.
      */
@@ -215,9 +291,13 @@ public final class ReferenceSimulator {
         lean.off();
         flight.steps = steps;
         flight.contacts = contacts;
+        flight.movingContacts = movingContacts;
+        flight.shotX = shotX;
+        flight.shotY = shotY;
         ReferenceResult end = flight.fly(x, yy, z, vx, vy, vz, t);
         steps = flight.steps;
         contacts = flight.contacts;
+        movingContacts = flight.movingContacts;
         if (end != null) return end;
         System.arraycopy(flight.rolling, 0, y, 0, 4);
         t = flight.time;
@@ -263,21 +343,24 @@ public final class ReferenceSimulator {
         double x = y[0], yy = y[1];
         lean.off();
         terrain.sample(x, yy, sample);
-        double h = sample[0], hx = sample[1], hy = sample[2], slope = Math.hypot(hx, hy);
+        double h = sample[0];
+        // Gravity's pull with the forces' (course-format.md, "Forces"); the ground's slope without them.
+        equations.pullAtRest(x, yy, pulled);
+        double hx = pulled[0], hy = pulled[1], slope = Math.hypot(hx, hy);
         // Capture rule: a ball at rest within the radius passes there at speed 0, below v_c(1 − (δ/r)²).
         if (hole.rule() == HoleRule.CAPTURE && captured(x, yy, 0)) return end(Outcome.HOLED, x, yy);
         double mu = friction.holding(x, yy);
-        boolean holds = slope <= mu
-                || terrain.height(x - CREASE_PROBE * hx / slope, yy - CREASE_PROBE * hy / slope) >= h - mu * CREASE_PROBE
-                || lean.leansAtRest(x, yy, hx, hy);
+        boolean holds = slope <= mu || creaseHolds(x, yy, h, hx, hy, slope, mu) || lean.leansAtRest(x, yy, hx, hy);
         if (holds) {
             boolean inHole = hole.rule() == HoleRule.REST
                     && Math.hypot(x - hole.position().x(), yy - hole.position().y()) <= hole.radius();
+            if (!inHole && !obstacles.movers().none()) return waitForMoving(x, yy, h);
             return end(inHole ? Outcome.HOLED : Outcome.STOPPED, x, yy);
         }
         // Rolling from rest: the limit of the equations as v → 0 down the slope; the first
         // 2·TINY_SPEED of speed is gained at that constant acceleration.
         friction.holdZone(friction.zoneAt(x, yy));
+        forces.holdPushAt(x, yy);
         equations.fromRest(x, yy, a);
         double accel = Math.hypot(a[0], a[1]);
         double tau = 2 * TINY_SPEED / accel;
@@ -287,6 +370,51 @@ public final class ReferenceSimulator {
         y[3] = a[1] * tau;
         t += tau;
         stepper.restart();
+        return null;
+    }
+
+    /**
+     * Rule 2's crease clause: the ground 1 mm down the pull (hx, hy) is no more than μ·1 mm lower, the
+     * forces' work over that millimetre (their mean at both ends) counted as a drop.
+     */
+    private boolean creaseHolds(double x, double yy, double h, double hx, double hy, double slope, double mu) {
+        double ex = x - CREASE_PROBE * hx / slope, ey = yy - CREASE_PROBE * hy / slope;
+        double ground = terrain.height(ex, ey);
+        if (!forces.none()) {
+            forces.at(x, yy, force);
+            double wx = force[0], wy = force[1];
+            forces.at(ex, ey, force);
+            ground -= 0.5 * ((wx + force[0]) * (ex - x) + (wy + force[1]) * (ey - yy)) / equations.gravity();
+        }
+        return ground >= h - mu * CREASE_PROBE;
+    }
+
+    /**
+     * A ball held at rest where moving obstacles are: the stroke ends unless one of them reaches it
+     * within its longest period (the motions repeat); then the ball waits there until that moment,
+     * is hit, and rolls on (null, with (t, y) after the contact), or the stroke ends out if it flies off.
+     */
+    private ReferenceResult waitForMoving(double x, double yy, double h) {
+        double reach = obstacles.firstTouchStill(x, yy, h, t, obstacles.movers().longestPeriod());
+        if (Double.isNaN(reach)) return end(Outcome.STOPPED, x, yy);
+        if (reach >= maxTime) {
+            t = maxTime;
+            return end(Outcome.TIMEOUT, x, yy);
+        }
+        t = reach;
+        y[2] = 0;
+        y[3] = 0;
+        if (++contacts > MAX_CONTACTS) {
+            return ReferenceResult.notCovered("more than " + MAX_CONTACTS + " obstacle contacts", y[0], y[1], t, steps);
+        }
+        if (crushed(true) || caught(true)) return end(Outcome.OUT, shotX, shotY);
+        friction.holdZone(friction.zoneAt(x, yy));
+        forces.holdPushAt(x, yy);
+        stepper.restart();
+        if (!obstacles.respond(y)) {
+            return fly(x, yy, h, obstacles.flight[0], obstacles.flight[1], obstacles.flight[2]);
+        }
+        separate();
         return null;
     }
 
