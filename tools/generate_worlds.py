@@ -71,6 +71,45 @@ def windmill(x, y, z, turn=90, scale=1.0):
             "restitution": 0.5}
 
 
+def bumper(x, y, r=0.09, restitution=1.5):
+    """A lively post that sends the ball off faster than it came (never past maxSpeed)."""
+    return {"type": "bumper", "position": [x, y], "radius": r, "height": 0.1, "restitution": restitution}
+
+
+def one_way(a, b, pass_to, restitution=0.6):
+    """A one-way gate from a to b: the ball passes towards `pass_to` ("left"/"right", seen from a to b)."""
+    return {"type": "gate", "from": list(a), "to": list(b), "height": 0.1, "passTo": pass_to, "restitution": restitution}
+
+
+def moving(body, motion):
+    """An obstacle carried by a motion (docs/course-format.md, "Moving obstacles")."""
+    return dict(body, motion=motion)
+
+
+def rotate(pivot, period, axis=(0, 0, 1), phase=0):
+    return {"type": "rotate", "pivot": list(pivot), "axis": list(axis), "period": period, "phase": phase}
+
+
+def slide(path, period, phase=0):
+    return {"type": "slide", "path": [list(p) for p in path], "period": period, "phase": phase, "closed": False}
+
+
+def swing(pivot, axis, amplitude, period, phase=0):
+    return {"type": "swing", "pivot": list(pivot), "axis": list(axis), "amplitudeDeg": amplitude, "period": period,
+            "phase": phase}
+
+
+def push(shape, ax, ay):
+    """A push zone: the classic game's downhill tiles (m/s^2)."""
+    return {"shape": shape, "push": [ax, ay]}
+
+
+def teleport(entry, exits):
+    """An entry shape and its exits [(x, y, direction in degrees or None)]."""
+    return {"entry": entry, "exits": [{"position": [x, y], "directionDeg": d} if d is not None else {"position": [x, y]}
+                                      for x, y, d in exits]}
+
+
 def g(x0, y0, sx, sy):
     """A Gaussian bump's shape exp(-((x-x0)^2/sx + (y-y0)^2/sy)) as an expression."""
     return "exp(-((x-%g)^2/%g+(y-%g)^2/%g))" % (x0, sx, y0, sy)
@@ -142,7 +181,9 @@ def seaside():
     huts = [box(-1.0, 0.35, 0.45, 0.45, 0.0, 0.35, 0, 0.9), box(0.2, -0.35, 0.45, 0.45, 0.0, 0.35, 0, 0.9),
             box(1.4, 0.35, 0.45, 0.45, 0.0, 0.35, 0, 0.9), box(2.3, -0.3, 0.3, 0.3, 0.0, 0.35, 45, 0.9),
             box(2.5, 0.4, 0.4, 0.4, 0.0, 0.35, 0, 0.9)]
-    h.append(("11-beach-huts", course("Beach Huts", "0.1", lane(-3.5, 3.5, 0.9), (-3.0, -0.4), (3.05, 0.5), huts,
+    # A buoy (a bumper) by the lower rail kicks a ball that hugs the rail back into the alley.
+    buoys = [bumper(-0.4, -0.62, 0.08)]
+    h.append(("11-beach-huts", course("Beach Huts", "0.1", lane(-3.5, 3.5, 0.9), (-3.0, -0.4), (3.05, 0.5), huts + buoys,
                                       world=SEA), 3))
     # 12. Lagoon Carry: a lagoon lies across the lane; a narrow causeway runs along the lower rail,
     # or chip straight over onto the green.
@@ -158,9 +199,11 @@ def seaside():
                                    [box(1.7, -0.3, 0.1, 0.9, 0.0, 0.2), box(1.7, 0.565, 0.1, 0.37, 0.0, 0.2)]
                                    + pocket(2.5, -0.75, 3.0, -0.15), world=SEA,
                                    slope_region=lane(-3.5, 3.3, 0.75)), 3))
-    # 14. Breakwater: staggered walls make a chicane; bank through it.
+    # 14. Breakwater: staggered walls make a chicane; bank through it. A lock gate slides to and fro
+    # in the middle opening: half of it is always open, which half depends on the moment.
     chic = wall([(-1.2, -0.9), (-1.2, 0.35)]) + wall([(0.6, 0.9), (0.6, -0.35)]) + wall([(2.0, -0.9), (2.0, 0.2)])
-    h.append(("14-breakwater", course("Breakwater", "0.1", lane(-3.5, 3.5, 0.9), (-3.0, -0.5), (3.0, -0.4), chic,
+    lock = moving(box(0.6, -0.76, 0.08, 0.28, 0.0, 0.22, 0, 0.5), slide([(0, 0, 0), (0, 0.27, 0)], 3.0))
+    h.append(("14-breakwater", course("Breakwater", "0.1", lane(-3.5, 3.5, 0.9), (-3.0, -0.5), (3.0, -0.4), chic + [lock],
                                       world=SEA), 3))
     # 15. Twin Greens: two tiers split by a wall with one gap; the cup is on the upper tier.
     tiers = "0.1 + 0.12*" + step("x-0.8", 5)
@@ -218,8 +261,11 @@ def canyon():
     # 6. Slot Canyon: the lane squeezes through a slot barely wider than two balls, then turns.
     slot = [(-3.5, -0.9), (0.4, -0.9), (0.4, -0.12), (1.4, -0.12), (1.4, -1.2), (3.2, -1.2), (3.2, 0.9), (1.4, 0.9),
             (1.4, 0.12), (0.4, 0.12), (0.4, 0.9), (-3.5, 0.9)]
+    # A cave mouth in the corner by the slot (a teleport) comes out in the far room, rolling towards the cup.
+    cave = teleport(circle(0.0, 0.62, 0.13), [(1.85, 0.55, -90)])
     h.append(("06-slot-canyon", course("Slot Canyon", "0.1", slot, (-3.0, 0.4), (2.6, -0.6),
-                                       wall([(2.3, 0.9), (2.3, 0.0)]), [outside(slot, REDSAND)], world=CANYON), 3))
+                                       wall([(2.3, 0.9), (2.3, 0.0)]), [outside(slot, REDSAND)], world=CANYON,
+                                       teleports=[cave]), 3))
     # 7. Rattlesnake: an S of two bends; bank off the outside of each.
     s_lane = [(-3.5, -1.4), (0.3, -1.4), (0.3, 0.3), (3.5, 0.3), (3.5, 1.4), (-0.8, 1.4), (-0.8, -0.3), (-3.5, -0.3)]
     h.append(("07-rattlesnake", course("Rattlesnake", "0.1 + 0.02*y", s_lane, (-3.0, -0.85), (3.0, 0.85),
@@ -278,9 +324,11 @@ def canyon():
     # 17. Sandstorm: dunes roll across the lane and drifts of sand sit in the troughs.
     dunes = "0.15 + 0.06*sin(2.2*x+0.5*y)"
     drifts = [zone(circle(-1.0, 0.3, 0.35), REDSAND), zone(circle(0.45, -0.35, 0.32), REDSAND), zone(circle(1.85, 0.35, 0.3), REDSAND)]
+    # Gusts blow across the lane in two bands, one each way (push zones).
+    gusts = [push(rect(-2.2, -0.9, -1.5, 0.9), 0.0, 0.7), push(rect(0.9, -0.9, 1.5, 0.9), 0.0, -0.7)]
     h.append(("17-sandstorm", course("Sandstorm", dunes, lane(-3.5, 3.5, 0.9), (-3.0, 0.0), (2.95, -0.45),
                                      wall([(2.5, -0.9), (2.5, 0.2)]), drifts,
-                                     world=CANYON), 3))
+                                     world=CANYON, push_zones=gusts), 3))
     # 18. Grand Canyon: the finale: down into the canyon past the windmill, over the river by the
     # bridge, and up to the cup on the far rim.
     gc = ("0.35 - 0.25*" + step("x+1.2", 3) + " + 0.3*" + step("x-2.8", 3)
@@ -354,7 +402,9 @@ def winter():
     # round a low wall.
     port = wall([(0.0, -1.0), (0.3, -0.12)], 0.14, 0.18) + wall([(0.45, 0.3), (0.75, 1.0)], 0.14, 0.18) + \
         [pillar(0.3, -0.12, 0.1, 0.5), pillar(0.45, 0.3, 0.1, 0.5)] + wall([(2.0, -0.2), (2.0, 1.0)])
-    h.append(("09-portcullis", course("Portcullis", "0.1", lane(-3.0, 3.2, 1.0), (-2.5, -0.5), (2.6, 0.5), port,
+    # The portcullis rises and falls in the gate (4 s): time the putt, or bank round the towers.
+    grille = moving(box(0.375, 0.09, 0.05, 0.26, 0.1, 0.4, -19.65, 0.5), slide([(0, 0, 0), (0, 0, 0.14)], 4.0))
+    h.append(("09-portcullis", course("Portcullis", "0.1", lane(-3.0, 3.2, 1.0), (-2.5, -0.5), (2.6, 0.5), port + [grille],
                                       world=WINTER), 3))
     # 10. Sledge Run: a curving run banked like a toboggan track.
     run = "0.1 + 0.24*(y-0.5*sin(0.7*x+0.6))^2*" + step("2.9-x", 5)
@@ -390,8 +440,10 @@ def winter():
                                       world=WINTER), 3))
     # 16. Icicle Alley: bands of ice and snow across the lane: fast, slow, fast, slow.
     bands = [zone(rect(x, -0.8, x + 0.6, 0.8), ICE if k % 2 == 0 else SNOW) for k, x in enumerate((-2.2, -1.2, -0.2, 0.8, 1.8))]
+    # A one-way gate after the last band: a ball through it stays at the cup's end.
     h.append(("16-icicle-alley", course("Icicle Alley", "0.1 + 0.02*y", lane(-3.5, 3.5, 0.8), (-3.0, 0.0), (3.0, 0.45),
-                                        pocket(2.6, 0.8, 3.2, 0.1), bands, world=WINTER), 3))
+                                        pocket(2.6, 0.8, 3.2, 0.1) + [one_way((2.45, -0.8), (2.45, 0.8), "right")], bands,
+                                        world=WINTER), 3))
     # 17. Spiral Stair: terraces climb round a central tower; the cup is on the top landing.
     stair = "0.1 + 0.09*" + step("x+0.6", 7) + " + 0.09*" + step("y-0.2", 7) + "*" + step("x-0.6", 5)
     h.append(("17-spiral-stair", course("Spiral Stair", stair, lane(-3.0, 3.0, 1.2), (-2.5, -0.7), (-0.8, 0.8),

@@ -75,10 +75,11 @@ MAX_SLOPE = 0.8
 
 
 def course(name, height, outline, start, hole, obstacles=(), zones=(), physics=None, world=None, bounds=None,
-           slope_region=None):
+           slope_region=None, push_zones=(), teleports=()):
     """A course dict: rails round `outline` (following uneven ground), the capture rule, and the
     optional `world` (a themed world's id, written after the name). The slope check covers the
-    outline's box, or `slope_region` (a polygon: only where the ball can roll) when given."""
+    outline's box, or `slope_region` (a polygon: only where the ball can roll) when given. Push zones
+    and teleports (docs/course-format.md) are written only when there are some."""
     flat = all(c not in height for c in "xy")
     region = slope_region or outline
     if not flat:
@@ -92,6 +93,10 @@ def course(name, height, outline, start, hole, obstacles=(), zones=(), physics=N
               "physics": physics or PHYSICS, "start": list(start),
               "hole": {"position": list(hole), "radius": CUP, "rule": "capture"},
               "zones": list(zones), "obstacles": rails(outline, height=None if flat else height_function(height)) + list(obstacles)})
+    if push_zones:
+        c["pushZones"] = list(push_zones)
+    if teleports:
+        c["teleports"] = list(teleports)
     return c
 
 
@@ -134,7 +139,7 @@ def dump(c, path):
     keys = list(c)
     for n, k in enumerate(keys):
         end = "," if n + 1 < len(keys) else ""
-        if k in ("obstacles", "zones") and c[k]:
+        if k in ("obstacles", "zones", "pushZones", "teleports") and c[k]:
             lines.append('  "%s": [' % k)
             for m, o in enumerate(c[k]):
                 lines.append("    " + json.dumps(o, separators=(", ", ": ")) + ("," if m + 1 < len(c[k]) else ""))

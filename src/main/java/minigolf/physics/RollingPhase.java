@@ -224,35 +224,47 @@ final class RollingPhase {
     }
 
     /**
+     * Whether the long step being chosen starts on ground shallower than mu_k, where the ball
+     * cannot turn: it may come nearer its stop (clearOfHazards checks that it stayed so).
+     */
+    private boolean shallowStep;
+
+    /**
      * The longest step up to tau that may be taken from here (docs/physics.md, "Step control"):
      * dt, or longer where nothing it could reach needs the step's own length. A long step stays on
      * smooth ground, clear of obstacles (still, gates, moving: their reach over a whole period),
      * friction zones' edges, push zones, magnets, teleports' entries and (under the capture rule)
      * the hole; the ball leans on no obstacle, and is fast enough that it can neither stop within
-     * the step nor come within the rest rule's horizon of a turn. Halved from tau until it qualifies.
+     * the step nor come within the rest rule's horizon of a turn (on ground shallower than mu_k it
+     * cannot turn: only the stop counts). Cut from tau to the length that qualifies.
      */
     private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
                                double a1x, double a1y) {
+        shallowStep = false;
         if (!smooth || leaning) return dt;
         // Braking at most g (|grad h| + mu_k), it must be left with the speed the rest rule's turn
         // horizon and a step of dt need (the ground may grow steeper than mu_k within the step).
         double braking = gravity * (slope + muK);
-        double spare = speed - RestRule.REST_SPEED - braking * (dt + RestRule.TURN_HORIZON);
-        while (control.isLong(tau) && braking * tau >= spare) tau *= 0.5;
-        if (!control.isLong(tau) || !(scene != null || zoned || captureRule || forces != null || teleporter != null)) {
-            return control.isLong(tau) ? tau : dt;
-        }
+        // On ground no steeper than mu_k the ball cannot turn, only stop: the turn horizon is not
+        // needed (clearOfHazards checks that every stage's ground stayed that shallow).
+        shallowStep = slope < muK;
+        double spare = speed - RestRule.REST_SPEED - braking * (dt + (shallowStep ? 0 : RestRule.TURN_HORIZON));
+        if (braking * tau >= spare) tau = spare / braking;
+        if (!control.isLong(tau)) return dt;
+        if (!(scene != null || zoned || captureRule || forces != null || teleporter != null)) return tau;
         // From the shortest long step up, each as long as nothing is within its reach: near an
         // obstacle a single small square is looked at.
         BallState b = ball;
         double acceleration = Math.sqrt(a1x * a1x + a1y * a1y);
-        double shortest = 2 * dt, chosen = dt;
-        for (double length = shortest; length <= tau * (1 + 1e-9); length *= 2) {
+        double chosen = dt;
+        for (double step = 2 * dt; ; step *= 2) {
+            double length = Math.min(step, tau);
             double reach = speed * length + acceleration * length * length;
             double minX = b.x - reach, minY = b.y - reach, maxX = b.x + reach, maxY = b.y + reach;
             if (elementNear(minX, minY, maxX, maxY)) break;
             if (captureRule && hole.within(b.x, b.y, reach)) break;
             chosen = length;
+            if (length >= tau) break;
         }
         return chosen;
     }
@@ -282,6 +294,12 @@ final class RollingPhase {
         }
         if (elementNear(r.stageMinX, r.stageMinY, r.stageMaxX, r.stageMaxY)) return false;
         BallState b = ball;
+        if (shallowStep) {
+            // Still braking, short of its stop by at least half the dt of speed it was left with.
+            double braking = gravity * (Math.sqrt(r.stageSteepest) + b.muK);
+            double endSpeed = Math.sqrt(r.nvx * r.nvx + r.nvy * r.nvy);
+            if (!(r.stageSteepest < b.muK * b.muK && r.nvx * b.vx + r.nvy * b.vy > 0 && endSpeed > 0.5 * braking * dt)) return false;
+        }
         return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
 
