@@ -68,18 +68,32 @@ public final class MovingObstacles {
             }
             return box;
         }
+        // Turning about an axis k through the pivot c, a point keeps its position s along the axis
+        // and its distance rho from it: coordinate j stays within c_j + s k_j +- rho sqrt(1 - k_j^2)
+        // (a blade turning about x keeps its own x extent). s is linear and rho convex over the
+        // body's box, so both take their extremes at its corners.
         var pivot = motion instanceof Motion.Rotate rt ? rt.pivot() : ((Motion.Swing) motion).pivot();
+        var axis = motion instanceof Motion.Rotate rt ? rt.axis() : ((Motion.Swing) motion).axis();
         double[] c = {pivot.x(), pivot.y(), pivot.z()};
-        double far = 0;
+        double norm = Math.sqrt(axis.x() * axis.x() + axis.y() * axis.y() + axis.z() * axis.z());
+        double[] k = {axis.x() / norm, axis.y() / norm, axis.z() / norm};
+        double along0 = Double.POSITIVE_INFINITY, along1 = Double.NEGATIVE_INFINITY, far = 0;
         for (int corner = 0; corner < 8; corner++) {
             double dx = ((corner & 1) == 0 ? e[0] : e[3]) - c[0];
             double dy = ((corner & 2) == 0 ? e[1] : e[4]) - c[1];
             double dz = ((corner & 4) == 0 ? e[2] : e[5]) - c[2];
-            far = Math.max(far, Math.sqrt(dx * dx + dy * dy + dz * dz));
+            double along = dx * k[0] + dy * k[1] + dz * k[2];
+            double px = dx - along * k[0], py = dy - along * k[1], pz = dz - along * k[2];
+            along0 = Math.min(along0, along);
+            along1 = Math.max(along1, along);
+            far = Math.max(far, Math.sqrt(px * px + py * py + pz * pz));
         }
-        for (int k = 0; k < 3; k++) {
-            box[k] = c[k] - far - r;
-            box[k + 3] = c[k] + far + r;
+        for (int j = 0; j < 3; j++) {
+            double spread = far * Math.sqrt(Math.max(0, 1 - k[j] * k[j]));
+            // Rounding: the box may only grow.
+            double slack = 1e-9 * (1 + far + Math.abs(along0) + Math.abs(along1));
+            box[j] = c[j] + Math.min(along0 * k[j], along1 * k[j]) - spread - r - slack;
+            box[j + 3] = c[j] + Math.max(along0 * k[j], along1 * k[j]) + spread + r + slack;
         }
         return box;
     }

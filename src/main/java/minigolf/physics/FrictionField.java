@@ -77,11 +77,7 @@ public final class FrictionField {
         double[] b = boxes;
         for (int k = 0; k < zones.length; k++) {
             if (b[4 * k] > maxX || b[4 * k + 2] < minX || b[4 * k + 1] > maxY || b[4 * k + 3] < minY) continue;
-            Shape shape = zones[k].shape();
-            boolean inside = (shape instanceof Shape.Rect || shape instanceof Shape.Circle)
-                    && shape.contains(minX, minY) && shape.contains(maxX, minY)
-                    && shape.contains(minX, maxY) && shape.contains(maxX, maxY);
-            if (!inside) return true;
+            if (!ShapeBoxes.covers(zones[k].shape(), minX, minY, maxX, maxY)) return true;
         }
         return false;
     }

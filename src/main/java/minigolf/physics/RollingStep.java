@@ -30,6 +30,7 @@ final class RollingStep {
     private final double longFrom;
     private final double[] sample = new double[3];
     private final double[] force = new double[2];
+    private final double[] pull = new double[2];
 
     // The start state of the sub-steps: position, velocity, slope, kinetic friction and force there.
     private double x, y, vx, vy, hx, hy, muK, fx, fy;
@@ -52,7 +53,7 @@ final class RollingStep {
     private double stage4vx, stage4vy, lastTau;
     /** The last long step ({@link #advanceLong}): the lowest ground its stages sampled, and the box round their points. */
     double stageLowest, stageMinX, stageMinY, stageMaxX, stageMaxY;
-    /** The last long step's steepest ground among its stages (|grad h| squared). */
+    /** The last long step's steepest ground among its stages (|grad h| squared; the pull gradient's with forces). */
     double stageSteepest;
     /** The last long step's error estimate (position, m). */
     private double longError;
@@ -329,9 +330,11 @@ final class RollingStep {
         return lastTau / 6 * Math.sqrt(ex * ex + ey * ey);
     }
 
-    /** |grad h| squared of the last sample. */
+    /** |grad h| squared of the last sample; with push zones or magnets, of the pull gradient there (the force of the last sample). */
     private double steepness() {
-        return sample[1] * sample[1] + sample[2] * sample[2];
+        if (forces == null) return sample[1] * sample[1] + sample[2] * sample[2];
+        ForceField.pullGradient(sample[1], sample[2], force[0], force[1], gravity, complete, pull);
+        return pull[0] * pull[0] + pull[1] * pull[1];
     }
 
     private void accelerationAt(double px, double py, double pvx, double pvy) {

@@ -23,4 +23,14 @@ final class ShapeBoxes {
         }
         return box;
     }
+
+    /**
+     * Whether the shape certainly holds the whole rectangle (a rectangle or a circle holding its
+     * four corners: both are convex); false where it may not, as for polygons.
+     */
+    static boolean covers(Shape shape, double minX, double minY, double maxX, double maxY) {
+        return (shape instanceof Shape.Rect || shape instanceof Shape.Circle)
+                && shape.contains(minX, minY) && shape.contains(maxX, minY)
+                && shape.contains(minX, maxY) && shape.contains(maxX, maxY);
+    }
 }
