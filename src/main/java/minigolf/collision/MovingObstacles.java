@@ -31,9 +31,19 @@ public final class MovingObstacles {
     private record Entry(int index, Motion motion, CollisionScene body, double[] reach, double restitution) {
     }
 
+    /** The box round every entry's reach in the plane (minX, minY, maxX, maxY): most questions end there. */
+    private final double[] reachAll = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+            Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+
     private MovingObstacles(Entry[] entries, double radius) {
         this.entries = entries;
         this.radius = radius;
+        for (Entry e : entries) {
+            reachAll[0] = Math.min(reachAll[0], e.reach[0]);
+            reachAll[1] = Math.min(reachAll[1], e.reach[1]);
+            reachAll[2] = Math.max(reachAll[2], e.reach[3]);
+            reachAll[3] = Math.max(reachAll[3], e.reach[4]);
+        }
     }
 
     /** The moving obstacles among the course's (their indices kept), or null when none moves. */
@@ -104,6 +114,7 @@ public final class MovingObstacles {
 
     /** Whether a moving obstacle can ever come within a ball radius of the rectangle (centre positions). */
     public boolean anyNear(double minX, double minY, double maxX, double maxY) {
+        if (reachAll[0] > maxX || reachAll[2] < minX || reachAll[1] > maxY || reachAll[3] < minY) return false;
         for (Entry e : entries) {
             if (e.reach[0] <= maxX && e.reach[3] >= minX && e.reach[1] <= maxY && e.reach[4] >= minY) return true;
         }

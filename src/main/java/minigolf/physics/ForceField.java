@@ -104,6 +104,11 @@ public final class ForceField {
     /** The push at (x, y), the sum of the zones containing it, into out[0], out[1]. */
     public void push(double x, double y, double[] out) {
         double px = 0, py = 0;
+        if (x < minX || x > maxX || y < minY || y > maxY) {
+            out[0] = 0;
+            out[1] = 0;
+            return;
+        }
         for (int k = 0; k < pushShapes.length; k++) {
             if (pushShapes[k].contains(x, y)) {
                 px += pushX[k];
