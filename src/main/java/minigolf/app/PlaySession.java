@@ -74,6 +74,15 @@ final class PlaySession {
     private final long idleStart = System.nanoTime();
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
     private final BotSeats botSeats = new BotSeats();
+    /**
+     * The least time (s of play) a computer opponent's turn shows "... is thinking" before its stroke:
+     * the levels decide within a frame or two, too soon for a player to see whose turn it is.
+     */
+    static final double MIN_THINKING_SECONDS = 0.8;
+    /** How long the bot now to play has been thinking (s of play). */
+    private double botThinking;
+    /** The bots' seed for this game or round (BotTurn.seed), drawn afresh when one starts or is resumed. */
+    private long botSeed = System.nanoTime();
     private ShotRecord lastStroke;
     /** A room on a game server being played instead of a local game, or null. */
     private OnlinePlay online;
@@ -127,6 +136,11 @@ final class PlaySession {
         return botTurn;
     }
 
+    /** How far the bot now to play is, 0 to 1: its own progress, but never ahead of its least thinking time. */
+    double botProgress() {
+        return botTurn == null ? 0 : Math.min(botTurn.progress(), botThinking / MIN_THINKING_SECONDS);
+    }
+
     /** The stroke that ended last. */
     ShotRecord lastStroke() {
         return lastStroke;
@@ -143,6 +157,7 @@ final class PlaySession {
     void start(List<Player> players, UserSettings s) {
         stopPlay();
         closeOnline();
+        botSeed = System.nanoTime();
         if (roundToPlay != null) {
             round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
             showHole();
@@ -201,6 +216,7 @@ final class PlaySession {
             SavedRounds.AnySave save = SavedRounds.loadAny(file);
             stopPlay();
             closeOnline();
+            botSeed = System.nanoTime();
             if (save.round() != null) {
                 round = save.round();
                 roundToPlay = round.round();
@@ -317,8 +333,10 @@ final class PlaySession {
                 }
                 PlayerState s = game.player(seat);
                 botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
-                        31L * game.history().size() + seat, BotConditions.of(game, seat, hideFrictionFromBots));
-            } else if (botTurn.isDone()) {
+                        BotTurn.seed(botSeed, round == null ? 0 : round.holeIndex(), game.history().size(), seat),
+                        BotConditions.of(game, seat, hideFrictionFromBots));
+                botThinking = 0;
+            } else if ((botThinking += elapsed * timeScale) >= MIN_THINKING_SECONDS && botTurn.isDone()) {
                 BotTurn done = botTurn;
                 botTurn = null;
                 if (done.shot() != null && done.waitSeconds() > 0) {
