@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import minigolf.game.SettingsStore;
@@ -25,12 +24,7 @@ class OnlineOffersTest {
 
     @Test
     void everyOfferIsNamedAsAPlayerReadsItAndFoundOnTheServer() throws Exception {
-        Files.createDirectories(config.resolve("rounds"));
-        Files.createDirectories(config.resolve("holes"));
-        Files.copy(Path.of(System.getProperty("minigolf.projectDir", "."), "courses/holes/01-first-tee.json"),
-                config.resolve("holes/tee.json"));
-        Files.writeString(config.resolve("rounds/mine.json"),
-                "{\"format\": 1, \"name\": \"My Own\", \"holes\": [{\"course\": \"../holes/tee.json\", \"par\": 2}]}");
+        OwnRounds.write(config, "mine.json", "My Own", 1);
         SettingsStore store = new SettingsStore(config);
         assertTrue(CourseFolders.rounds(store).stream().anyMatch(r -> r.round().name().equals("My Own")), "the player's round loads");
         List<OnlineScreen.Offer> offers = OnlineScreen.offers(store);

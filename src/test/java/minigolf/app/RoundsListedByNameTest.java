@@ -3,7 +3,6 @@ package minigolf.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import minigolf.game.SettingsStore;
@@ -20,15 +19,10 @@ class RoundsListedByNameTest {
 
     @Test
     void shippedRoundsShorterFirstThenByNameAndThePlayersOwnAfterThem() throws Exception {
-        Files.createDirectories(config.resolve("rounds"));
-        Files.createDirectories(config.resolve("holes"));
-        Files.copy(Path.of(System.getProperty("minigolf.projectDir", "."), "courses/holes/01-first-tee.json"),
-                config.resolve("holes/tee.json"));
-        String hole = "../holes/tee.json";
         // File names in the opposite order of the names.
-        Files.writeString(config.resolve("rounds/a.json"), round("Zebra Two", hole, 2));
-        Files.writeString(config.resolve("rounds/b.json"), round("alpine Two", hole, 2));
-        Files.writeString(config.resolve("rounds/c.json"), round("Quick One", hole, 1));
+        OwnRounds.write(config, "a.json", "Zebra Two", 2);
+        OwnRounds.write(config, "b.json", "alpine Two", 2);
+        OwnRounds.write(config, "c.json", "Quick One", 1);
         List<CourseFolders.RoundEntry> rounds = CourseFolders.rounds(new SettingsStore(config));
         List<String> names = rounds.stream().map(r -> r.round().name()).toList();
         assertEquals(List.of("Quick One", "alpine Two", "Zebra Two"), names.subList(names.size() - 3, names.size()), names.toString());
@@ -40,10 +34,5 @@ class RoundsListedByNameTest {
         }
         assertTrue(names.indexOf("Meadowbrook Front Nine") == 0 && names.indexOf("Red Rock Canyon") > names.indexOf("Meadowbrook 18"),
                 names.toString());
-    }
-
-    private static String round(String name, String hole, int holes) {
-        String h = "{\"course\": \"" + hole + "\", \"par\": 2}";
-        return "{\"format\": 1, \"name\": \"" + name + "\", \"holes\": [" + String.join(", ", java.util.Collections.nCopies(holes, h)) + "]}";
     }
 }
