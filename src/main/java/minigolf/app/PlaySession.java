@@ -443,6 +443,11 @@ final class PlaySession {
         return true;
     }
 
+    /** The course clock a stroke hit now would start at (moving obstacles: the aim guide shows that stroke). */
+    double shotClock() {
+        return game == null ? 0 : game.clock();
+    }
+
     /** The view's course clock when no game is played (seconds since the session began). */
     double idleClock() {
         return (System.nanoTime() - idleStart) * 1e-9;

@@ -160,10 +160,11 @@ class PlayingScreen extends GameScreen {
      * The aim guide (AimGuide: the real engine, the game's settings, a chip's flight too), the whole
      * putt until it stops or drops: worked out on the guide's own thread, so a frame never waits for
      * it; until the new aim's path is ready the last one shows (the same array, so the arrow is not rebuilt).
+     * Where obstacles move it is the stroke hit now, at the clock a release would start it at.
      */
     private float[] guidePath(Game game, double x, double y, double[] v) {
         if (guides == null) guides = new AimGuideWorker();
-        AimGuide g = guides.guide(game.world(), game.settings(), x, y, v[0], v[1], v[2]);
+        AimGuide g = guides.guide(game.world(), game.settings(), x, y, v[0], v[1], v[2], app.play().shotClock());
         return g == null ? null : g.points();
     }
 
