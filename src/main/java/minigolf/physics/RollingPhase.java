@@ -84,11 +84,14 @@ final class RollingPhase {
         this.captureRule = hole.captureRule;
     }
 
-    /** A new stroke played at course clock {@code clock}: no wait for a moving obstacle, the teleports' exits from the first. */
-    void start(double clock) {
+    /**
+     * A new stroke played at course clock {@code clock}: no wait for a moving obstacle, the teleports'
+     * exits from the first; {@code strokeKey} summarises the shot for the teleports that draw their exits.
+     */
+    void start(double clock, long strokeKey) {
         startClock = clock;
         waitUntil = Double.NaN;
-        if (teleporter != null) teleporter.reset();
+        if (teleporter != null) teleporter.reset(strokeKey);
     }
 
     /** One rolling piece of at most tau seconds; returns the time it took. */

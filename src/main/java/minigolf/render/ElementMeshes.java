@@ -14,6 +14,7 @@ import minigolf.course.Shape;
 import minigolf.course.Teleport;
 import minigolf.course.Vec2;
 import minigolf.course.Vec3;
+import minigolf.physics.ShapeBoxes;
 
 /**
  * The meshes of the course elements of issue 24 on the CPU (testable without GL), in world
@@ -225,6 +226,9 @@ public final class ElementMeshes {
             glow.add(ring(x, y, r - 0.012, 0.024, h, TELEPORT_GLOW));
             glow.add(ring(x, y, 0.6 * r, 0.014, h, TELEPORT_GLOW));
             glow.add(ring(x, y, 0.25 * r, 0.01, h, TELEPORT_GLOW));
+        } else if (t.entry() instanceof Shape.Cells) {
+            // Drawn pixel by pixel (the classic tracks' teleports): the whole entry glows.
+            glow.add(tint(t.entry(), box, h, TELEPORT_GLOW));
         } else {
             decals.add(tint(t.entry(), box, h, TELEPORT_FLOOR));
             glow.add(outline(t.entry(), h, TELEPORT_GLOW));
@@ -319,19 +323,7 @@ public final class ElementMeshes {
 
     /** {minX, minY, maxX, maxY} of a shape. */
     static double[] box(Shape s) {
-        if (s instanceof Shape.Rect r) return new double[] {r.min().x(), r.min().y(), r.max().x(), r.max().y()};
-        if (s instanceof Shape.Circle c) {
-            return new double[] {c.center().x() - c.radius(), c.center().y() - c.radius(), c.center().x() + c.radius(),
-                    c.center().y() + c.radius()};
-        }
-        double[] b = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (Vec2 p : ((Shape.Polygon) s).points()) {
-            b[0] = Math.min(b[0], p.x());
-            b[1] = Math.min(b[1], p.y());
-            b[2] = Math.max(b[2], p.x());
-            b[3] = Math.max(b[3], p.y());
-        }
-        return b;
+        return ShapeBoxes.of(s);
     }
 
     /**
