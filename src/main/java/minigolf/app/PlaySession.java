@@ -362,6 +362,11 @@ final class PlaySession {
         return online;
     }
 
+    /** A server's stroke is waiting out its wait before it rolls (online). */
+    boolean onlineStrokeWaiting() {
+        return held != null;
+    }
+
     /** The seat whose ball is rolling in the animation, or -1. */
     int rollingSeat() {
         if (rolling != null) return rolling.seat();
@@ -499,12 +504,13 @@ final class PlaySession {
         animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
     }
 
-    /** The bot thinking now stops and the rolling animation is dropped. */
+    /** The bot thinking now stops and the rolling animation is dropped, a server's stroke still waiting too. */
     private void stopPlay() {
         cancelBot();
         botTurn = null;
         botShot = null;
         animator = null;
         rolling = null;
+        held = null;
     }
 }
