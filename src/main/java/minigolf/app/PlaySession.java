@@ -88,6 +88,9 @@ final class PlaySession {
     private OnlinePlay online;
     /** The server's stroke being animated (online), or null. */
     private minigolf.online.RoomEvent rolling;
+    /** A server's stroke whose wait is still running before it is animated (online), and how long yet (s). */
+    private minigolf.online.RoomEvent held;
+    private double heldLeft;
 
     PlaySession(World world, Path coursePath, List<double[]> script, PlayerFiles files, Consumer<String> say) {
         this.world = world;
@@ -148,7 +151,7 @@ final class PlaySession {
 
     /** A human player is to play and no ball rolls. */
     boolean humanToPlay() {
-        if (online != null) return animator == null && online.canShoot();
+        if (online != null) return animator == null && held == null && online.canShoot();
         return game != null && !game.isShotInFlight() && !game.isOver() && game.currentPlayer() >= 0
                 && !game.players().get(game.currentPlayer()).isBot();
     }
@@ -262,7 +265,7 @@ final class PlaySession {
         }
         if (online != null) {
             // The server plays the stroke; it is animated when it comes back.
-            if (animator != null || !online.canShoot()) return;
+            if (animator != null || held != null || !online.canShoot()) return;
             online.shoot(vx, vy, vz);
             return;
         }
@@ -275,6 +278,7 @@ final class PlaySession {
 
     /** Runs the rolling stroke to its end at once (SPACE): the same stroke, no animation. */
     void skipAnimation() {
+        if (held != null) startOnlineStroke();
         if (animator == null) return;
         while (!animator.isFinished()) animator.advance(1e9, 1);
     }
@@ -376,6 +380,11 @@ final class PlaySession {
         return online;
     }
 
+    /** A server's stroke is waiting out its wait before it rolls (online). */
+    boolean onlineStrokeWaiting() {
+        return held != null;
+    }
+
     /** The seat whose ball is rolling in the animation, or -1. */
     int rollingSeat() {
         if (rolling != null) return rolling.seat();
@@ -392,6 +401,7 @@ final class PlaySession {
         if (online.takeResync()) {
             animator = null;
             rolling = null;
+            held = null;
             round = online.shown();
             if (round != null) {
                 showHole();
@@ -401,6 +411,13 @@ final class PlaySession {
         }
         if (round == null) return Progress.NONE;
         Progress progress = Progress.NONE;
+        if (held != null) {
+            // The stroke's wait runs on the room's clock before the ball is hit.
+            heldLeft -= elapsed * timeScale;
+            if (heldLeft > 0) return progress;
+            startOnlineStroke();
+            return progress;
+        }
         if (animator != null) {
             animator.advance(elapsed, timeScale);
             if (!animator.isFinished()) return progress;
@@ -419,19 +436,28 @@ final class PlaySession {
         if (e != null && e.isPickUp()) {
             if (settleOnline(e)) return Progress.OVER;
         } else if (e != null) {
-            ShotRecord r = e.stroke();
-            TrajectoryListener listener = feedback == null ? null
-                    : feedback.stroke(game.world(), game.player(e.seat()).total() == 0, e.seat());
-            animator = new StrokeAnimator(new minigolf.physics.Stroke(game.world(), game.settings(), r.startX(), r.startY(),
-                    r.vx(), r.vy(), r.vz(), listener, false), game.settings().dt());
-            rolling = e;
-            if (feedback != null) feedback.hit(Math.sqrt(r.vx() * r.vx() + r.vy() * r.vy() + r.vz() * r.vz()),
-                    game.world().physics().maxSpeed());
+            held = e;
+            heldLeft = e.waitSeconds();
+            if (heldLeft <= 0) startOnlineStroke();
         } else if (!script.isEmpty() && online.canShoot()) {
             double[] v = script.poll();
             hit(v[0], v[1], v.length > 2 ? v[2] : 0);
         }
         return progress;
+    }
+
+    /** Animates the held server stroke from its start, at the course clock the server hit it at. */
+    private void startOnlineStroke() {
+        minigolf.online.RoomEvent e = held;
+        held = null;
+        ShotRecord r = e.stroke();
+        TrajectoryListener listener = feedback == null ? null
+                : feedback.stroke(game.world(), game.player(e.seat()).total() == 0, e.seat());
+        animator = new StrokeAnimator(new minigolf.physics.Stroke(game.world(), game.settings(), r.startX(), r.startY(),
+                r.vx(), r.vy(), r.vz(), r.clock(), listener, false), game.settings().dt());
+        rolling = e;
+        if (feedback != null) feedback.hit(Math.sqrt(r.vx() * r.vx() + r.vy() * r.vy() + r.vz() * r.vz()),
+                game.world().physics().maxSpeed());
     }
 
     /** Settles a server event on the round shown; true when it ended the hole (its card is due). */
@@ -443,9 +469,28 @@ final class PlaySession {
         return true;
     }
 
-    /** The course clock a stroke hit now would start at (moving obstacles: the aim guide shows that stroke). */
+    /**
+     * The course clock a stroke hit now would start at (moving obstacles: the aim guide shows that
+     * stroke): the game's; online the room's clock as this client reckons it (the server hits the
+     * stroke at its own reading when the shot arrives).
+     */
     double shotClock() {
+        if (online != null) return online.roomClock();
         return game == null ? 0 : game.clock();
+    }
+
+    /**
+     * The course clock the 3D view shows (moving obstacles): the rolling stroke's; online, a held
+     * stroke's clock less its wait yet, else the room's clock once everything the server sent is
+     * shown; else the game's, or the session's time with no game.
+     */
+    double viewClock() {
+        if (animator != null) return animator.clock();
+        if (online != null) {
+            if (held != null) return held.stroke().clock() - Math.max(0, heldLeft);
+            if (online.caughtUp()) return online.roomClock();
+        }
+        return game == null ? idleClock() : game.clock();
     }
 
     /** The view's course clock when no game is played (seconds since the session began). */
@@ -477,12 +522,13 @@ final class PlaySession {
         animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
     }
 
-    /** The bot thinking now stops and the rolling animation is dropped. */
+    /** The bot thinking now stops and the rolling animation is dropped, a server's stroke still waiting too. */
     private void stopPlay() {
         cancelBot();
         botTurn = null;
         botShot = null;
         animator = null;
         rolling = null;
+        held = null;
     }
 }
