@@ -68,6 +68,7 @@ public final class GameApp implements WindowApp {
     private NuklearLayer uiLayer;
     /** Silent until the window is open, and where there is no audio device. */
     private Sounds sounds;
+    private java.util.function.BooleanSupplier finishWhen = () -> false;
     /** Frames in a row that showed a final card (a scripted run stops after a few). */
     private int finalCardFrames;
     private BiConsumer<Integer, Window> loopHook = (pass, w) -> { };
@@ -165,7 +166,17 @@ public final class GameApp implements WindowApp {
     @Override
     public boolean finished(int framesDrawn) {
         // A new window takes its content size in its second frame: stop once the final card has been drawn.
-        return (options.frames() > 0 && framesDrawn >= options.frames()) || (options.exitWhenOver() && finalCardFrames >= 3);
+        return (options.frames() > 0 && framesDrawn >= options.frames()) || (options.exitWhenOver() && finalCardFrames >= 3)
+                || finishWhen.getAsBoolean();
+    }
+
+    /**
+     * Ends the run after the first frame drawn while {@code condition} holds (checked after the frame,
+     * so the frame shows that moment; the screenshot, if any, is of it): pictures of a moment such as
+     * a computer opponent thinking.
+     */
+    public void finishWhen(java.util.function.BooleanSupplier condition) {
+        finishWhen = condition;
     }
 
     @Override

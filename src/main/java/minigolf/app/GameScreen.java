@@ -50,12 +50,9 @@ abstract class GameScreen implements Screen {
         return views;
     }
 
-    /** The course clock the 3D view shows (moving obstacles): the rolling stroke's, else the game's. */
+    /** The course clock the 3D view shows (moving obstacles): PlaySession.viewClock. */
     double clock() {
-        Game game = app.play().game();
-        StrokeAnimator animator = app.play().animator();
-        if (animator != null) return animator.clock();
-        return game == null ? app.play().idleClock() : game.clock();
+        return app.play().viewClock();
     }
 
     /** Seat {@code seat}'s ball where it is (the rolling one where its animation has it); none once holed. */

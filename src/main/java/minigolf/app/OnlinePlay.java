@@ -43,6 +43,10 @@ final class OnlinePlay {
     private record Closed(OnlineClient client, String reason) {
     }
 
+    /** A message and when it arrived (RoomMirror.nowMs: the room's clock is reckoned from it). */
+    private record Arrived(ObjectNode message, long atMs) {
+    }
+
     /** Lines of chat and notices kept for the panel. */
     static final int CHAT_LINES = 8;
     /** Retries of a lost connection: 0.5 s, doubling to 8 s, for at most this long. */
@@ -94,7 +98,7 @@ final class OnlinePlay {
                 OnlineClient[] self = new OnlineClient[1];
                 OnlineClient c = OnlineClient.connect(entry.server(), new OnlineClient.Listener() {
                     public void onMessage(ObjectNode message) {
-                        inbox.add(message);
+                        inbox.add(new Arrived(message, RoomMirror.nowMs()));
                     }
 
                     public void onClosed(String reason) {
@@ -146,8 +150,8 @@ final class OnlinePlay {
                     client = null;
                     lost(c.reason());
                 }
-            } else {
-                take((ObjectNode) item);
+            } else if (item instanceof Arrived a) {
+                take(a.message(), a.atMs());
             }
         }
         // Whose turns the server passes over (dropped players), on the hole shown.
@@ -179,8 +183,8 @@ final class OnlinePlay {
         retryPause = Math.min(8000, retryPause * 2);
     }
 
-    private void take(ObjectNode m) {
-        RoomMirror.Update u = mirror.apply(m);
+    private void take(ObjectNode m, long atMs) {
+        RoomMirror.Update u = mirror.apply(m, atMs);
         switch (u.change()) {
             case JOINED -> {
                 if (m.hasNonNull("token")) seated.accept(mirror.room(), mirror.token());
@@ -251,6 +255,17 @@ final class OnlinePlay {
         for (int i = 0; i < before.players().size(); i++) after.game().passOver(i, before.isPassedOver(i));
         shown = after;
         return shown;
+    }
+
+    /** The room's course clock now, as this client reckons it from the server's messages. */
+    double roomClock() {
+        return mirror.clockAt(RoomMirror.nowMs());
+    }
+
+    /** Whether the round shown is on the hole the server is on with nothing left to show (the room's clock is this hole's). */
+    boolean caughtUp() {
+        return shown != null && mirror.round() != null && toShow.isEmpty() && !shown.isOver() && !mirror.round().isOver()
+                && shown.holeIndex() == mirror.round().holeIndex() && !shown.isHoleOver();
     }
 
     /** This seat may shoot now: its turn on the server, everything before it shown, no shot on its way. */

@@ -1,6 +1,7 @@
 package minigolf.app;
 
 import java.net.URI;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import minigolf.game.BotCatalog;
@@ -23,7 +24,11 @@ import static org.lwjgl.glfw.GLFW.GLFW_KEY_ESCAPE;
 final class OnlineScreen extends GameScreen {
     private final GuiString server = new GuiString(200);
     private final GuiString name = new GuiString(Player.MAX_NAME_LENGTH);
+    /** A name the server offers, typed (the last choice of the list). */
     private final GuiString course = new GuiString("meadowbrook-9", 64);
+    /** What can be hosted, by the names a player reads; the last entry is "another name", typed. */
+    private List<Offer> offers;
+    private final GuiInt offer = new GuiInt(0);
     private final int[] seats = {2};
     private final GuiInt[] others = new GuiInt[Protocol.MAX_SEATS];
     private final GuiBool listed = new GuiBool(true);
@@ -42,6 +47,36 @@ final class OnlineScreen extends GameScreen {
         if (server.get().isEmpty()) server.set(memory.server());
         if (name.get().isEmpty()) name.set(memory.name());
         formError = null;
+        if (offers == null) offers = offers(app.files().store());
+    }
+
+    /** A round or hole that can be hosted: the name a player reads, and the name the server knows it by. */
+    record Offer(String label, String serverName) {
+    }
+
+    /**
+     * The shipped rounds (in course select's order) and the shipped single holes, by the names a
+     * player reads; the server knows each by its file name (docs/online.md). The player's own rounds
+     * and courses are left out: a server offers only its own folder.
+     */
+    static List<Offer> offers(minigolf.game.SettingsStore store) {
+        List<Offer> out = new ArrayList<>();
+        Path own = store.directory().toAbsolutePath().normalize();
+        for (CourseFolders.RoundEntry r : CourseFolders.rounds(store)) {
+            if (r.file().toAbsolutePath().normalize().startsWith(own)) continue;
+            out.add(new Offer(r.round().name() + " (" + r.round().size() + " holes)", stem(r.file())));
+        }
+        for (CourseFolders.CourseEntry c : CourseFolders.list(store)) {
+            Path file = c.file().toAbsolutePath().normalize(), parent = file.getParent();
+            if (c.own() || file.startsWith(own) || parent == null || !parent.getFileName().toString().equals("holes")) continue;
+            out.add(new Offer(c.name() + " (one hole)", stem(c.file())));
+        }
+        return out;
+    }
+
+    private static String stem(Path file) {
+        String n = file.getFileName().toString();
+        return n.endsWith(".json") ? n.substring(0, n.length() - ".json".length()) : n;
     }
 
     @Override
@@ -54,9 +89,16 @@ final class OnlineScreen extends GameScreen {
         Gui.inputText("Your name", name);
         Gui.separator();
         Panels.heading("Host a room");
+        String[] choices = new String[offers.size() + 1];
+        for (int i = 0; i < offers.size(); i++) choices[i] = offers.get(i).label();
+        choices[offers.size()] = "Another (type its name)";
         Gui.setNextItemWidth(260);
-        Gui.inputText("Course or round", course);
-        Gui.textDisabled("a name the server offers: lake, 01-first-tee, meadowbrook-9, ...");
+        Gui.combo("Round or hole", offer, choices);
+        if (offer.get() >= offers.size()) {
+            Gui.setNextItemWidth(260);
+            Gui.inputText("Name", course);
+            Gui.textDisabled("a name the server offers: lake, 01-first-tee, meadowbrook-9, ...");
+        }
         Gui.sliderInt("Seats", seats, 1, Protocol.MAX_SEATS);
         List<String> levels = BotCatalog.names();
         String[] kinds = new String[levels.size() + 1];
@@ -104,9 +146,9 @@ final class OnlineScreen extends GameScreen {
         URI uri = serverUri();
         String n = playerName();
         if (uri == null || n == null) return;
-        String c = course.get().strip();
+        String c = offer.get() < offers.size() ? offers.get(offer.get()).serverName() : course.get().strip();
         if (!Protocol.COURSE_NAME.matcher(c).matches()) {
-            formError = "Course or round: a name such as lake or meadowbrook-9";
+            formError = "Name: one the server offers, such as lake or meadowbrook-9";
             return;
         }
         List<String> bots = new ArrayList<>();

@@ -74,7 +74,10 @@ public final class TrackConverter {
     private static final List<WallKind> WALLS = List.of(
             new WallKind("block", new int[]{PixelMap.BLOCK}, 0.81),
             new WallKind("sticky", new int[]{PixelMap.STICKY}, 0.05),
-            new WallKind("bouncy", new int[]{PixelMap.BOUNCY}, Obstacle.MAX_RESTITUTION),
+            // 1, not above: the original's bouncy wall stops giving speed after 100 bounces in a stroke;
+            // ours would give it for ever, and a downhill tile pushing the ball back at one bounced it
+            // until the stroke's time limit (10 minutes) on a sample track.
+            new WallKind("bouncy", new int[]{PixelMap.BOUNCY}, 1.0),
             new WallKind("movable", new int[]{PixelMap.MOVABLE, PixelMap.SINKABLE}, 0.8),
             new WallKind("brick", new int[]{40, 41, 42, 43}, 0.9));
 

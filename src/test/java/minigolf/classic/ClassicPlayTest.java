@@ -106,4 +106,28 @@ class ClassicPlayTest {
         assertTrue(back[0] < back[1] && back[1] < back[2], java.util.Arrays.toString(back));
         assertFalse(back[0] > 0.3, "sticky: " + back[0]);
     }
+
+    /**
+     * A downhill field that pushes the ball back into a bouncy wall: the ball bounces, climbs
+     * against the push, falls back and bounces again, losing speed each time, and comes to rest at
+     * the wall. With bouncy walls above restitution 1 (as first imported) every bounce gave back the
+     * fastest shot's speed and the ball bounced until the stroke's 10-minute limit (a sample track
+     * did so on every shot).
+     */
+    @Test
+    void aBallPushedIntoABouncyWallComesToRest() throws Exception {
+        int[] codes = Tracks.framed();
+        Tracks.set(codes, 44, 12, TileMap.GRASS);
+        Tracks.set(codes, 2, 22, TileMap.specialTile(1, PixelMap.GRASS)); // the hole out of the way
+        for (int y = 1; y < 24; y++) {
+            for (int x = 5; x <= 44; x++) Tracks.set(codes, x, y, TileMap.elementTile(0, PixelMap.DOWNHILL_N + 2, PixelMap.DOWNHILL_N + 2));
+            Tracks.set(codes, 45, y, TileMap.elementTile(0, PixelMap.BOUNCY, PixelMap.BOUNCY));
+        }
+        Simulator s = simulator(codes);
+        ShotResult r = east(s, s.world().course().start().x(), 1.0);
+        assertEquals(Outcome.STOPPED, r.outcome());
+        assertTrue(r.time() < 60, "came to rest after " + r.time() + " s");
+        // At the wall: x = 45 tiles less the ball's radius.
+        assertEquals(45 * 0.25 - s.world().course().physics().ballRadius(), r.endX(), 0.01);
+    }
 }

@@ -155,7 +155,7 @@ public final class HeadlessPlayer {
             }
             Arrived a = (Arrived) item;
             ObjectNode m = a.message();
-            RoomMirror.Update u = mirror.apply(m);
+            RoomMirror.Update u = mirror.apply(m, a.nanos() / 1_000_000);
             recent.add(m.path("type").asText() + (u.change() == RoomMirror.Change.OUT_OF_STEP || u.change() == RoomMirror.Change.ERROR
                     ? "(" + u.code() + ": " + u.text() + ")" : "") + "@" + mirror.seq());
             while (recent.size() > 8) recent.remove(0);
@@ -207,25 +207,29 @@ public final class HeadlessPlayer {
         Game g = mirror.round().game();
         int seat = mirror.seat();
         PlayerState p = g.player(seat);
-        double[] v = plan(options.level(), g, seat, p, mirror.room().hashCode() * 31L + mirror.seq());
+        // Planned for the room's clock as this client reckons it now; the server hits it at its own reading plus the wait.
+        double[] v = plan(options.level(), g, seat, p, mirror.room().hashCode() * 31L + mirror.seq(),
+                mirror.clockAt(RoomMirror.nowMs()));
         double ground = Math.hypot(v[0], v[1]);
         double speed = Math.sqrt(ground * ground + v[2] * v[2]);
         double loft = Math.min(Loft.MAX_DEGREES, Loft.degreesOf(v[0], v[1], v[2]));
         double ax = ground > 0 ? v[0] / ground * speed : 0, ay = ground > 0 ? v[1] / ground * speed : speed;
         if (timing != null) timing.shotSent(mirror.seq(), System.nanoTime());
-        client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, 0));
+        client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, v[3]));
     }
 
-    /** The bot's shot (vx, vy, vz) within the course's speed limit. */
-    static double[] plan(String level, Game g, int seat, PlayerState p, long seed) {
+    /** The bot's shot (vx, vy, vz) within the course's speed limit and its wait (s), planned at course clock {@code clock}. */
+    static double[] plan(String level, Game g, int seat, PlayerState p, long seed, double clock) {
         ShotPlanner planner = BotCatalog.planner(level);
         double max = g.world().physics().maxSpeed();
-        double[] v = planner.plan(g.world(), g.settings(), p.x(), p.y(), p.total(), seed, BotConditions.of(g, seat, false),
-                new BotControl());
-        double vz = v.length == 3 ? Math.max(0, v[2]) : 0;
+        BotConditions now = BotConditions.of(g, seat, false);
+        double[] v = planner.plan(g.world(), g.settings(), p.x(), p.y(), p.total(), seed,
+                new BotConditions(now.noise(), now.hideFriction(), now.ownStrokes(), clock), new BotControl());
+        double vz = v.length >= 3 ? Math.max(0, v[2]) : 0;
+        double wait = v.length == 4 ? Math.min(Protocol.MAX_WAIT_SECONDS, Math.max(0, v[3])) : 0;
         double speed = Math.sqrt(v[0] * v[0] + v[1] * v[1] + vz * vz);
         double k = speed > max ? max / speed : 1;
-        return new double[]{v[0] * k, v[1] * k, vz * k};
+        return new double[]{v[0] * k, v[1] * k, vz * k, wait};
     }
 
     private void connect(boolean first) throws Failure {

@@ -27,6 +27,9 @@ final class RoomMessages {
         if (room.startSave() != null) {
             // The round as it started and every event since: a client settles them as the server did.
             o.put("start", room.startSave());
+            // The room's course clock now, and how long it stands yet (a ball still rolls): clients run it on from here.
+            long now = room.now();
+            o.put("clock", room.clock().at(now)).put("clockRunsIn", room.clock().holdSeconds(now));
             ArrayNode events = o.putArray("events");
             for (String e : room.events()) events.addRawValue(new com.fasterxml.jackson.databind.util.RawValue(e));
         }
