@@ -163,7 +163,7 @@ abstract class GameScreen implements Screen {
         }
         StrokeAnimator animator = app.play().animator();
         PlayerState s = game.player(game.currentPlayer());
-        scene.follow(animator != null ? animator.x() : s.x(), animator != null ? animator.y() : s.y(), animator == null);
+        scene.follow(animator != null ? animator.x() : s.x(), animator != null ? animator.y() : s.y(), animator == null, dt);
     }
 
     /** A final card is shown (the game or the round is over): a scripted run that waits for it may end. */
