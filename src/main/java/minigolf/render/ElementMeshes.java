@@ -244,30 +244,10 @@ public final class ElementMeshes {
         }
     }
 
-    /** A flat ring of {@code width} at radius r, draped over the ground. */
+    /** A flat ring of {@code width} at radius r, draped over the ground (segments about 4 cm long). */
     static MeshData ring(double cx, double cy, double r, double width, DoubleBinaryOperator h, float[] c) {
         int segments = Math.max(24, (int) Math.ceil(2 * Math.PI * r / 0.04));
-        float[] v = new float[2 * segments * 9];
-        int p = 0;
-        for (int s = 0; s < segments; s++) {
-            double a = 2 * Math.PI * s / segments, cos = Math.cos(a), sin = Math.sin(a);
-            for (double rr : new double[] {r - width / 2, r + width / 2}) {
-                double x = cx + rr * cos, y = cy + rr * sin;
-                p = Shapes.putPnc(v, p, x, y, h.applyAsDouble(x, y) + 2 * LIFT, 0, 0, 1, c[0], c[1], c[2]);
-            }
-        }
-        int[] idx = new int[6 * segments];
-        int q = 0;
-        for (int s = 0; s < segments; s++) {
-            int a = 2 * s, b = 2 * ((s + 1) % segments);
-            idx[q++] = a;
-            idx[q++] = b;
-            idx[q++] = b + 1;
-            idx[q++] = a;
-            idx[q++] = b + 1;
-            idx[q++] = a + 1;
-        }
-        return new MeshData(MeshData.PNC, v, idx);
+        return Shapes.drapedRing(cx, cy, r - width / 2, r + width / 2, segments, h, 2 * LIFT, c[0], c[1], c[2]);
     }
 
     /**
