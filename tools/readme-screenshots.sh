@@ -18,14 +18,17 @@ run() {
 # 1. Hot seat: three balls side by side at the tee of the windmill hole, Ann's ringed, name tags.
 run play courses/holes/03-windmill.json --players Ann,Bob,Cy --frames 90 --screenshot "$out/hot-seat.png" > /dev/null
 # 2. A computer opponent's turn: Hard has teed off on the volcano, its ball rolling with its trail
-#    (the levels think for a moment only: their "thinking" bar is gone by the eighth frame).
-run play courses/holes/07-volcano.json --players Bot:hard,Ann --frames 8 --screenshot "$out/bot-turn.png" > /dev/null
+#    (a bot's turn shows "... is thinking" for at least 0.8 s, then it strokes).
+run play courses/holes/07-volcano.json --players Bot:hard,Ann --frames 16 --screenshot "$out/bot-turn.png" > /dev/null
 # 2b. New game: Meadowbrook's 18 holes, Ann and Bob, and a computer opponent with its four levels.
 run_java() {
     if [ -n "${DISPLAY:-}" ]; then java $JAVA_OPTS "$@"; else xvfb-run -a -s "-screen 0 1600x1000x24" java $JAVA_OPTS "$@"; fi
 }
 run_java -cp "build/classes/java/test:build/classes/java/main:build/resources/main:build/install/minigolf/lib/*" \
     minigolf.app.NewGameScreenshot "$out/new-game.png" > /dev/null
+# 2c. A computer opponent thinking: Ann has putted on the first tee, Hard's turn (docs/playing.md).
+run_java -cp "build/classes/java/test:build/classes/java/main:build/resources/main:build/install/minigolf/lib/*" \
+    minigolf.app.BotThinkingScreenshot "$out/bot-thinking.png" > /dev/null
 # 3. The final card of Meadowbrook's 18 holes, Hard against Medium (the run ends at the card).
 run play --round courses/rounds/meadowbrook-18.json --players Bot:hard,Bot:medium --frames 200000 --time-scale 40 \
     --screenshot "$out/final-card-18.png"

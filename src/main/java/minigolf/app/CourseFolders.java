@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -30,8 +31,25 @@ final class CourseFolders {
     record RoundEntry(minigolf.game.Round round, Path file) {
     }
 
-    /** The rounds in {@code rounds/} beside the shipped courses and in {@code <config>/rounds}; rounds that do not load are left out. */
+    /**
+     * The rounds in {@code rounds/} beside the shipped courses, then those in {@code <config>/rounds},
+     * each group in the order a player reads them: the shorter rounds first, then by name ("Meadowbrook
+     * Front Nine", then "Frostkeep", "Gull Bay", ...), not by file name. Rounds that do not load are left out.
+     */
     static List<RoundEntry> rounds(SettingsStore store) {
+        List<RoundEntry> all = roundFiles(store);
+        Path own = store.directory().resolve("rounds").toAbsolutePath().normalize();
+        List<RoundEntry> out = new ArrayList<>(all.stream().filter(r -> !r.file().toAbsolutePath().normalize().startsWith(own))
+                .sorted(PLAYER_ORDER).toList());
+        out.addAll(all.stream().filter(r -> r.file().toAbsolutePath().normalize().startsWith(own)).sorted(PLAYER_ORDER).toList());
+        return out;
+    }
+
+    /** Shorter rounds first, then by name (case aside). */
+    private static final Comparator<RoundEntry> PLAYER_ORDER = Comparator.<RoundEntry>comparingInt(r -> r.round().size())
+            .thenComparing(r -> r.round().name(), String.CASE_INSENSITIVE_ORDER);
+
+    private static List<RoundEntry> roundFiles(SettingsStore store) {
         List<Path> dirs = new ArrayList<>();
         for (Path d : shippedFolders()) dirs.add(d.resolve("rounds"));
         dirs.add(store.directory().resolve("rounds"));

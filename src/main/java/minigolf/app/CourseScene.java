@@ -177,15 +177,16 @@ final class CourseScene implements AutoCloseable {
 
     /**
      * The camera glides after the point (x, y) on the ground (the ball in play); once the balls
-     * are at rest after a stroke it swings round behind it, looking at the hole.
+     * are at rest after a stroke it swings round behind it, looking at the hole. {@code dt}: seconds
+     * since the last frame, so the glide takes as long at 20 frames a second as at 144.
      */
-    void follow(double x, double y, boolean atRest) {
+    void follow(double x, double y, boolean atRest, float dt) {
         leaveOverview();
         if (playerMoves) return;
         World world = built;
         followTarget.set((float) x, (float) y, (float) world.terrain().height(x, y));
         Vector3f t = camera.target();
-        t.lerp(followTarget, 0.12f);
+        t.lerp(followTarget, glide(0.12f, dt));
         camera.setTarget(t);
         if (turnToHole && atRest) {
             double hx = world.hole().position().x() - x, hy = world.hole().position().y() - y;
@@ -194,9 +195,18 @@ final class CourseScene implements AutoCloseable {
                 return;
             }
             double want = Math.atan2(-hy, -hx), delta = Math.IEEEremainder(want - camera.yaw(), 2 * Math.PI);
-            camera.rotate((float) (delta * 0.1), 0);
+            camera.rotate((float) (delta * glide(0.1f, dt)), 0);
             if (Math.abs(delta) < 0.005) turnToHole = false;
         }
+    }
+
+    /**
+     * The share of the way left that a glide covers in {@code dt} seconds, when it covers
+     * {@code perFrame} of it in one frame at 60 frames a second: the same glide at any frame rate
+     * (it used to move {@code perFrame} a frame, so a slow machine's camera lagged seconds behind).
+     */
+    static float glide(float perFrame, float dt) {
+        return (float) (1 - Math.pow(1 - perFrame, Math.max(0, dt) * 60));
     }
 
     /** The camera stays where it is (menus over the course). */

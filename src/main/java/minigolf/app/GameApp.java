@@ -45,9 +45,11 @@ public final class GameApp implements WindowApp {
     /** The game's screens, each made once: a form keeps what was typed into it. */
     public record Screens(MainMenuScreen mainMenu, CourseSelectScreen courseSelect, NewGameScreen newGame,
                           PlayingScreen playing, TestBotScreen testBot, PauseScreen pause, SettingsScreen settings,
-                          ScorecardScreen scorecard, RoundCardScreen roundCard, ReplayScreen replay, HelpScreen help) {
+                          ScorecardScreen scorecard, RoundCardScreen roundCard, ReplayScreen replay, HelpScreen help,
+                          OnlineScreen online, LobbyScreen lobby) {
         List<Screen> all() {
-            return List.of(mainMenu, courseSelect, newGame, playing, testBot, pause, settings, scorecard, roundCard, replay, help);
+            return List.of(mainMenu, courseSelect, newGame, playing, testBot, pause, settings, scorecard, roundCard, replay, help,
+                    online, lobby);
         }
     }
 
@@ -66,9 +68,13 @@ public final class GameApp implements WindowApp {
     private NuklearLayer uiLayer;
     /** Silent until the window is open, and where there is no audio device. */
     private Sounds sounds;
+    private java.util.function.BooleanSupplier finishWhen = () -> false;
     /** Frames in a row that showed a final card (a scripted run stops after a few). */
     private int finalCardFrames;
     private BiConsumer<Integer, Window> loopHook = (pass, w) -> { };
+    /** An online room to enter as soon as the window is open (the command line), or null. */
+    private OnlinePlay.Entry onlineStart;
+    private java.util.function.Consumer<String> roomCodeListener = code -> { };
 
     public GameApp(World world, Options options) {
         this.options = options;
@@ -81,7 +87,8 @@ public final class GameApp implements WindowApp {
         this.play = new PlaySession(world, options.coursePath(), options.scriptedShots(), files, this::say);
         this.screens = new Screens(new MainMenuScreen(this), new CourseSelectScreen(this), new NewGameScreen(this),
                 new PlayingScreen(this), new TestBotScreen(this), new PauseScreen(this), new SettingsScreen(this),
-                new ScorecardScreen(this), new RoundCardScreen(this), new ReplayScreen(this), new HelpScreen(this));
+                new ScorecardScreen(this), new RoundCardScreen(this), new ReplayScreen(this), new HelpScreen(this),
+                new OnlineScreen(this), new LobbyScreen(this));
         this.host = new ScreenHost(screens.mainMenu());
     }
 
@@ -117,6 +124,7 @@ public final class GameApp implements WindowApp {
                 });
                 try {
                     if (options.startPlayers() != null) startGame(options.startPlayers());
+                    if (onlineStart != null) startOnline(onlineStart);
                     new WindowLoop(window, this).screenshot(options.screenshot()).onPass(loopHook).run();
                 } finally {
                     play.cancelBot();
@@ -158,7 +166,17 @@ public final class GameApp implements WindowApp {
     @Override
     public boolean finished(int framesDrawn) {
         // A new window takes its content size in its second frame: stop once the final card has been drawn.
-        return (options.frames() > 0 && framesDrawn >= options.frames()) || (options.exitWhenOver() && finalCardFrames >= 3);
+        return (options.frames() > 0 && framesDrawn >= options.frames()) || (options.exitWhenOver() && finalCardFrames >= 3)
+                || finishWhen.getAsBoolean();
+    }
+
+    /**
+     * Ends the run after the first frame drawn while {@code condition} holds (checked after the frame,
+     * so the frame shows that moment; the screenshot, if any, is of it): pictures of a moment such as
+     * a computer opponent thinking.
+     */
+    public void finishWhen(java.util.function.BooleanSupplier condition) {
+        finishWhen = condition;
     }
 
     @Override
@@ -313,6 +331,17 @@ public final class GameApp implements WindowApp {
         setScreen(screens.playing());
     }
 
+    /** Enters a room on a game server (its lobby, then play); the seat is remembered for a resume. */
+    void startOnline(OnlinePlay.Entry entry) {
+        java.nio.file.Path memoryFile = OnlineMemory.file(files.store().directory());
+        play.startOnline(new OnlinePlay(entry, this::say, (room, token) -> {
+            // The server and name the seat was taken with (the command line's may differ from the screen's last).
+            OnlineMemory.seat(entry, room, token).save(memoryFile);
+            roomCodeListener.accept(room);
+        }));
+        setScreen(screens.lobby());
+    }
+
     /** Play ends; the main menu. */
     public void toMainMenu() {
         play.end();
@@ -410,6 +439,16 @@ public final class GameApp implements WindowApp {
      */
     public void showAim(double vx, double vy, int loftDegrees) {
         screens.playing().showAim(vx, vy, loftDegrees);
+    }
+
+    /**
+     * Enters an online room as soon as the window opens (before {@link #run()}); {@code roomCode}
+     * hears the room's code when the seat is taken (the command line prints it).
+     */
+    public void playOnline(java.net.URI server, String name, String create, int seats, List<String> bots, String room,
+                           java.util.function.Consumer<String> roomCode) {
+        onlineStart = new OnlinePlay.Entry(server, name, create, seats, bots, true, room, null);
+        roomCodeListener = roomCode;
     }
 
     /** Sets what runs at the start of every pass of the render loop (for tests: resize, minimise, close). */

@@ -50,12 +50,9 @@ abstract class GameScreen implements Screen {
         return views;
     }
 
-    /** The course clock the 3D view shows (moving obstacles): the rolling stroke's, else the game's. */
+    /** The course clock the 3D view shows (moving obstacles): PlaySession.viewClock. */
     double clock() {
-        Game game = app.play().game();
-        StrokeAnimator animator = app.play().animator();
-        if (animator != null) return animator.clock();
-        return game == null ? app.play().idleClock() : game.clock();
+        return app.play().viewClock();
     }
 
     /** Seat {@code seat}'s ball where it is (the rolling one where its animation has it); none once holed. */
@@ -67,7 +64,8 @@ abstract class GameScreen implements Screen {
     /** Seat {@code seat}'s ball as drawn, or null when it is in the cup. */
     BallView ball(Game game, int seat) {
         StrokeAnimator animator = app.play().animator();
-        boolean moving = game.isShotInFlight() && game.currentPlayer() == seat && animator != null;
+        // Online, the server's stroke is animated on the game as it was before it (no shot in flight there).
+        boolean moving = app.play().rollingSeat() == seat && animator != null;
         PlayerState s = game.player(seat);
         if (s.status() == PlayerStatus.HOLED && !moving) return null;
         World world = course();
@@ -80,14 +78,15 @@ abstract class GameScreen implements Screen {
     /** The ball rolling now (its trail is drawn), or null. */
     BallView rolling() {
         Game game = app.play().game();
-        if (game == null || !game.isShotInFlight() || app.play().animator() == null) return null;
-        return ball(game, game.currentPlayer());
+        int seat = app.play().rollingSeat();
+        if (game == null || seat < 0 || app.play().animator() == null) return null;
+        return ball(game, seat);
     }
 
     /** The ball ringed as the one to play (at rest, while the game goes on), or null. */
     BallView marker() {
         Game game = app.play().game();
-        if (game == null || game.isOver() || game.isShotInFlight() || game.currentPlayer() < 0) return null;
+        if (game == null || game.isOver() || app.play().rollingSeat() >= 0 || game.currentPlayer() < 0) return null;
         return ball(game, game.currentPlayer());
     }
 
@@ -164,7 +163,7 @@ abstract class GameScreen implements Screen {
         }
         StrokeAnimator animator = app.play().animator();
         PlayerState s = game.player(game.currentPlayer());
-        scene.follow(animator != null ? animator.x() : s.x(), animator != null ? animator.y() : s.y(), animator == null);
+        scene.follow(animator != null ? animator.x() : s.x(), animator != null ? animator.y() : s.y(), animator == null, dt);
     }
 
     /** A final card is shown (the game or the round is over): a scripted run that waits for it may end. */

@@ -90,13 +90,14 @@ final class Hud {
         BotTurn bot = play.botTurn();
         if (bot != null) {
             PlanOverlay.draw(Gui.getBackgroundDrawList(), bot.plan(), p -> app.toScreen(p[0], p[1]));
-            Gui.setNextWindowPos(w * 0.5f, h - 60, GuiCond.Always, 0.5f, 1f);
+            // At the top: at the bottom it hid the bot's own ball at the tee.
+            Gui.setNextWindowPos(w * 0.5f, 12, GuiCond.Always, 0.5f, 0f);
             Gui.begin("##bot", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
             Game game = play.game();
             String who = game != null && game.currentPlayer() >= 0 ? game.players().get(game.currentPlayer()).name() : "The bot";
             // The bot's phase and simulations are for practice mode; a player sees that it is thinking.
-            Gui.text(who + " is thinking" + (app.settings().practice() ? ": " + bot.message() : "..."));
-            Gui.progressBar((float) bot.progress(), 320, 0);
+            Gui.text(who + " is thinking" + (app.settings().practice() ? ": " + bot.message() : "\u2026"));
+            Gui.progressBar((float) play.botProgress(), 320, 0);
             Gui.sameLine();
             if (Gui.button("Cancel")) play.cancelBot();
             Gui.end();

@@ -29,6 +29,7 @@ final class MainMenuScreen extends GameScreen {
         Gui.separator();
         float bw = 300, bh = 0;
         if (Gui.button("Play", bw, bh)) app.setScreen(app.screens().newGame());
+        if (Gui.button("Play online", bw, bh)) app.setScreen(app.screens().online());
         if (Gui.button("Rounds and practice holes", bw, bh)) app.setScreen(app.screens().courseSelect());
         // Watch an opponent play the hole alone: the levels; in practice mode every bot by its algorithm's name.
         List<String> botNames = app.settings().practice() ? BotCatalog.names() : BotCatalog.levels();

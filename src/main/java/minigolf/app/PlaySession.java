@@ -74,7 +74,23 @@ final class PlaySession {
     private final long idleStart = System.nanoTime();
     /** One bot per player per hole, so the planner's memory lasts across its strokes. */
     private final BotSeats botSeats = new BotSeats();
+    /**
+     * The least time (s of play) a computer opponent's turn shows "... is thinking" before its stroke:
+     * the levels decide within a frame or two, too soon for a player to see whose turn it is.
+     */
+    static final double MIN_THINKING_SECONDS = 0.8;
+    /** How long the bot now to play has been thinking (s of play). */
+    private double botThinking;
+    /** The bots' seed for this game or round (BotTurn.seed), drawn afresh when one starts or is resumed. */
+    private long botSeed = System.nanoTime();
     private ShotRecord lastStroke;
+    /** A room on a game server being played instead of a local game, or null. */
+    private OnlinePlay online;
+    /** The server's stroke being animated (online), or null. */
+    private minigolf.online.RoomEvent rolling;
+    /** A server's stroke whose wait is still running before it is animated (online), and how long yet (s). */
+    private minigolf.online.RoomEvent held;
+    private double heldLeft;
 
     PlaySession(World world, Path coursePath, List<double[]> script, PlayerFiles files, Consumer<String> say) {
         this.world = world;
@@ -123,6 +139,11 @@ final class PlaySession {
         return botTurn;
     }
 
+    /** How far the bot now to play is, 0 to 1: its own progress, but never ahead of its least thinking time. */
+    double botProgress() {
+        return botTurn == null ? 0 : Math.min(botTurn.progress(), botThinking / MIN_THINKING_SECONDS);
+    }
+
     /** The stroke that ended last. */
     ShotRecord lastStroke() {
         return lastStroke;
@@ -130,6 +151,7 @@ final class PlaySession {
 
     /** A human player is to play and no ball rolls. */
     boolean humanToPlay() {
+        if (online != null) return animator == null && held == null && online.canShoot();
         return game != null && !game.isShotInFlight() && !game.isOver() && game.currentPlayer() >= 0
                 && !game.players().get(game.currentPlayer()).isBot();
     }
@@ -137,6 +159,8 @@ final class PlaySession {
     /** A game or a hole of a round for these players: the chosen round, else the chosen course. */
     void start(List<Player> players, UserSettings s) {
         stopPlay();
+        closeOnline();
+        botSeed = System.nanoTime();
         if (roundToPlay != null) {
             round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
             showHole();
@@ -179,6 +203,7 @@ final class PlaySession {
     void selectCourse(Path file, String scoreKey) throws CourseException {
         World w = World.load(file);
         stopPlay();
+        closeOnline();
         world = w;
         coursePath = file;
         classicKey = scoreKey;
@@ -193,6 +218,8 @@ final class PlaySession {
         try {
             SavedRounds.AnySave save = SavedRounds.loadAny(file);
             stopPlay();
+            closeOnline();
+            botSeed = System.nanoTime();
             if (save.round() != null) {
                 round = save.round();
                 roundToPlay = round.round();
@@ -220,9 +247,10 @@ final class PlaySession {
         if (game != null) files.save(game, round);
     }
 
-    /** Play ends (back to the menu): the bot stops, nothing is in play. */
+    /** Play ends (back to the menu): the bot stops, nothing is in play; an online seat is kept for a resume. */
     void end() {
         stopPlay();
+        closeOnline();
         game = null;
         round = null;
     }
@@ -235,6 +263,12 @@ final class PlaySession {
             say.accept(problem);
             return;
         }
+        if (online != null) {
+            // The server plays the stroke; it is animated when it comes back.
+            if (animator != null || held != null || !online.canShoot()) return;
+            online.shoot(vx, vy, vz);
+            return;
+        }
         int seat = game.currentPlayer();
         boolean firstStroke = game.player(seat).total() == 0;
         TrajectoryListener listener = feedback == null ? null : feedback.stroke(game.world(), firstStroke, seat);
@@ -244,6 +278,7 @@ final class PlaySession {
 
     /** Runs the rolling stroke to its end at once (SPACE): the same stroke, no animation. */
     void skipAnimation() {
+        if (held != null) startOnlineStroke();
         if (animator == null) return;
         while (!animator.isFinished()) animator.advance(1e9, 1);
     }
@@ -254,6 +289,7 @@ final class PlaySession {
      * thread) or its answer hit, a scripted stroke is hit.
      */
     Progress advance(double elapsed, double timeScale, boolean hideFrictionFromBots) {
+        if (online != null) return advanceOnline(elapsed, timeScale);
         if (game == null) return Progress.NONE;
         Progress progress = Progress.NONE;
         if (animator != null) {
@@ -301,8 +337,10 @@ final class PlaySession {
                 }
                 PlayerState s = game.player(seat);
                 botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
-                        31L * game.history().size() + seat, BotConditions.of(game, seat, hideFrictionFromBots));
-            } else if (botTurn.isDone()) {
+                        BotTurn.seed(botSeed, round == null ? 0 : round.holeIndex(), game.history().size(), seat),
+                        BotConditions.of(game, seat, hideFrictionFromBots));
+                botThinking = 0;
+            } else if ((botThinking += elapsed * timeScale) >= MIN_THINKING_SECONDS && botTurn.isDone()) {
                 BotTurn done = botTurn;
                 botTurn = null;
                 if (done.shot() != null && done.waitSeconds() > 0) {
@@ -320,6 +358,139 @@ final class PlaySession {
             hit(v[0], v[1], v.length > 2 ? v[2] : 0);
         }
         return progress;
+    }
+
+    /** Plays a room on a game server from now on (its lobby first). */
+    void startOnline(OnlinePlay room) {
+        stopPlay();
+        closeOnline();
+        online = room;
+        round = null;
+        game = null;
+    }
+
+    /** Leaves the online room's connection (its seat is kept for a resume). */
+    private void closeOnline() {
+        if (online != null) online.close();
+        online = null;
+    }
+
+    /** The online room being played, or null. */
+    OnlinePlay online() {
+        return online;
+    }
+
+    /** A server's stroke is waiting out its wait before it rolls (online). */
+    boolean onlineStrokeWaiting() {
+        return held != null;
+    }
+
+    /** The seat whose ball is rolling in the animation, or -1. */
+    int rollingSeat() {
+        if (rolling != null) return rolling.seat();
+        return game != null && game.isShotInFlight() ? game.currentPlayer() : -1;
+    }
+
+    /**
+     * One pass of online play: what the server sent is taken in; its strokes are animated one after
+     * the other with the engine, each settled where the server put the ball; scripted strokes are
+     * sent when it is this seat's turn. The next hole starts when the player leaves the hole's card.
+     */
+    private Progress advanceOnline(double elapsed, double timeScale) {
+        online.poll();
+        if (online.takeResync()) {
+            animator = null;
+            rolling = null;
+            held = null;
+            round = online.shown();
+            if (round != null) {
+                showHole();
+                // A round that comes over already (a resume after the end): its card.
+                if (round.isOver()) return Progress.OVER;
+            }
+        }
+        if (round == null) return Progress.NONE;
+        Progress progress = Progress.NONE;
+        if (held != null) {
+            // The stroke's wait runs on the room's clock before the ball is hit.
+            heldLeft -= elapsed * timeScale;
+            if (heldLeft > 0) return progress;
+            startOnlineStroke();
+            return progress;
+        }
+        if (animator != null) {
+            animator.advance(elapsed, timeScale);
+            if (!animator.isFinished()) return progress;
+            minigolf.online.RoomEvent e = rolling;
+            animator = null;
+            rolling = null;
+            lastStroke = e.stroke();
+            boolean holeOver = settleOnline(e);
+            // The same news as hot seat's, told on the settled game (where the server put the ball).
+            say.accept(StrokeNews.of(lastStroke, game.player(e.seat()), game.players().get(e.seat()).name(),
+                    game.players().size() > 1, round.hole().par(), world.hole().position().x(), world.hole().position().y()));
+            if (holeOver) return Progress.OVER;
+            progress = Progress.STROKE_ENDED;
+        }
+        minigolf.online.RoomEvent e = online.nextEvent();
+        if (e != null && e.isPickUp()) {
+            if (settleOnline(e)) return Progress.OVER;
+        } else if (e != null) {
+            held = e;
+            heldLeft = e.waitSeconds();
+            if (heldLeft <= 0) startOnlineStroke();
+        } else if (!script.isEmpty() && online.canShoot()) {
+            double[] v = script.poll();
+            hit(v[0], v[1], v.length > 2 ? v[2] : 0);
+        }
+        return progress;
+    }
+
+    /** Animates the held server stroke from its start, at the course clock the server hit it at. */
+    private void startOnlineStroke() {
+        minigolf.online.RoomEvent e = held;
+        held = null;
+        ShotRecord r = e.stroke();
+        TrajectoryListener listener = feedback == null ? null
+                : feedback.stroke(game.world(), game.player(e.seat()).total() == 0, e.seat());
+        animator = new StrokeAnimator(new minigolf.physics.Stroke(game.world(), game.settings(), r.startX(), r.startY(),
+                r.vx(), r.vy(), r.vz(), r.clock(), listener, false), game.settings().dt());
+        rolling = e;
+        if (feedback != null) feedback.hit(Math.sqrt(r.vx() * r.vx() + r.vy() * r.vy() + r.vz() * r.vz()),
+                game.world().physics().maxSpeed());
+    }
+
+    /** Settles a server event on the round shown; true when it ended the hole (its card is due). */
+    private boolean settleOnline(minigolf.online.RoomEvent e) {
+        round = online.settle(e);
+        game = round.game();
+        if (!game.isOver()) return false;
+        files.recordScores(round, round.finishHole());
+        return true;
+    }
+
+    /**
+     * The course clock a stroke hit now would start at (moving obstacles: the aim guide shows that
+     * stroke): the game's; online the room's clock as this client reckons it (the server hits the
+     * stroke at its own reading when the shot arrives).
+     */
+    double shotClock() {
+        if (online != null) return online.roomClock();
+        return game == null ? 0 : game.clock();
+    }
+
+    /**
+     * The course clock the 3D view shows (moving obstacles): the rolling stroke's; online, a held
+     * stroke's clock less its wait yet, else the room's clock once everything the server sent is
+     * shown; else the game's, or the session's time with no game.
+     */
+    double viewClock() {
+        if (animator != null) return animator.clock();
+        if (online != null) {
+            if (held != null) return held.stroke().clock() - Math.max(0, heldLeft);
+            if (online.caughtUp()) return online.roomClock();
+        }
+        return game == null ? idleClock() : game.clock();
     }
 
     /** The view's course clock when no game is played (seconds since the session began). */
@@ -351,11 +522,13 @@ final class PlaySession {
         animator = game.isShotInFlight() ? new StrokeAnimator(game.activeStroke(), game.settings().dt()) : null;
     }
 
-    /** The bot thinking now stops and the rolling animation is dropped. */
+    /** The bot thinking now stops and the rolling animation is dropped, a server's stroke still waiting too. */
     private void stopPlay() {
         cancelBot();
         botTurn = null;
         botShot = null;
         animator = null;
+        rolling = null;
+        held = null;
     }
 }

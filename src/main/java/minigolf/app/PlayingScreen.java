@@ -43,6 +43,8 @@ class PlayingScreen extends GameScreen {
     private final GuiDouble typedVx = new GuiDouble(1.0);
     private final GuiDouble typedVy = new GuiDouble(0.0);
     private final GuiDouble typedVz = new GuiDouble(0.0);
+    /** The chat and connection panel of an online room. */
+    private final OnlinePanel onlinePanel = new OnlinePanel();
 
     PlayingScreen(GameApp app) {
         super(app);
@@ -94,6 +96,7 @@ class PlayingScreen extends GameScreen {
         nameTags();
         app.hud().render(w, h, aimSpeed(), loft);
         if (showsShotPanel()) shotPanel(w, h);
+        if (app.play().online() != null) onlinePanel.render(app.play().online(), w, h);
     }
 
     /** The typed-velocity Shot panel is lab furniture: practice mode only, on a person's turn. */
@@ -157,10 +160,11 @@ class PlayingScreen extends GameScreen {
      * The aim guide (AimGuide: the real engine, the game's settings, a chip's flight too), the whole
      * putt until it stops or drops: worked out on the guide's own thread, so a frame never waits for
      * it; until the new aim's path is ready the last one shows (the same array, so the arrow is not rebuilt).
+     * Where obstacles move it is the stroke hit now, at the clock a release would start it at.
      */
     private float[] guidePath(Game game, double x, double y, double[] v) {
         if (guides == null) guides = new AimGuideWorker();
-        AimGuide g = guides.guide(game.world(), game.settings(), x, y, v[0], v[1], v[2]);
+        AimGuide g = guides.guide(game.world(), game.settings(), x, y, v[0], v[1], v[2], app.play().shotClock());
         return g == null ? null : g.points();
     }
 

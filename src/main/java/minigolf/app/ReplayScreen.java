@@ -116,7 +116,7 @@ final class ReplayScreen extends GameScreen {
     @Override
     void directCamera(CourseScene scene, float dt, float aspect) {
         StrokeAnimator a = replayer.animator();
-        if (a != null) scene.follow(a.x(), a.y(), false);
+        if (a != null) scene.follow(a.x(), a.y(), false, dt);
         else scene.hold();
     }
 

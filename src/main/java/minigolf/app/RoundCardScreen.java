@@ -78,7 +78,10 @@ final class RoundCardScreen extends GameScreen {
                 app.toMainMenu();
             }
         } else {
-            if (Gui.button("Play again", 160, 0)) app.setScreen(app.screens().newGame());
+            // After an online round, another room on the server rather than a hot-seat game.
+            if (Gui.button("Play again", 160, 0)) {
+                app.setScreen(app.play().online() != null ? app.screens().online() : app.screens().newGame());
+            }
             Gui.sameLine();
             if (Gui.button("Main menu", 160, 0)) app.toMainMenu();
         }

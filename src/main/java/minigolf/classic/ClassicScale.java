@@ -20,6 +20,8 @@ public record ClassicScale(double tile) {
     public static final double MAX_TICK_SPEED = 6.5;
     /** The original's push of a downhill tile, px/tick per tick. */
     public static final double DOWNHILL_PUSH = 0.025;
+    /** The original's magnet: its reach (px) and pull per px inside the rim (px/tick² per px). */
+    public static final double MAGNET_PIXELS = 127, MAGNET_PULL = 0.0005;
     /** The ball's diameter in pixels. */
     public static final double BALL_PIXELS = 13;
     /** Distance (in px, times (1 - a)) the fastest shot rolls: ln 4 / (0.75 / 6.5). */
@@ -57,6 +59,19 @@ public record ClassicScale(double tile) {
     /** A downhill tile's push, m/s². */
     public double downhillPush() {
         return DOWNHILL_PUSH * pixel() / (TICK * TICK);
+    }
+
+    /**
+     * The strength (m/s², {@link minigolf.course.Magnet}) of a magnet as deep as the original's:
+     * the original pulls with 0.0005 (127 - d) px/tick² per px of distance d left to the rim,
+     * split between the axes as (|cos|, 1 - |cos|) of the direction, (1/2 + 1/π) of that towards
+     * the centre on average; a ball climbing out from the centre loses (1/2 + 1/π) 0.0005 127² / 2
+     * px²/tick² of speed squared over two. Our magnet's profile (zero at the centre, strongest at R/3)
+     * loses strength R 9/16 of it, so the two hold a ball alike (docs/classic-tracks.md).
+     */
+    public double magnetStrength() {
+        double depth = (0.5 + 1 / Math.PI) * MAGNET_PULL * MAGNET_PIXELS * MAGNET_PIXELS / 2; // px²/tick²
+        return depth / (MAGNET_PIXELS * 9.0 / 16) * pixel() / (TICK * TICK);
     }
 
     public double width() {

@@ -44,6 +44,15 @@ public final class PixelMap {
         return values[x + WIDTH * y];
     }
 
+    /** Which pixels (index x + WIDTH y) hold one of {@code values}. */
+    public boolean[] where(int... values) {
+        boolean[] set = new boolean[WIDTH * HEIGHT];
+        for (int i = 0; i < set.length; i++) {
+            for (int v : values) set[i] |= this.values[i] == v;
+        }
+        return set;
+    }
+
     /** The pixel value of one tile's pixel (x, y), 0..14 each, as the original computes it. */
     public static int pixel(int code, int x, int y, ShapeMasks masks) {
         int kind = TileMap.kind(code), shape = TileMap.shape(code), first = TileMap.first(code);

@@ -74,6 +74,9 @@ public final class TrackConverter {
     private static final List<WallKind> WALLS = List.of(
             new WallKind("block", new int[]{PixelMap.BLOCK}, 0.81),
             new WallKind("sticky", new int[]{PixelMap.STICKY}, 0.05),
+            // 1, not above: the original's bouncy wall stops giving speed after 100 bounces in a stroke;
+            // ours would give it for ever, and a downhill tile pushing the ball back at one bounced it
+            // until the stroke's time limit (10 minutes) on a sample track.
             new WallKind("bouncy", new int[]{PixelMap.BOUNCY}, 1.0),
             new WallKind("movable", new int[]{PixelMap.MOVABLE, PixelMap.SINKABLE}, 0.8),
             new WallKind("brick", new int[]{40, 41, 42, 43}, 0.9));
@@ -160,33 +163,28 @@ public final class TrackConverter {
         for (Vec2[] e : new Vec2[][]{{a, b}, {b, c}, {c, d}, {d, a}}) {
             obstacles.add(new Obstacle.Wall(e[0], e[1], 0, top, 0));
         }
+        ClassicElements elements = ClassicElements.of(track, map, scale, top, List.of(first, hole));
+        obstacles.addAll(elements.gates);
+        notes.addAll(elements.notes);
         noteUnsupported(map, notes);
         Course course = new Course(Course.FORMAT, track.name(), new TerrainSpec.HeightExpression("0"),
-                new Bounds(0, 0, width, height), physics, first, cup, zones, obstacles);
+                new Bounds(0, 0, width, height), physics, first, cup, zones, obstacles)
+                .withElements(elements.pushZones, elements.magnets, elements.teleports);
         return new Converted(course, files, List.copyOf(notes));
     }
 
     /** Elements the course does not play as the original yet (docs/classic-tracks.md lists them). */
     private static void noteUnsupported(PixelMap map, List<String> notes) {
-        boolean downhill = false, oneWay = false, teleport = false, magnet = false, mine = false, movable = false,
-                brick = false, illusion = false;
+        boolean mine = false, movable = false, brick = false, illusion = false;
         for (int y = 0; y < PixelMap.HEIGHT; y++) {
             for (int x = 0; x < PixelMap.WIDTH; x++) {
                 int v = map.at(x, y);
-                downhill |= v >= PixelMap.DOWNHILL_N && v <= PixelMap.DOWNHILL_NW;
-                oneWay |= v >= PixelMap.ONE_WAY_N && v <= PixelMap.ONE_WAY_W;
-                teleport |= v >= PixelMap.TELEPORT_BLUE && v <= PixelMap.TELEPORT_GREEN;
-                magnet |= v == PixelMap.MAGNET;
                 mine |= v == PixelMap.MINE || v == PixelMap.BIG_MINE;
                 movable |= v == PixelMap.MOVABLE || v == PixelMap.SINKABLE;
                 brick |= v >= PixelMap.BRICK_FULL && v <= PixelMap.BRICK_QUARTER;
                 illusion |= v == PixelMap.ILLUSION;
             }
         }
-        if (downhill) notes.add("not yet played: downhill tiles (no push)");
-        if (oneWay) notes.add("not yet played: one-way walls (passable both ways)");
-        if (teleport) notes.add("not yet played: teleports");
-        if (magnet) notes.add("not yet played: magnets");
         if (mine) notes.add("not yet played: mines");
         if (movable) notes.add("not yet played: movable blocks (still walls)");
         if (brick) notes.add("not yet played: breakable bricks (still walls)");
@@ -195,35 +193,11 @@ public final class TrackConverter {
 
     /** The pixels with one of {@code values}, as cell spans {row, start, end} with row 0 at the bottom. */
     static int[] spans(PixelMap map, int[] values) {
-        List<int[]> out = new ArrayList<>();
-        for (int py = 0; py < PixelMap.HEIGHT; py++) {
-            int row = PixelMap.HEIGHT - 1 - py;
-            for (int x = 0; x < PixelMap.WIDTH; ) {
-                if (!in(map.at(x, py), values)) {
-                    x++;
-                    continue;
-                }
-                int s = x;
-                while (x < PixelMap.WIDTH && in(map.at(x, py), values)) x++;
-                out.add(new int[]{row, s, x});
-            }
-        }
-        int[] spans = new int[3 * out.size()];
-        for (int i = 0; i < out.size(); i++) System.arraycopy(out.get(i), 0, spans, 3 * i, 3);
-        return spans;
+        return ClassicElements.spans(map.where(values));
     }
 
     static PixelRegions.Mask mask(PixelMap map, int[] values) {
-        boolean[] set = new boolean[PixelMap.WIDTH * PixelMap.HEIGHT];
-        for (int y = 0; y < PixelMap.HEIGHT; y++) {
-            for (int x = 0; x < PixelMap.WIDTH; x++) set[x + PixelMap.WIDTH * y] = in(map.at(x, y), values);
-        }
-        return new PixelRegions.Mask(PixelMap.WIDTH, PixelMap.HEIGHT, set);
-    }
-
-    private static boolean in(int v, int[] values) {
-        for (int w : values) if (v == w) return true;
-        return false;
+        return new PixelRegions.Mask(PixelMap.WIDTH, PixelMap.HEIGHT, map.where(values));
     }
 
     /** The walls' colours, close to the original's sprites. */

@@ -81,6 +81,7 @@ final class BenchServerCommand implements Callable<Integer> {
                         err.println("bench-server: " + line + ", load " + loadAverage());
                         err.flush();
                     });
+            for (String f : res.failures().subList(0, Math.min(20, res.failures().size()))) err.println("bench-server: " + f);
             double serverCpu = LoadBench.cpuSeconds(server.pid()) - cpuBefore;
             double rss = LoadBench.peakRssMb(server.pid());
             String loadAfter = loadAverage();
@@ -92,7 +93,7 @@ final class BenchServerCommand implements Callable<Integer> {
                     .put("roomsFinished", res.roomsFinished()).put("course", course).put("bot", bot).put("thinkSeconds", think)
                     .put("shots", res.shots()).put("seconds", Math.round(res.seconds() * 10) / 10.0)
                     .put("p50Ms", round(res.percentileMs(50))).put("p99Ms", round(res.percentileMs(99)))
-                    .put("maxMs", round(res.percentileMs(100))).put("serverPeakRssMb", Math.round(rss))
+                    .put("maxMs", round(res.percentileMs(100))).put("reconnects", res.reconnects()).put("serverPeakRssMb", Math.round(rss))
                     .put("serverCpuSeconds", round(serverCpu)).put("storedStrokes", check.stored)
                     .put("lostOrDuplicated", check.problems.size()).put("loadAverageBefore", loadBefore)
                     .put("loadAverageAfter", loadAfter).put("cores", Runtime.getRuntime().availableProcessors());

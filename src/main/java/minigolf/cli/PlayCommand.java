@@ -65,8 +65,27 @@ final class PlayCommand implements Callable<Integer> {
             + " (default: off)."})
     boolean timing;
 
+    @Option(names = "--online", paramLabel = "HOST:PORT", description = "Plays in a room on this game server (with "
+            + "--create or --room; docs/online.md; default: none).")
+    String online;
+
+    @Option(names = "--create", paramLabel = "COURSE_OR_ROUND", description = "With --online: hosts a room on this course "
+            + "or round and prints {\"room\": CODE} first (default: none).")
+    String create;
+
+    @Option(names = "--seats", paramLabel = "N", description = "With --create: the room's seats, 1 to 4 (default: ${DEFAULT-VALUE}).")
+    int onlineSeats = 2;
+
+    @Option(names = "--room", paramLabel = "CODE", description = "With --online: takes a seat in this room (default: none).")
+    String room;
+
+    @Option(names = "--name", paramLabel = "NAME", description = "With --online: the player's name (default: ${DEFAULT-VALUE}).")
+    String name = "Player";
+
     @Override
     public Integer call() {
+        if (online != null) return playOnline();
+        if (create != null || room != null) throw new UserError("--create and --room need --online HOST:PORT");
         if (round != null && course != null) throw new UserError("give either a COURSE or --round, not both");
         Round theRound = null;
         if (round != null) {
@@ -115,6 +134,39 @@ final class PlayCommand implements Callable<Integer> {
         if (clock != null) out.println(clock.json(world.course().name()));
         else if (frames > 0 && app.roundGame() != null) out.print(app.roundGame().scorecard().toText());
         else if (frames > 0 && game != null) out.print(game.scorecard().toText());
+        out.flush();
+        return 0;
+    }
+
+    /** The game window in an online room: its lobby, then play, scripted shots sent on this seat's turns. */
+    private int playOnline() {
+        if ((create == null) == (room == null)) throw new UserError("--online needs either --create COURSE_OR_ROUND or --room CODE");
+        if (players != null || round != null || course != null) throw new UserError("--online plays the server's course: no COURSE, --round or --players");
+        java.net.URI uri;
+        try {
+            uri = minigolf.online.client.OnlineClient.uri(online);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--online: " + e.getMessage());
+        }
+        if (create != null && !minigolf.online.Protocol.COURSE_NAME.matcher(create).matches()) throw new UserError("--create: not a course or round name: " + create);
+        if (room != null && !minigolf.online.Protocol.CODE.matcher(room).matches()) throw new UserError("--room: a room code is 8 letters and digits, got " + room);
+        if (onlineSeats < 1 || onlineSeats > 4) throw new UserError("--seats: must be 1 to 4");
+        if (name.isBlank() || name.strip().length() > Player.MAX_NAME_LENGTH) throw new UserError("--name: 1 to " + Player.MAX_NAME_LENGTH + " characters");
+        if (frames < 0) throw new UserError("--frames: must be >= 0, got " + frames);
+        if (screenshot != null && frames == 0) throw new UserError("--screenshot needs --frames N (N >= 1)");
+        if (!(timeScale > 0 && timeScale <= 1000)) throw new UserError("--time-scale: must be in (0, 1000], got " + timeScale);
+        List<double[]> script = shots == null ? List.of() : shots.stream().map(PlayCommand::parseShot).toList();
+        GameApp app = new GameApp(GameLauncher.loadBundled(GameLauncher.DEFAULT_COURSE), new GameApp.Options(null, screenshot,
+                frames, null, script, timeScale, SettingsStore.forUser(), true, true));
+        java.io.PrintWriter out = spec.commandLine().getOut();
+        app.playOnline(uri, name.strip(), create, onlineSeats, List.of(), room, code -> {
+            if (create != null) {
+                out.println("{\"room\": \"" + code + "\"}");
+                out.flush();
+            }
+        });
+        app.run();
+        if (frames > 0 && app.roundGame() != null) out.print(app.roundGame().scorecard().toText());
         out.flush();
         return 0;
     }

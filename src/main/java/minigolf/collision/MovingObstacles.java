@@ -31,9 +31,19 @@ public final class MovingObstacles {
     private record Entry(int index, Motion motion, CollisionScene body, double[] reach, double restitution) {
     }
 
+    /** The box round every entry's reach in the plane (minX, minY, maxX, maxY): most questions end there. */
+    private final double[] reachAll = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+            Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+
     private MovingObstacles(Entry[] entries, double radius) {
         this.entries = entries;
         this.radius = radius;
+        for (Entry e : entries) {
+            reachAll[0] = Math.min(reachAll[0], e.reach[0]);
+            reachAll[1] = Math.min(reachAll[1], e.reach[1]);
+            reachAll[2] = Math.max(reachAll[2], e.reach[3]);
+            reachAll[3] = Math.max(reachAll[3], e.reach[4]);
+        }
     }
 
     /** The moving obstacles among the course's (their indices kept), or null when none moves. */
@@ -68,18 +78,32 @@ public final class MovingObstacles {
             }
             return box;
         }
+        // Turning about an axis k through the pivot c, a point keeps its position s along the axis
+        // and its distance rho from it: coordinate j stays within c_j + s k_j +- rho sqrt(1 - k_j^2)
+        // (a blade turning about x keeps its own x extent). s is linear and rho convex over the
+        // body's box, so both take their extremes at its corners.
         var pivot = motion instanceof Motion.Rotate rt ? rt.pivot() : ((Motion.Swing) motion).pivot();
+        var axis = motion instanceof Motion.Rotate rt ? rt.axis() : ((Motion.Swing) motion).axis();
         double[] c = {pivot.x(), pivot.y(), pivot.z()};
-        double far = 0;
+        double norm = Math.sqrt(axis.x() * axis.x() + axis.y() * axis.y() + axis.z() * axis.z());
+        double[] k = {axis.x() / norm, axis.y() / norm, axis.z() / norm};
+        double along0 = Double.POSITIVE_INFINITY, along1 = Double.NEGATIVE_INFINITY, far = 0;
         for (int corner = 0; corner < 8; corner++) {
             double dx = ((corner & 1) == 0 ? e[0] : e[3]) - c[0];
             double dy = ((corner & 2) == 0 ? e[1] : e[4]) - c[1];
             double dz = ((corner & 4) == 0 ? e[2] : e[5]) - c[2];
-            far = Math.max(far, Math.sqrt(dx * dx + dy * dy + dz * dz));
+            double along = dx * k[0] + dy * k[1] + dz * k[2];
+            double px = dx - along * k[0], py = dy - along * k[1], pz = dz - along * k[2];
+            along0 = Math.min(along0, along);
+            along1 = Math.max(along1, along);
+            far = Math.max(far, Math.sqrt(px * px + py * py + pz * pz));
         }
-        for (int k = 0; k < 3; k++) {
-            box[k] = c[k] - far - r;
-            box[k + 3] = c[k] + far + r;
+        for (int j = 0; j < 3; j++) {
+            double spread = far * Math.sqrt(Math.max(0, 1 - k[j] * k[j]));
+            // Rounding: the box may only grow.
+            double slack = 1e-9 * (1 + far + Math.abs(along0) + Math.abs(along1));
+            box[j] = c[j] + Math.min(along0 * k[j], along1 * k[j]) - spread - r - slack;
+            box[j + 3] = c[j] + Math.max(along0 * k[j], along1 * k[j]) + spread + r + slack;
         }
         return box;
     }
@@ -90,6 +114,7 @@ public final class MovingObstacles {
 
     /** Whether a moving obstacle can ever come within a ball radius of the rectangle (centre positions). */
     public boolean anyNear(double minX, double minY, double maxX, double maxY) {
+        if (reachAll[0] > maxX || reachAll[2] < minX || reachAll[1] > maxY || reachAll[3] < minY) return false;
         for (Entry e : entries) {
             if (e.reach[0] <= maxX && e.reach[3] >= minX && e.reach[1] <= maxY && e.reach[4] >= minY) return true;
         }

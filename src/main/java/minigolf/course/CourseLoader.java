@@ -63,7 +63,7 @@ public final class CourseLoader {
     static final List<String> SLIDE_FIELDS = List.of("type", "path", "period", "phase", "closed");
     static final List<String> PUSH_ZONE_FIELDS = List.of("shape", "push");
     static final List<String> MAGNET_FIELDS = List.of("position", "radius", "strength");
-    static final List<String> TELEPORT_FIELDS = List.of("entry", "exits");
+    static final List<String> TELEPORT_FIELDS = List.of("entry", "exits", "seed");
     static final List<String> EXIT_FIELDS = List.of("position", "directionDeg");
 
     /** Strict JSON: no NaN/Infinity literals, no comments, no duplicate keys, nothing after the object. */

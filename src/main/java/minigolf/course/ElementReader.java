@@ -98,7 +98,15 @@ final class ElementReader extends CourseJsonReader {
                 Double direction = x.has("directionDeg") ? number(x.get("directionDeg"), join(xp, "directionDeg")) : null;
                 list.add(new Teleport.Exit(position, direction));
             }
-            teleports.add(new Teleport(entry, list));
+            Long seed = null;
+            if (o.has("seed")) {
+                JsonNode sn = o.get("seed");
+                if (!sn.isIntegralNumber() || !sn.canConvertToLong()) {
+                    throw error(join(tp, "seed"), "expected a whole number, got " + show(sn));
+                }
+                seed = sn.longValue();
+            }
+            teleports.add(new Teleport(entry, list, seed));
         }
         return teleports;
     }

@@ -63,7 +63,9 @@ final class ElementWriter {
                     if (x.directionDeg() != null) sb.append(", \"directionDeg\": ").append(num(x.directionDeg(), xp + ".directionDeg"));
                     sb.append(" }");
                 }
-                sb.append("] }").append(i + 1 < teleports.size() ? ",\n" : "\n");
+                sb.append("]");
+                if (t.seed() != null) sb.append(", \"seed\": ").append(t.seed());
+                sb.append(" }").append(i + 1 < teleports.size() ? ",\n" : "\n");
             }
             sb.append("  ]\n");
         }

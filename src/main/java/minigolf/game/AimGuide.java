@@ -39,13 +39,22 @@ public record AimGuide(float[] points, Outcome outcome) {
     /** The guide for a putt or a chip (vz &gt; 0: its flight, then its roll), as the engine plays it. */
     public static AimGuide preview(World world, SimulationSettings settings, double x, double y, double vx, double vy,
                                    double vz, double seconds) {
+        return preview(world, settings, x, y, vx, vy, vz, 0, seconds);
+    }
+
+    /**
+     * The guide for a stroke hit at course clock {@code clock} (s): where obstacles move, the
+     * moment the stroke will start, so the guide shows what the player will get.
+     */
+    public static AimGuide preview(World world, SimulationSettings settings, double x, double y, double vx, double vy,
+                                   double vz, double clock, double seconds) {
         if (!(seconds > 0)) throw new IllegalArgumentException("seconds must be > 0, got " + seconds);
         SimulationSettings cut = new SimulationSettings(settings.integrator(), settings.dt(), Math.min(seconds, settings.maxTime()));
         float[][] buffer = {new float[3 * 64]};
         int[] n = {0};
         add(buffer, n, x, y, world.terrain().height(x, y));
         // Frame by frame, as the game shows the ball: the steps themselves may be longer than a frame.
-        Stroke stroke = new Stroke(world, cut, x, y, vx, vy, vz, null, false);
+        Stroke stroke = new Stroke(world, cut, x, y, vx, vy, vz, clock, null, false);
         while (!stroke.isFinished()) {
             stroke.step();
             add(buffer, n, stroke.x(), stroke.y(), stroke.z());

@@ -30,11 +30,14 @@ public final class AimGuideWorker implements AutoCloseable {
     }
 
     /**
-     * The guide for a stroke (vx, vy, vz) from (x, y): the one for exactly this aim when it is
-     * ready, else the newest one ready on the same course (null before the first). Never waits.
+     * The guide for a stroke (vx, vy, vz) from (x, y) hit at course clock {@code clock}: the one for
+     * exactly this aim and moment when it is ready, else the newest one ready on the same course
+     * (null before the first). Never waits. Where nothing moves the clock is left out of the key, so
+     * a still aim is worked out once; where obstacles move, each new moment is worked out afresh.
      */
-    public AimGuide guide(World world, SimulationSettings settings, double x, double y, double vx, double vy, double vz) {
-        double[] key = {x, y, vx, vy, vz, settings.dt(), settings.integrator().ordinal()};
+    public AimGuide guide(World world, SimulationSettings settings, double x, double y, double vx, double vy, double vz,
+                          double clock) {
+        double[] key = key(world, settings, x, y, vx, vy, vz, clock);
         synchronized (lock) {
             boolean ready = done != null && doneWorld == world && Arrays.equals(key, doneKey);
             if (!ready && (wanted == null || wanted.world() != world || !Arrays.equals(key, wanted.key()))) {
@@ -46,11 +49,18 @@ public final class AimGuideWorker implements AutoCloseable {
     }
 
     /** Whether the guide for this aim is ready (tests). */
-    public boolean isReady(World world, double x, double y, double vx, double vy, double vz, SimulationSettings settings) {
-        double[] key = {x, y, vx, vy, vz, settings.dt(), settings.integrator().ordinal()};
+    public boolean isReady(World world, double x, double y, double vx, double vy, double vz, double clock,
+                           SimulationSettings settings) {
+        double[] key = key(world, settings, x, y, vx, vy, vz, clock);
         synchronized (lock) {
             return done != null && doneWorld == world && Arrays.equals(key, doneKey);
         }
+    }
+
+    private static double[] key(World world, SimulationSettings settings, double x, double y, double vx, double vy,
+                                double vz, double clock) {
+        return new double[]{x, y, vx, vy, vz, world.moving() != null ? clock : 0, settings.dt(),
+                settings.integrator().ordinal()};
     }
 
     private void run() {
@@ -69,7 +79,7 @@ public final class AimGuideWorker implements AutoCloseable {
                 wanted = null;
             }
             double[] k = r.key();
-            AimGuide g = AimGuide.preview(r.world(), r.settings(), k[0], k[1], k[2], k[3], k[4], AimGuide.FULL_SECONDS);
+            AimGuide g = AimGuide.preview(r.world(), r.settings(), k[0], k[1], k[2], k[3], k[4], k[5], AimGuide.FULL_SECONDS);
             synchronized (lock) {
                 done = g;
                 doneKey = k;

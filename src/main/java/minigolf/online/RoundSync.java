@@ -21,6 +21,16 @@ public final class RoundSync {
 
     /** The round after {@code event}; {@code round} itself is left as it was. */
     public static RoundGame apply(RoundGame round, RoomEvent event) {
+        RoundGame out = applyOnly(round, event);
+        advance(out);
+        return out;
+    }
+
+    /**
+     * As {@link #apply} but a hole the event finishes stays open (not yet on the card): the game
+     * window shows the hole's card first and starts the next hole when the player goes on.
+     */
+    public static RoundGame applyOnly(RoundGame round, RoomEvent event) {
         if (round.isOver()) throw new IllegalStateException("the round is over; event " + event.seq() + " does not fit");
         if (event.hole() != round.holeIndex()) {
             throw new IllegalStateException("event " + event.seq() + " is on hole " + (event.hole() + 1) + ", the round is on hole "
@@ -42,9 +52,17 @@ public final class RoundSync {
         for (int i = 0; i < s.players().size(); i++) next.passOver(i, game.isPassedOver(i));
         List<List<ShotRecord>> done = new ArrayList<>();
         for (int h = 0; h < round.holesFinished(); h++) done.add(round.holeStrokes(h));
-        RoundGame out = RoundGame.restore(round.round(), round.finishedScores(), done, next);
-        advance(out);
-        return out;
+        return RoundGame.restore(round.round(), round.finishedScores(), done, next);
+    }
+
+    /** A round of its own in the same state: its games new, its courses (and the round's holes) shared. */
+    public static RoundGame copy(RoundGame round) {
+        Game game = round.game();
+        Game g = Game.restore(game.world(), game.state());
+        for (int i = 0; i < game.players().size(); i++) g.passOver(i, game.isPassedOver(i));
+        List<List<ShotRecord>> done = new ArrayList<>();
+        for (int h = 0; h < round.holesFinished(); h++) done.add(round.holeStrokes(h));
+        return RoundGame.restore(round.round(), round.finishedScores(), done, g);
     }
 
     /** Puts a finished hole on the card and starts the next one, as the server does after every event. */

@@ -18,6 +18,8 @@ import minigolf.course.Shape;
 public final class ForceField {
     private final Shape[] pushShapes;
     private final double[] pushX, pushY;
+    /** Each push zone's bounding rectangle: minX, minY, maxX, maxY. */
+    private final double[] pushBoxes;
     // Magnets: centre, radius, strength (> 0 attracts).
     private final double[] magnetX, magnetY, magnetRadius, magnetStrength;
     // The box round every push zone and magnet, for near().
@@ -28,6 +30,7 @@ public final class ForceField {
         pushShapes = new Shape[n];
         pushX = new double[n];
         pushY = new double[n];
+        pushBoxes = new double[4 * n];
         double x0 = Double.POSITIVE_INFINITY, y0 = Double.POSITIVE_INFINITY;
         double x1 = Double.NEGATIVE_INFINITY, y1 = Double.NEGATIVE_INFINITY;
         for (int k = 0; k < n; k++) {
@@ -36,6 +39,7 @@ public final class ForceField {
             pushX[k] = z.push().x();
             pushY[k] = z.push().y();
             double[] box = ShapeBoxes.of(z.shape());
+            System.arraycopy(box, 0, pushBoxes, 4 * k, 4);
             x0 = Math.min(x0, box[0]);
             y0 = Math.min(y0, box[1]);
             x1 = Math.max(x1, box[2]);
@@ -78,9 +82,33 @@ public final class ForceField {
         return x0 <= maxX && x1 >= minX && y0 <= maxY && y1 >= minY;
     }
 
+    /**
+     * Whether the force may change within the rectangle: a magnet or a push zone's edge reaches
+     * into it. Inside a zone that holds the whole rectangle, or clear of every zone, the push is
+     * the same all over it, so a long step may cross it (docs/physics.md, "Step control").
+     */
+    public boolean mayChangeWithin(double x0, double y0, double x1, double y1) {
+        if (!near(x0, y0, x1, y1)) return false;
+        for (int k = 0; k < magnetX.length; k++) {
+            double r = magnetRadius[k];
+            if (magnetX[k] - r <= x1 && magnetX[k] + r >= x0 && magnetY[k] - r <= y1 && magnetY[k] + r >= y0) return true;
+        }
+        double[] b = pushBoxes;
+        for (int k = 0; k < pushShapes.length; k++) {
+            if (b[4 * k] > x1 || b[4 * k + 2] < x0 || b[4 * k + 1] > y1 || b[4 * k + 3] < y0) continue;
+            if (!ShapeBoxes.covers(pushShapes[k], x0, y0, x1, y1)) return true;
+        }
+        return false;
+    }
+
     /** The push at (x, y), the sum of the zones containing it, into out[0], out[1]. */
     public void push(double x, double y, double[] out) {
         double px = 0, py = 0;
+        if (x < minX || x > maxX || y < minY || y > maxY) {
+            out[0] = 0;
+            out[1] = 0;
+            return;
+        }
         for (int k = 0; k < pushShapes.length; k++) {
             if (pushShapes[k].contains(x, y)) {
                 px += pushX[k];

@@ -3,7 +3,6 @@ package minigolf.physics;
 import java.util.List;
 import minigolf.course.PhysicsSettings;
 import minigolf.course.Shape;
-import minigolf.course.Vec2;
 import minigolf.course.TerrainSpec;
 import minigolf.course.Zone;
 
@@ -36,35 +35,7 @@ public final class FrictionField {
     }
 
     private void box(Shape shape, int k) {
-        double[] b = boxes;
-        if (shape instanceof Shape.Rect r) {
-            b[4 * k] = r.min().x();
-            b[4 * k + 1] = r.min().y();
-            b[4 * k + 2] = r.max().x();
-            b[4 * k + 3] = r.max().y();
-        } else if (shape instanceof Shape.Circle c) {
-            b[4 * k] = c.center().x() - c.radius();
-            b[4 * k + 1] = c.center().y() - c.radius();
-            b[4 * k + 2] = c.center().x() + c.radius();
-            b[4 * k + 3] = c.center().y() + c.radius();
-        } else if (shape instanceof Shape.Cells c) {
-            b[4 * k] = c.origin().x();
-            b[4 * k + 1] = c.origin().y();
-            b[4 * k + 2] = c.origin().x() + c.columns() * c.size();
-            b[4 * k + 3] = c.origin().y() + c.rows() * c.size();
-        } else {
-            double minX = Double.POSITIVE_INFINITY, minY = minX, maxX = -minX, maxY = -minX;
-            for (Vec2 p : ((Shape.Polygon) shape).points()) {
-                minX = Math.min(minX, p.x());
-                minY = Math.min(minY, p.y());
-                maxX = Math.max(maxX, p.x());
-                maxY = Math.max(maxY, p.y());
-            }
-            b[4 * k] = minX;
-            b[4 * k + 1] = minY;
-            b[4 * k + 2] = maxX;
-            b[4 * k + 3] = maxY;
-        }
+        System.arraycopy(ShapeBoxes.of(shape), 0, boxes, 4 * k, 4);
     }
 
     /**
@@ -77,11 +48,7 @@ public final class FrictionField {
         double[] b = boxes;
         for (int k = 0; k < zones.length; k++) {
             if (b[4 * k] > maxX || b[4 * k + 2] < minX || b[4 * k + 1] > maxY || b[4 * k + 3] < minY) continue;
-            Shape shape = zones[k].shape();
-            boolean inside = (shape instanceof Shape.Rect || shape instanceof Shape.Circle)
-                    && shape.contains(minX, minY) && shape.contains(maxX, minY)
-                    && shape.contains(minX, maxY) && shape.contains(maxX, maxY);
-            if (!inside) return true;
+            if (!ShapeBoxes.covers(zones[k].shape(), minX, minY, maxX, maxY)) return true;
         }
         return false;
     }

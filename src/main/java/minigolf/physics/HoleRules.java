@@ -31,10 +31,10 @@ final class HoleRules {
         this.captureSpeed = hole.effectiveCaptureSpeed();
     }
 
-    /** Whether the hole comes within {@code reach} of (qx, qy). */
-    boolean within(double qx, double qy, double reach) {
-        double dx = qx - holeX, dy = qy - holeY, r = reach + holeRadius;
-        return dx * dx + dy * dy <= r * r;
+    /** Whether the hole reaches into the rectangle. */
+    boolean near(double minX, double minY, double maxX, double maxY) {
+        double dx = Math.max(0, Math.max(minX - holeX, holeX - maxX)), dy = Math.max(0, Math.max(minY - holeY, holeY - maxY));
+        return dx * dx + dy * dy <= holeRadius * holeRadius;
     }
 
     /** Whether (qx, qy) is within the hole's radius: a ball at rest there is holed. */

@@ -84,11 +84,14 @@ final class RollingPhase {
         this.captureRule = hole.captureRule;
     }
 
-    /** A new stroke played at course clock {@code clock}: no wait for a moving obstacle, the teleports' exits from the first. */
-    void start(double clock) {
+    /**
+     * A new stroke played at course clock {@code clock}: no wait for a moving obstacle, the teleports'
+     * exits from the first; {@code strokeKey} summarises the shot for the teleports that draw their exits.
+     */
+    void start(double clock, long strokeKey) {
         startClock = clock;
         waitUntil = Double.NaN;
-        if (teleporter != null) teleporter.reset();
+        if (teleporter != null) teleporter.reset(strokeKey);
     }
 
     /** One rolling piece of at most tau seconds; returns the time it took. */
@@ -224,48 +227,70 @@ final class RollingPhase {
     }
 
     /**
+     * How far (m) a long step keeps clear of anything near, beyond the bound of its path's cubic:
+     * the cubic is the path only to within its own interpolation error (micrometres at 8 dt), so
+     * a contact or a zone's edge is always met by steps of dt, located as they always were.
+     */
+    static final double PATH_MARGIN = 1e-3;
+
+    /**
+     * Whether the long step being chosen starts on ground shallower than mu_k, where the ball
+     * cannot turn: it may come nearer its stop (clearOfHazards checks that it stayed so).
+     */
+    private boolean shallowStep;
+
+    /**
      * The longest step up to tau that may be taken from here (docs/physics.md, "Step control"):
      * dt, or longer where nothing it could reach needs the step's own length. A long step stays on
      * smooth ground, clear of obstacles (still, gates, moving: their reach over a whole period),
-     * friction zones' edges, push zones, magnets, teleports' entries and (under the capture rule)
-     * the hole; the ball leans on no obstacle, and is fast enough that it can neither stop within
-     * the step nor come within the rest rule's horizon of a turn. Halved from tau until it qualifies.
+     * friction zones' and push zones' edges, magnets, teleports' entries and (under the capture
+     * rule) the hole, by the box round its path (a straight line widened by what the acceleration
+     * can bend it; clearOfHazards checks the path's own box); the ball leans on no obstacle, and is fast enough that it can neither stop within
+     * the step nor come within the rest rule's horizon of a turn (on ground shallower than mu_k it
+     * cannot turn: only the stop counts). Cut from tau to the length that qualifies.
      */
     private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
                                double a1x, double a1y) {
+        shallowStep = false;
         if (!smooth || leaning) return dt;
         // Braking at most g (|grad h| + mu_k), it must be left with the speed the rest rule's turn
         // horizon and a step of dt need (the ground may grow steeper than mu_k within the step).
         double braking = gravity * (slope + muK);
-        double spare = speed - RestRule.REST_SPEED - braking * (dt + RestRule.TURN_HORIZON);
-        while (control.isLong(tau) && braking * tau >= spare) tau *= 0.5;
-        if (!control.isLong(tau) || !(scene != null || zoned || captureRule || forces != null || teleporter != null)) {
-            return control.isLong(tau) ? tau : dt;
-        }
-        // From the shortest long step up, each as long as nothing is within its reach: near an
-        // obstacle a single small square is looked at.
+        // On ground no steeper than mu_k the ball cannot turn, only stop: the turn horizon is not
+        // needed (clearOfHazards checks that every stage's ground stayed that shallow).
+        shallowStep = slope < muK;
+        double spare = speed - RestRule.REST_SPEED - braking * (dt + (shallowStep ? 0 : RestRule.TURN_HORIZON));
+        if (braking * tau >= spare) tau = spare / braking;
+        if (!control.isLong(tau)) return dt;
+        if (!(scene != null || zoned || captureRule || forces != null || teleporter != null)) return tau;
+        // The longest first, then halving down to 2 dt: each as long as nothing is within the
+        // step's reach, the box round the straight path at the starting velocity, widened by
+        // what the acceleration (twice the start's) can bend the path away from it.
         BallState b = ball;
         double acceleration = Math.sqrt(a1x * a1x + a1y * a1y);
-        double shortest = 2 * dt, chosen = dt;
-        for (double length = shortest; length <= tau * (1 + 1e-9); length *= 2) {
-            double reach = speed * length + acceleration * length * length;
-            double minX = b.x - reach, minY = b.y - reach, maxX = b.x + reach, maxY = b.y + reach;
-            if (elementNear(minX, minY, maxX, maxY)) break;
-            if (captureRule && hole.within(b.x, b.y, reach)) break;
-            chosen = length;
+        double length = tau;
+        while (true) {
+            double bend = acceleration * length * length + PATH_MARGIN;
+            double ex = b.vx * length, ey = b.vy * length;
+            double minX = b.x + Math.min(0, ex) - bend, maxX = b.x + Math.max(0, ex) + bend;
+            double minY = b.y + Math.min(0, ey) - bend, maxY = b.y + Math.max(0, ey) + bend;
+            if (!elementNear(minX, minY, maxX, maxY) && !(captureRule && hole.near(minX, minY, maxX, maxY))) return length;
+            double shorter = 2 * dt;
+            while (2 * shorter < length * (1 - 1e-9)) shorter *= 2;
+            if (!(shorter < length * (1 - 1e-9)) || !control.isLong(shorter)) return dt;
+            length = shorter;
         }
-        return chosen;
     }
 
     /**
      * Whether anything that a step's own length must follow reaches into the rectangle of centre
      * positions: an obstacle (still, a gate, or a moving one anywhere in its period), a friction
-     * zone's edge, a push zone or a magnet, a teleport's entry.
+     * zone's edge, a push zone's edge or a magnet, a teleport's entry.
      */
     private boolean elementNear(double minX, double minY, double maxX, double maxY) {
         return (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY))
                 || (zoned && friction.mayChangeWithin(minX, minY, maxX, maxY))
-                || (forces != null && forces.near(minX, minY, maxX, maxY))
+                || (forces != null && forces.mayChangeWithin(minX, minY, maxX, maxY))
                 || (teleporter != null && teleporter.near(minX, minY, maxX, maxY));
     }
 
@@ -280,8 +305,22 @@ final class RollingPhase {
         if (r.stageLowest < 0 || !locate.inPlay(r.stageMinX, r.stageMinY) || !locate.inPlay(r.stageMaxX, r.stageMaxY)) {
             return false;
         }
-        if (elementNear(r.stageMinX, r.stageMinY, r.stageMaxX, r.stageMaxY)) return false;
+        // The step's path, the cubic through its ends (as swept against obstacles), lies within
+        // (4/27)(|v0 tau - c| + |v1 tau - c|) of its chord c; its stages too are looked at, and a
+        // margin covers the cubic's own distance from the path.
         BallState b = ball;
+        double cx = r.nx - b.x, cy = r.ny - b.y;
+        double e0x = b.vx * tau - cx, e0y = b.vy * tau - cy, e1x = r.nvx * tau - cx, e1y = r.nvy * tau - cy;
+        double bend = 4.0 / 27 * (Math.sqrt(e0x * e0x + e0y * e0y) + Math.sqrt(e1x * e1x + e1y * e1y)) + PATH_MARGIN;
+        double minX = Math.min(Math.min(b.x, r.nx) - bend, r.stageMinX), maxX = Math.max(Math.max(b.x, r.nx) + bend, r.stageMaxX);
+        double minY = Math.min(Math.min(b.y, r.ny) - bend, r.stageMinY), maxY = Math.max(Math.max(b.y, r.ny) + bend, r.stageMaxY);
+        if (elementNear(minX, minY, maxX, maxY) || (captureRule && hole.near(minX, minY, maxX, maxY))) return false;
+        if (shallowStep) {
+            // Still braking, short of its stop by at least half the dt of speed it was left with.
+            double braking = gravity * (Math.sqrt(r.stageSteepest) + b.muK);
+            double endSpeed = Math.sqrt(r.nvx * r.nvx + r.nvy * r.nvy);
+            if (!(r.stageSteepest < b.muK * b.muK && r.nvx * b.vx + r.nvy * b.vy > 0 && endSpeed > 0.5 * braking * dt)) return false;
+        }
         return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
 

@@ -30,6 +30,7 @@ final class RollingStep {
     private final double longFrom;
     private final double[] sample = new double[3];
     private final double[] force = new double[2];
+    private final double[] pull = new double[2];
 
     // The start state of the sub-steps: position, velocity, slope, kinetic friction and force there.
     private double x, y, vx, vy, hx, hy, muK, fx, fy;
@@ -52,6 +53,8 @@ final class RollingStep {
     private double stage4vx, stage4vy, lastTau;
     /** The last long step ({@link #advanceLong}): the lowest ground its stages sampled, and the box round their points. */
     double stageLowest, stageMinX, stageMinY, stageMaxX, stageMaxY;
+    /** The last long step's steepest ground among its stages (|grad h| squared; the pull gradient's with forces). */
+    double stageSteepest;
     /** The last long step's error estimate (position, m). */
     private double longError;
 
@@ -176,18 +179,20 @@ final class RollingStep {
         double p2x = x + h * A21 * vx, p2y = y + h * A21 * vy;
         double v2x = vx + h * A21 * a1x, v2y = vy + h * A21 * a1y;
         accelerationAt(p2x, p2y, v2x, v2y);
-        double a2x = ax, a2y = ay, lowest = sample[0];
+        double a2x = ax, a2y = ay, lowest = sample[0], steepest = steepness();
         double minX = Math.min(x, p2x), maxX = Math.max(x, p2x), minY = Math.min(y, p2y), maxY = Math.max(y, p2y);
         double p3x = x + h * (A31 * vx + A32 * v2x), p3y = y + h * (A31 * vy + A32 * v2y);
         double v3x = vx + h * (A31 * a1x + A32 * a2x), v3y = vy + h * (A31 * a1y + A32 * a2y);
         accelerationAt(p3x, p3y, v3x, v3y);
         double a3x = ax, a3y = ay;
         lowest = Math.min(lowest, sample[0]);
+        steepest = Math.max(steepest, steepness());
         double p4x = x + h * (A41 * vx + A42 * v2x + A43 * v3x), p4y = y + h * (A41 * vy + A42 * v2y + A43 * v3y);
         double v4x = vx + h * (A41 * a1x + A42 * a2x + A43 * a3x), v4y = vy + h * (A41 * a1y + A42 * a2y + A43 * a3y);
         accelerationAt(p4x, p4y, v4x, v4y);
         double a4x = ax, a4y = ay;
         lowest = Math.min(lowest, sample[0]);
+        steepest = Math.max(steepest, steepness());
         double p5x = x + h * (A51 * vx + A52 * v2x + A53 * v3x + A54 * v4x);
         double p5y = y + h * (A51 * vy + A52 * v2y + A53 * v3y + A54 * v4y);
         double v5x = vx + h * (A51 * a1x + A52 * a2x + A53 * a3x + A54 * a4x);
@@ -195,6 +200,7 @@ final class RollingStep {
         accelerationAt(p5x, p5y, v5x, v5y);
         double a5x = ax, a5y = ay;
         lowest = Math.min(lowest, sample[0]);
+        steepest = Math.max(steepest, steepness());
         double p6x = x + h * (A61 * vx + A62 * v2x + A63 * v3x + A64 * v4x + A65 * v5x);
         double p6y = y + h * (A61 * vy + A62 * v2y + A63 * v3y + A64 * v4y + A65 * v5y);
         double v6x = vx + h * (A61 * a1x + A62 * a2x + A63 * a3x + A64 * a4x + A65 * a5x);
@@ -202,6 +208,7 @@ final class RollingStep {
         accelerationAt(p6x, p6y, v6x, v6y);
         double a6x = ax, a6y = ay;
         lowest = Math.min(lowest, sample[0]);
+        steepest = Math.max(steepest, steepness());
         nx = x + h * (B1 * vx + B3 * v3x + B4 * v4x + B5 * v5x + B6 * v6x);
         ny = y + h * (B1 * vy + B3 * v3y + B4 * v4y + B5 * v5y + B6 * v6y);
         nvx = vx + h * (B1 * a1x + B3 * a3x + B4 * a4x + B5 * a5x + B6 * a6x);
@@ -209,10 +216,12 @@ final class RollingStep {
         accelerationAt(nx, ny, nvx, nvy);
         if (cache != null) cache.keep(nx, ny, sample[0], sample[1], sample[2]);
         lowest = Math.min(lowest, sample[0]);
+        steepest = Math.max(steepest, steepness());
         double ex = h * (E1 * vx + E3 * v3x + E4 * v4x + E5 * v5x + E6 * v6x + E7 * nvx);
         double ey = h * (E1 * vy + E3 * v3y + E4 * v4y + E5 * v5y + E6 * v6y + E7 * nvy);
         longError = Math.sqrt(ex * ex + ey * ey);
         stageLowest = lowest;
+        stageSteepest = steepest;
         minX = Math.min(Math.min(minX, Math.min(p3x, p4x)), Math.min(Math.min(p5x, p6x), nx));
         maxX = Math.max(Math.max(maxX, Math.max(p3x, p4x)), Math.max(Math.max(p5x, p6x), nx));
         minY = Math.min(Math.min(minY, Math.min(p3y, p4y)), Math.min(Math.min(p5y, p6y), ny));
@@ -319,6 +328,13 @@ final class RollingStep {
     double errorEstimate() {
         double ex = stage4vx - nvx, ey = stage4vy - nvy;
         return lastTau / 6 * Math.sqrt(ex * ex + ey * ey);
+    }
+
+    /** |grad h| squared of the last sample; with push zones or magnets, of the pull gradient there (the force of the last sample). */
+    private double steepness() {
+        if (forces == null) return sample[1] * sample[1] + sample[2] * sample[2];
+        ForceField.pullGradient(sample[1], sample[2], force[0], force[1], gravity, complete, pull);
+        return pull[0] * pull[0] + pull[1] * pull[1];
     }
 
     private void accelerationAt(double px, double py, double pvx, double pvy) {

@@ -3,7 +3,7 @@ package minigolf.physics;
 import minigolf.course.Shape;
 import minigolf.course.Vec2;
 
-/** Where a straight segment first enters a course shape (rectangle, circle, polygon). */
+/** Where a straight segment first enters a course shape (rectangle, circle, polygon, cells). */
 final class ShapeCrossing {
     private ShapeCrossing() {
     }
@@ -31,6 +31,7 @@ final class ShapeCrossing {
             double t = k / (-b + Math.sqrt(disc));
             return t <= 1 ? t : Double.POSITIVE_INFINITY;
         }
+        if (shape instanceof Shape.Cells c) return firstCell(c, ax, ay, dx, dy);
         // A polygon: the first crossing of an edge (the segment starts outside).
         double best = Double.POSITIVE_INFINITY;
         var points = ((Shape.Polygon) shape).points();
@@ -46,6 +47,39 @@ final class ShapeCrossing {
             if (t >= 0 && t <= 1 && u >= 0 && u <= 1 && t < best) best = t;
         }
         return best;
+    }
+
+    /**
+     * The first set cell the segment a + t d (t in [0, 1], a outside the shape) enters: it walks the
+     * grid cell by cell along the segment (Amanatides and Woo), so it is exact whatever the outline.
+     */
+    private static double firstCell(Shape.Cells c, double ax, double ay, double dx, double dy) {
+        double s = c.size();
+        // In cell units, clipped to the grid.
+        double u = (ax - c.origin().x()) / s, v = (ay - c.origin().y()) / s, du = dx / s, dv = dy / s;
+        double[] range = {0, 1};
+        if (!clip(u, du, 0, c.columns(), range) || !clip(v, dv, 0, c.rows(), range)) return Double.POSITIVE_INFINITY;
+        double t = range[0], end = range[1];
+        int i = Math.min(c.columns() - 1, (int) Math.floor(u + t * du));
+        int j = Math.min(c.rows() - 1, (int) Math.floor(v + t * dv));
+        int stepI = du > 0 ? 1 : -1, stepJ = dv > 0 ? 1 : -1;
+        double nextI = du != 0 ? ((du > 0 ? i + 1 : i) - u) / du : Double.POSITIVE_INFINITY;
+        double nextJ = dv != 0 ? ((dv > 0 ? j + 1 : j) - v) / dv : Double.POSITIVE_INFINITY;
+        double deltaI = du != 0 ? 1 / Math.abs(du) : Double.POSITIVE_INFINITY, deltaJ = dv != 0 ? 1 / Math.abs(dv) : Double.POSITIVE_INFINITY;
+        while (t <= end) {
+            if (c.cell(i, j)) return t;
+            if (nextI < nextJ) {
+                t = nextI;
+                nextI += deltaI;
+                i += stepI;
+            } else {
+                t = nextJ;
+                nextJ += deltaJ;
+                j += stepJ;
+            }
+            if (i < 0 || j < 0 || i >= c.columns() || j >= c.rows()) break;
+        }
+        return Double.POSITIVE_INFINITY;
     }
 
     /** Clips the fraction range to where a + t d lies in [lo, hi] on one axis; false if empty. */

@@ -167,7 +167,7 @@ public final class Stroke {
         BallState ball = this.ball;
         ball.reset(x0, y0, vx0, vy0);
         paths.start(clock);
-        rolling.start(clock);
+        rolling.start(clock, shotKey(x0, y0, vx0, vy0, vz0, clock));
         this.framed = framed;
         frames = 0;
         shownEnd = false;
@@ -299,5 +299,15 @@ public final class Stroke {
         while (b.outcome == null) advance();
         showEnd();
         return result();
+    }
+
+    /** The shot as one number (its bits mixed), for the teleports that draw their exits: the same shot, the same draws. */
+    static long shotKey(double x0, double y0, double vx0, double vy0, double vz0, double clock) {
+        long k = Double.doubleToLongBits(x0 + 0.0);
+        k = 31 * k + Double.doubleToLongBits(y0 + 0.0);
+        k = 31 * k + Double.doubleToLongBits(vx0 + 0.0);
+        k = 31 * k + Double.doubleToLongBits(vy0 + 0.0);
+        k = 31 * k + Double.doubleToLongBits(vz0 + 0.0);
+        return 31 * k + Double.doubleToLongBits(clock + 0.0);
     }
 }

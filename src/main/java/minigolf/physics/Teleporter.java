@@ -4,8 +4,8 @@ import minigolf.course.Teleport;
 
 /**
  * A stroke's teleports (docs/course-format.md, "Teleports"): finds where a rolling step first
- * enters a teleport's entry, and sends the ball to the exit whose turn it is, with its speed, in
- * its own direction or the exit's. The turns are counted per stroke.
+ * enters a teleport's entry, and sends the ball to the exit whose turn it is (or that a seeded
+ * teleport draws), with its speed, in its own direction or the exit's. The turns are counted per stroke.
  */
 final class Teleporter {
     /** Chords of a step's path checked against the entries (the path strays from them by micrometres). */
@@ -19,6 +19,8 @@ final class Teleporter {
     private final int[] used;
     /** The teleport the last located entry belongs to. */
     int entered = -1;
+    /** The stroke's shot, summarised for the teleports that draw their exits ({@link Teleport#exit}). */
+    private long strokeKey;
 
     Teleporter(TeleportField field, BallState ball, RollingTrial trial, StrokeReports reports) {
         this.field = field;
@@ -28,10 +30,11 @@ final class Teleporter {
         this.used = new int[field.size()];
     }
 
-    /** A new stroke: every teleport's exits from the first again. */
-    void reset() {
+    /** A new stroke, whose shot {@code strokeKey} summarises: every teleport's exits from the first again. */
+    void reset(long strokeKey) {
         java.util.Arrays.fill(used, 0);
         entered = -1;
+        this.strokeKey = strokeKey;
     }
 
     /** Whether a teleport's entry reaches into the rectangle of centre positions. */
@@ -104,7 +107,7 @@ final class Teleporter {
     void send(int k) {
         BallState b = ball;
         Teleport t = field.get(k);
-        Teleport.Exit exit = t.exits().get(used[k]++ % t.exits().size());
+        Teleport.Exit exit = t.exit(strokeKey, used[k]++);
         double speed = Math.sqrt(b.vx * b.vx + b.vy * b.vy);
         if (exit.directionDeg() != null) {
             double angle = Math.toRadians(exit.directionDeg());

@@ -14,6 +14,7 @@ import minigolf.course.Shape;
 import minigolf.course.Teleport;
 import minigolf.course.Vec2;
 import minigolf.course.Vec3;
+import minigolf.physics.ShapeBoxes;
 
 /**
  * The meshes of the course elements of issue 24 on the CPU (testable without GL), in world
@@ -225,6 +226,9 @@ public final class ElementMeshes {
             glow.add(ring(x, y, r - 0.012, 0.024, h, TELEPORT_GLOW));
             glow.add(ring(x, y, 0.6 * r, 0.014, h, TELEPORT_GLOW));
             glow.add(ring(x, y, 0.25 * r, 0.01, h, TELEPORT_GLOW));
+        } else if (t.entry() instanceof Shape.Cells) {
+            // Drawn pixel by pixel (the classic tracks' teleports): the whole entry glows.
+            glow.add(tint(t.entry(), box, h, TELEPORT_GLOW));
         } else {
             decals.add(tint(t.entry(), box, h, TELEPORT_FLOOR));
             glow.add(outline(t.entry(), h, TELEPORT_GLOW));
@@ -240,30 +244,10 @@ public final class ElementMeshes {
         }
     }
 
-    /** A flat ring of {@code width} at radius r, draped over the ground. */
+    /** A flat ring of {@code width} at radius r, draped over the ground (segments about 4 cm long). */
     static MeshData ring(double cx, double cy, double r, double width, DoubleBinaryOperator h, float[] c) {
         int segments = Math.max(24, (int) Math.ceil(2 * Math.PI * r / 0.04));
-        float[] v = new float[2 * segments * 9];
-        int p = 0;
-        for (int s = 0; s < segments; s++) {
-            double a = 2 * Math.PI * s / segments, cos = Math.cos(a), sin = Math.sin(a);
-            for (double rr : new double[] {r - width / 2, r + width / 2}) {
-                double x = cx + rr * cos, y = cy + rr * sin;
-                p = Shapes.putPnc(v, p, x, y, h.applyAsDouble(x, y) + 2 * LIFT, 0, 0, 1, c[0], c[1], c[2]);
-            }
-        }
-        int[] idx = new int[6 * segments];
-        int q = 0;
-        for (int s = 0; s < segments; s++) {
-            int a = 2 * s, b = 2 * ((s + 1) % segments);
-            idx[q++] = a;
-            idx[q++] = b;
-            idx[q++] = b + 1;
-            idx[q++] = a;
-            idx[q++] = b + 1;
-            idx[q++] = a + 1;
-        }
-        return new MeshData(MeshData.PNC, v, idx);
+        return Shapes.drapedRing(cx, cy, r - width / 2, r + width / 2, segments, h, 2 * LIFT, c[0], c[1], c[2]);
     }
 
     /**
@@ -319,19 +303,7 @@ public final class ElementMeshes {
 
     /** {minX, minY, maxX, maxY} of a shape. */
     static double[] box(Shape s) {
-        if (s instanceof Shape.Rect r) return new double[] {r.min().x(), r.min().y(), r.max().x(), r.max().y()};
-        if (s instanceof Shape.Circle c) {
-            return new double[] {c.center().x() - c.radius(), c.center().y() - c.radius(), c.center().x() + c.radius(),
-                    c.center().y() + c.radius()};
-        }
-        double[] b = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (Vec2 p : ((Shape.Polygon) s).points()) {
-            b[0] = Math.min(b[0], p.x());
-            b[1] = Math.min(b[1], p.y());
-            b[2] = Math.max(b[2], p.x());
-            b[3] = Math.max(b[3], p.y());
-        }
-        return b;
+        return ShapeBoxes.of(s);
     }
 
     /**

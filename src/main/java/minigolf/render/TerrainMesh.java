@@ -121,13 +121,14 @@ public final class TerrainMesh {
         Theme.Materials palette = Themes.of(course.world()).materials();
         // Friction as physics sees it: zones, else the grid's per-node values, else the course's.
         FrictionField friction = new FrictionField(course.physics(), course.zones(), course.terrain());
+        double slick = slickness(course);
         int p = 0;
         for (int j = 0; j < rows; j++) {
             for (int i = 0; i < cols; i++) {
                 int k = j * cols + i;
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 double len = Math.sqrt(gx[k] * gx[k] + gy[k] * gy[k] + 1);
-                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), friction.hazardAt(x, y), x, y, h[k], minH, maxH, rgb);
+                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y) / slick, friction.hazardAt(x, y), x, y, h[k], minH, maxH, rgb);
                 p = put(v, p, x, y, h[k], -gx[k] / len, -gy[k] / len, 1 / len, rgb, stripes);
             }
         }
@@ -207,6 +208,7 @@ public final class TerrainMesh {
         int j1 = Math.min(rows - 1, (int) Math.ceil((maxY - b.minY()) / dy));
         if (j0 > j1 || maxX < b.minX() || minX > b.maxX()) return null;
         FrictionField friction = new FrictionField(course.physics(), course.zones(), course.terrain());
+        double slick = slickness(course);
         Theme.Materials palette = Themes.of(course.world()).materials();
         float[] v = new float[(j1 - j0 + 1) * cols * STRIDE];
         double[] s = new double[3];
@@ -217,7 +219,7 @@ public final class TerrainMesh {
                 double x = b.minX() + i * dx, y = b.minY() + j * dy;
                 terrain.sample(x, y, s);
                 double len = Math.sqrt(s[1] * s[1] + s[2] * s[2] + 1);
-                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y), friction.hazardAt(x, y), x, y, s[0], minH, maxH, rgb);
+                double stripes = unstripedColor(mode, palette, friction.kinetic(x, y) / slick, friction.hazardAt(x, y), x, y, s[0], minH, maxH, rgb);
                 p = put(v, p, x, y, s[0], -s[1] / len, -s[2] / len, 1 / len, rgb, stripes);
             }
         }
@@ -244,6 +246,17 @@ public final class TerrainMesh {
         double k = lerp(1.0, 0.58, t);
         Rgb c = palette.edgeColor();
         set(out, c.r() * k, c.g() * k, c.b() * k);
+    }
+
+    /**
+     * What the frictions are divided by before they choose a colour: 1, or for a course whose own
+     * friction is below {@link #GRASS_ICE_FRICTION} (the classic tracks' grass is 0.041) that
+     * friction's share of it, so that its own grass is drawn as grass and only what is slicker
+     * than it as ice.
+     */
+    static double slickness(minigolf.course.Course course) {
+        double own = course.physics().kineticFriction();
+        return own > 0 && own < GRASS_ICE_FRICTION ? own / GRASS_ICE_FRICTION : 1;
     }
 
     /** The colour of the surface at (x, y) with height h, for a terrain spanning [minH, maxH]. */

@@ -144,7 +144,7 @@ public final class PropMeshes {
             double bx = x + sx * wl[2] + fx * wl[3], by = y + sy * wl[2] + fy * wl[3];
             double len = Math.hypot(bx - ax, by - ay), turn = Math.toDegrees(Math.atan2(by - ay, bx - ax));
             float[] face = wl[1] == 0 && wl[3] == 0 ? stone : dark;
-            // A battered plinth, then courses of stone in slightly different shades (one flat grey box read as a placeholder).
+            // A battered plinth, then courses of stone in slightly different shades, so the wall reads as masonry from the tee.
             w.box((ax + bx) / 2, (ay + by) / 2, z - 0.5, z + wallH * 0.18, len + size * 0.02, size * 0.075, turn, 0.9, shade(face, 0.8));
             for (int c = 0; c < COURSES; c++) {
                 double z0 = z + wallH * (0.18 + 0.82 * c / COURSES), z1 = z + wallH * (0.18 + 0.82 * (c + 1) / COURSES);

@@ -29,7 +29,7 @@ import minigolf.physics.World;
  * The fewest strokes of each course: planner-aces' game (budget 1,000,000), and with {@code --search}
  * also {@link ExhaustiveStrokeSearch} for a game at least one stroke shorter (as
  * {@link TileCourseReport}); read from FILE when it exists (lines "INDEX FEWEST"), else computed and
- * written there. Each level then plays every course GAMES times (game seeds 1..GAMES, budget
+ * written there (with any missing line filled in). Each level then plays every course GAMES times (game seeds 1..GAMES, budget
  * {@link #BUDGET} a game, at most {@link #MAX_STROKES} strokes): its mean strokes over the fewest
  * is the course's ratio; the report gives the ratios' median and quartiles over the courses, as the
  * human figure does over tracks.
@@ -39,6 +39,8 @@ final class LevelCalibration {
     static final int MAX_STROKES = 10;
     /** Simulations per game: the game's 20,000 a stroke over the stroke limit. */
     static final long BUDGET = 20_000L * MAX_STROKES;
+    /** planner-aces' time limit for a course's fewest strokes, s. */
+    static final int ACES_SECONDS = 900;
 
     /** One level's games on one course. */
     record CourseResult(int course, int fewest, int[] strokes, boolean allHoled) {
@@ -79,8 +81,10 @@ final class LevelCalibration {
 
     /** The fewest strokes for one course: planner-aces' game, shortened by the exhaustive search when asked. */
     static int fewest(World world, boolean search) {
+        // Bounded by its simulations; the time limit only stops a runaway (at 60 s a loaded machine cut
+        // three of seed 1001's courses short: no game holed within 10 strokes).
         Playthrough.Result aces = Playthrough.play(Bots.create("planner-aces"), world, SimulationSettings.DEFAULT, MAX_STROKES,
-                1_000_000, 1, CancellationToken.withTimeLimit(60), BotProgress.NONE);
+                1_000_000, 1, CancellationToken.withTimeLimit(ACES_SECONDS), BotProgress.NONE);
         int best = aces.holed() ? aces.strokes() : MAX_STROKES;
         if (!search || best <= 1) return best;
         ExhaustiveStrokeSearch.Result s = ExhaustiveStrokeSearch.search(world,
@@ -123,15 +127,40 @@ final class LevelCalibration {
     }
 
     /** A level's total strokes over a round's holes, one total per game seed 1..games (every hole played by Playthrough). */
-    static int[] roundTotals(String level, List<World> holes, int games) {
-        int[] totals = new int[games];
-        for (int g = 1; g <= games; g++) {
-            for (World hole : holes) {
-                totals[g - 1] += Playthrough.play(bot(level), hole, SimulationSettings.DEFAULT, MAX_STROKES, BUDGET, g,
-                        CancellationToken.withTimeLimit(120), BotProgress.NONE).strokes();
+    static int[] roundTotals(String level, List<World> holes, int games, int threads) {
+        return Arrays.stream(roundStrokes(level, holes, games, threads)).mapToInt(g -> Arrays.stream(g).sum()).toArray();
+    }
+
+    /** The seed of hole {@code hole} (0-based) in round game {@code game}. */
+    static long holeSeed(int game, int hole) {
+        return game * 1000L + hole;
+    }
+
+    /** A level's strokes on each of a round's holes, one row per game seed 1..games, on {@code threads} threads. */
+    static int[][] roundStrokes(String level, List<World> holes, int games, int threads) {
+        ExecutorService pool = Executors.newFixedThreadPool(threads);
+        try {
+            List<Future<Integer>> runs = new ArrayList<>();
+            for (int g = 1; g <= games; g++) {
+                for (int h = 0; h < holes.size(); h++) {
+                    // A seed of its own for each hole: with the game's seed on every hole, a level's first
+                    // stroke would be misplayed alike on all eighteen (all aces or none).
+                    long seed = holeSeed(g, h);
+                    World hole = holes.get(h);
+                    runs.add(pool.submit(() -> Playthrough.play(bot(level), hole, SimulationSettings.DEFAULT, MAX_STROKES,
+                            BUDGET, seed, CancellationToken.withTimeLimit(120), BotProgress.NONE).strokes()));
+                }
             }
+            int[][] strokes = new int[games][holes.size()];
+            for (int g = 0; g < games; g++) {
+                for (int h = 0; h < holes.size(); h++) strokes[g][h] = runs.get(g * holes.size() + h).get();
+            }
+            return strokes;
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        } finally {
+            pool.shutdownNow();
         }
-        return totals;
     }
 
     public static void main(String[] args) throws IOException {
@@ -157,11 +186,15 @@ final class LevelCalibration {
             }
         }
         StringBuilder written = new StringBuilder();
+        boolean computed = false;
         for (int i = 0; i < count; i++) {
-            if (fewest[i] == 0) fewest[i] = fewest(worlds.get(i), search);
+            if (fewest[i] == 0) {
+                fewest[i] = fewest(worlds.get(i), search);
+                computed = true;
+            }
             written.append(i).append(' ').append(fewest[i]).append('\n');
         }
-        if (file != null && !Files.exists(file)) Files.writeString(file, written);
+        if (file != null && computed) Files.writeString(file, written);
         System.out.println("fewest strokes (" + (search ? "planner-aces and the exhaustive search" : "planner-aces") + "): "
                 + Arrays.toString(fewest));
         System.out.printf(Locale.ROOT, "tile seed %d, %d courses, %d games each, game seeds 1-%d, budget %,d a game, at most %d strokes%n",
@@ -185,9 +218,10 @@ final class LevelCalibration {
         }
     }
 
-    /** {@code --round=FILE GAMES [--levels=...]}: each level's round totals against the round's par. */
+    /** {@code --round=FILE GAMES [--levels=...] [--threads=N] [--per-hole]}: each level's round totals against the round's par. */
     private static void mainRound(String roundFile, String[] args) {
         int games = Integer.parseInt(args[1]);
+        int threads = Integer.parseInt(option(args, "--threads=", "1"));
         Round round;
         try {
             round = RoundLoader.load(Path.of(roundFile));
@@ -198,10 +232,15 @@ final class LevelCalibration {
         int par = round.holes().stream().mapToInt(Round.Hole::par).sum();
         System.out.printf(Locale.ROOT, "%s, par %d, game seeds 1-%d%n", round.name(), par, games);
         for (String level : option(args, "--levels=", String.join(",", Level.ids())).split(",")) {
-            int[] totals = roundTotals(level, holes, games);
+            int[][] strokes = roundStrokes(level, holes, games, threads);
+            int[] totals = Arrays.stream(strokes).mapToInt(g -> Arrays.stream(g).sum()).toArray();
+            long aces = Arrays.stream(strokes).flatMapToInt(Arrays::stream).filter(s -> s == 1).count();
             long above = Arrays.stream(totals).filter(t -> t > par).count(), below = Arrays.stream(totals).filter(t -> t < par).count();
-            System.out.printf(Locale.ROOT, "%s: totals %s; above par %d, below par %d, level with par %d%n", level,
-                    Arrays.toString(totals), above, below, games - above - below);
+            System.out.printf(Locale.ROOT, "%s: totals %s; above par %d, below par %d, level with par %d; %d aces in %d games%n",
+                    level, Arrays.toString(totals), above, below, games - above - below, aces, games);
+            if (List.of(args).contains("--per-hole")) {
+                for (int[] game : strokes) System.out.println("    holes " + Arrays.toString(game));
+            }
         }
     }
 

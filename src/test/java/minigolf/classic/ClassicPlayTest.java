@@ -82,7 +82,10 @@ class ClassicPlayTest {
         assertEquals(Outcome.STOPPED, shortOf.outcome());
     }
 
-    /** Sticky walls keep the ball, bouncy ones send it back further than blocks. */
+    /**
+     * Sticky walls keep the ball, bouncy ones (restitution 2) send it back further than blocks: how
+     * far west the ball gets after meeting the strip (a bouncy wall sends it to the west fence).
+     */
     @Test
     void wallKindsBounceDifferently() throws Exception {
         double[] back = new double[3];
@@ -91,11 +94,40 @@ class ClassicPlayTest {
             Simulator s = simulator(strip(elements[i]));
             Course c = s.world().course();
             double from = 15 * 0.25;
-            ShotResult r = east(s, from, 2.0);
+            double[] west = {Double.MAX_VALUE};
+            boolean[] met = {false};
+            ShotResult r = s.simulate(from, c.start().y(), 2.0, 0, (t, x, y, vx, vy) -> {
+                met[0] |= vx < 0;
+                if (met[0]) west[0] = Math.min(west[0], x);
+            });
             assertEquals(Outcome.STOPPED, r.outcome());
-            back[i] = 20 * 0.25 - r.endX();
+            back[i] = 20 * 0.25 - west[0];
         }
         assertTrue(back[0] < back[1] && back[1] < back[2], java.util.Arrays.toString(back));
         assertFalse(back[0] > 0.3, "sticky: " + back[0]);
+    }
+
+    /**
+     * A downhill field that pushes the ball back into a bouncy wall: the ball bounces, climbs
+     * against the push, falls back and bounces again, losing speed each time, and comes to rest at
+     * the wall. With bouncy walls above restitution 1 (as first imported) every bounce gave back the
+     * fastest shot's speed and the ball bounced until the stroke's 10-minute limit (a sample track
+     * did so on every shot).
+     */
+    @Test
+    void aBallPushedIntoABouncyWallComesToRest() throws Exception {
+        int[] codes = Tracks.framed();
+        Tracks.set(codes, 44, 12, TileMap.GRASS);
+        Tracks.set(codes, 2, 22, TileMap.specialTile(1, PixelMap.GRASS)); // the hole out of the way
+        for (int y = 1; y < 24; y++) {
+            for (int x = 5; x <= 44; x++) Tracks.set(codes, x, y, TileMap.elementTile(0, PixelMap.DOWNHILL_N + 2, PixelMap.DOWNHILL_N + 2));
+            Tracks.set(codes, 45, y, TileMap.elementTile(0, PixelMap.BOUNCY, PixelMap.BOUNCY));
+        }
+        Simulator s = simulator(codes);
+        ShotResult r = east(s, s.world().course().start().x(), 1.0);
+        assertEquals(Outcome.STOPPED, r.outcome());
+        assertTrue(r.time() < 60, "came to rest after " + r.time() + " s");
+        // At the wall: x = 45 tiles less the ball's radius.
+        assertEquals(45 * 0.25 - s.world().course().physics().ballRadius(), r.endX(), 0.01);
     }
 }

@@ -27,7 +27,7 @@ class ElementsFormatTest {
             "  \"obstacles\": [" + OBSTACLES + "],",
             "  \"pushZones\": [ { \"shape\": { \"type\": \"rect\", \"min\": [-4, 2], \"max\": [-3, 4] }, \"push\": [0, -1.5] } ],",
             "  \"magnets\": [ { \"position\": [3, 3], \"radius\": 0.6, \"strength\": -2 } ],",
-            "  \"teleports\": [ { \"entry\": { \"type\": \"circle\", \"center\": [0, -3], \"radius\": 0.2 }, \"exits\": [ { \"position\": [3.5, 0] }, { \"position\": [-4, -4], \"directionDeg\": 45 } ] } ]");
+            "  \"teleports\": [ { \"entry\": { \"type\": \"circle\", \"center\": [0, -3], \"radius\": 0.2 }, \"exits\": [ { \"position\": [3.5, 0] }, { \"position\": [-4, -4], \"directionDeg\": 45 } ], \"seed\": 7 } ]");
 
     static String withElements() {
         return edit("  \"obstacles\": []", ELEMENTS);
@@ -52,6 +52,7 @@ class ElementsFormatTest {
         assertEquals(new Shape.Circle(new Vec2(0, -3), 0.2), t.entry());
         assertNull(t.exits().get(0).directionDeg());
         assertEquals(45.0, t.exits().get(1).directionDeg());
+        assertEquals(7L, t.seed());
         assertEquals(true, c.hasMovingObstacles());
     }
 
@@ -128,6 +129,8 @@ class ElementsFormatTest {
                 error(edit("  \"obstacles\": []", "  \"obstacles\": [],\n  \"magnets\": [ { \"position\": [0, 0], \"radius\": 1, \"strength\": 51 } ]")));
         assertEquals("courses/x.json: magnets[0].radius: must be > 0, got 0",
                 error(edit("  \"obstacles\": []", "  \"obstacles\": [],\n  \"magnets\": [ { \"position\": [0, 0], \"radius\": 0, \"strength\": 1 } ]")));
+        assertEquals("courses/x.json: teleports[0].seed: expected a whole number, got 1.5",
+                error(edit("  \"obstacles\": []", "  \"obstacles\": [],\n  \"teleports\": [ { \"entry\": { \"type\": \"circle\", \"center\": [0, 0], \"radius\": 0.2 }, \"exits\": [ { \"position\": [1, 1] } ], \"seed\": 1.5 } ]")));
         assertEquals("courses/x.json: teleports[0].exits: a teleport needs at least one exit",
                 error(edit("  \"obstacles\": []", "  \"obstacles\": [],\n  \"teleports\": [ { \"entry\": { \"type\": \"circle\", \"center\": [0, 0], \"radius\": 0.2 }, \"exits\": [] } ]")));
         assertEquals("courses/x.json: teleports[0].exits[0].position: (0.1, 0) is inside the entry of teleports[0] (the ball would be sent on at once)",

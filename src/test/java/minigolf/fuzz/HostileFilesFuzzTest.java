@@ -28,8 +28,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Mutates every bundled course (every course file under courses/: the examples, bench, holes,
- * chips, friction and hostile), a saved game of each and a settings file with a seeded generator
- * ({@link Mutator}) and checks each case ({@link FuzzChecks}): it loads and gives valid JSON of
+ * chips, friction, hostile, practice and the worlds), a saved game of each and a settings file
+ * with a seeded generator ({@link Mutator}) and checks each case ({@link FuzzChecks}): it loads and gives valid JSON of
  * finite numbers, or it is refused with one line that names the file and the problem (exit code 2
  * on the command line). Never a crash, a hang, an internal error or a stack trace. Cases that once
  * failed are kept in src/test/resources/hostile (see {@link HostileRegressionTest}); rounds, saved
@@ -41,7 +41,7 @@ class HostileFilesFuzzTest {
     static final int CASES_PER_SAVE = 6;
     static final int SETTINGS_CASES = 300;
     /** As many bundled courses as courses/ holds today (docs/files-from-others.md says "every bundled course"). */
-    static final int BUNDLED_COURSES = 117;
+    static final int BUNDLED_COURSES = 125;
 
     @TempDir
     Path dir;
@@ -58,7 +58,7 @@ class HostileFilesFuzzTest {
         Path root = projectDir().resolve("courses");
         java.util.Set<String> folders = new java.util.TreeSet<>();
         for (Path c : courses) folders.add(root.relativize(c).getParent() == null ? "." : root.relativize(c).getParent().toString());
-        assertEquals(List.of(".", "bench", "chips", "friction", "holes", "hostile", "worlds/canyon", "worlds/seaside", "worlds/winter"),
+        assertEquals(List.of(".", "bench", "chips", "friction", "holes", "hostile", "practice", "worlds/canyon", "worlds/seaside", "worlds/winter"),
                 List.copyOf(folders));
         assertTrue(courses.size() >= BUNDLED_COURSES, "every bundled course: " + courses.size());
     }

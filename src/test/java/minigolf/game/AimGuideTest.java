@@ -134,15 +134,15 @@ class AimGuideTest {
     void theWorkerHandsOutTheWholeGuideWithoutWaiting() throws Exception {
         try (AimGuideWorker worker = new AimGuideWorker()) {
             SimulationSettings s = SimulationSettings.DEFAULT;
-            assertNull(worker.guide(FLAT, s, -3, 0, 3, 0, 0), "nothing is ready at the first ask: it is worked out meanwhile");
-            for (int i = 0; i < 500 && !worker.isReady(FLAT, -3, 0, 3, 0, 0, s); i++) Thread.sleep(10);
-            AimGuide g = worker.guide(FLAT, s, -3, 0, 3, 0, 0);
+            assertNull(worker.guide(FLAT, s, -3, 0, 3, 0, 0, 0), "nothing is ready at the first ask: it is worked out meanwhile");
+            for (int i = 0; i < 500 && !worker.isReady(FLAT, -3, 0, 3, 0, 0, 0, s); i++) Thread.sleep(10);
+            AimGuide g = worker.guide(FLAT, s, -3, 0, 3, 0, 0, 0);
             assertArrayEquals(AimGuide.preview(FLAT, s, -3, 0, 3, 0, AimGuide.FULL_SECONDS).points(), g.points());
             // A new aim: the last guide stays on show (the same array) until the new one is ready.
-            assertSame(g, worker.guide(FLAT, s, -3, 0, 2, 0, 0));
-            for (int i = 0; i < 500 && !worker.isReady(FLAT, -3, 0, 2, 0, 0, s); i++) Thread.sleep(10);
-            assertEquals(-3 + 4 / (2 * MU_G), worker.guide(FLAT, s, -3, 0, 2, 0, 0).points()[3 * (worker.guide(FLAT, s, -3, 0, 2,
-                    0, 0).pointCount() - 1)], 1e-4);
+            assertSame(g, worker.guide(FLAT, s, -3, 0, 2, 0, 0, 0));
+            for (int i = 0; i < 500 && !worker.isReady(FLAT, -3, 0, 2, 0, 0, 0, s); i++) Thread.sleep(10);
+            assertEquals(-3 + 4 / (2 * MU_G), worker.guide(FLAT, s, -3, 0, 2, 0, 0, 0).points()[3 * (worker.guide(FLAT, s, -3, 0, 2,
+                    0, 0, 0).pointCount() - 1)], 1e-4);
         }
     }
 }

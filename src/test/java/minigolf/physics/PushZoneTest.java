@@ -26,9 +26,9 @@ class PushZoneTest {
 
     @Test
     void aPushIsTheSameAsATilt() {
-        // The classic model: flat ground with push f rolls exactly as the plane h = -f.x/g does. The
-        // plane takes long steps where nothing is near (docs/physics.md, "Step control"), the pushed
-        // course not (a push zone covers it): they agree to a micrometre, not to the last bit.
+        // The classic model: flat ground with push f rolls exactly as the plane h = -f.x/g does.
+        // Both take long steps (inside a zone that holds the whole step the push is constant:
+        // docs/physics.md, "Step control"); they agree to a micrometre, not to the last bit.
         World pushed = ElementWorlds.flat(String.format(EVERYWHERE, 0.6, -0.3));
         World tilted = ElementWorlds.course("1-" + (0.6 / G) + "*x+" + (0.3 / G) + "*y", "");
         Random random = new Random(24);

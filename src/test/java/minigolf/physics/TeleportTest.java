@@ -1,6 +1,7 @@
 package minigolf.physics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -62,5 +63,43 @@ class TeleportTest {
         assertEquals(Outcome.OUT, r.outcome());
         assertEquals(0, r.endX());
         assertEquals(0, r.endY());
+    }
+
+    /**
+     * A seeded teleport (the classic tracks' rule) draws its exit: the same shot draws the same exit,
+     * and over many shots each of three exits comes about a third of the time. The entry here is a
+     * grid of cells (as the classic importer writes), which a fast step must not jump.
+     */
+    @Test
+    void aSeededTeleportDrawsItsExitTheSameForTheSameShot() {
+        World plain = ElementWorlds.flat("");
+        // Cells of 0.1 m from (0, -1): columns 10..11 (x 1.0 to 1.2), rows 9..10 (y -0.1 to 0.1).
+        minigolf.course.Shape entry = new minigolf.course.Shape.Cells(new minigolf.course.Vec2(0, -1), 0.1, 40, 20,
+                new int[] {9, 10, 12, 10, 10, 12});
+        List<minigolf.course.Teleport.Exit> exits = List.of(
+                new minigolf.course.Teleport.Exit(new minigolf.course.Vec2(-3, -2), null),
+                new minigolf.course.Teleport.Exit(new minigolf.course.Vec2(-3, 0), null),
+                new minigolf.course.Teleport.Exit(new minigolf.course.Vec2(-3, 2), null));
+        minigolf.course.Teleport t = new minigolf.course.Teleport(entry, exits, 28L);
+        World w = new World(plain.course().withElements(List.of(), List.of(), List.of(t)), plain.terrain());
+        Simulator s = ElementWorlds.simulator(w);
+        int[] count = new int[3];
+        for (int k = 0; k < 300; k++) {
+            double speed = 2 + k * 0.0035; // below 3.13 m/s: the ball does not roll back into the entry
+            ShotResult r = s.simulate(0, 0, speed, 0, 0, null);
+            StrokeEvent e = r.events().get(0);
+            assertEquals(StrokeEvent.Type.TELEPORT, e.type());
+            assertEquals(-3, e.x());
+            count[(int) Math.round(e.y() / 2) + 1]++;
+            // Out at the exit with the speed it had at the entry's edge (x = 1), on along +x.
+            double mg = 0.981, v1Squared = speed * speed - 2 * mg * 1;
+            assertEquals(-3 + v1Squared / (2 * mg), r.endX(), 1e-5);
+            assertEquals(r, s.simulate(0, 0, speed, 0, 0, null));
+        }
+        for (int c : count) assertTrue(c > 60 && c < 140, java.util.Arrays.toString(count));
+        // At 4.8 m/s a step is about 80 mm: the 0.2 m entry is still met, at its edge (x = 1).
+        StrokeEvent fast = s.simulate(0, 0, 4.8, 0, 0, null).events().get(0);
+        assertEquals(StrokeEvent.Type.TELEPORT, fast.type());
+        assertEquals((4.8 - Math.sqrt(4.8 * 4.8 - 2 * 0.981)) / 0.981, fast.t(), 1e-4);
     }
 }

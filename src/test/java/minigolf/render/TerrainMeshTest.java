@@ -131,6 +131,41 @@ class TerrainMeshTest {
         assertTrue(m.data().get(roughest, COLOR, 0) > m.data().get(roughest, COLOR, 1), "roughest ground is not sand");
     }
 
+    /**
+     * A classic track's own grass is slicker (0.041) than the threshold under which the ground is
+     * glazed as ice (0.06): it is drawn as plain grass, with stripes, and only ground slicker than
+     * the course's own (its ice zone) gets the glaze. Before, every classic track was glazed.
+     */
+    @Test
+    void aCourseWhoseOwnGrassIsSlickDrawsItAsGrassAndOnlySlickerGroundAsIce() {
+        Course flat = TestCourses.flat();
+        minigolf.course.PhysicsSettings slick = new minigolf.course.PhysicsSettings(9.81, 0.041, 0.06, 5.0,
+                minigolf.course.PhysicsModel.CLASSIC);
+        minigolf.course.Zone ice = new minigolf.course.Zone(new minigolf.course.Shape.Rect(new minigolf.course.Vec2(1, 1),
+                new minigolf.course.Vec2(3, 3)), 0.016, 0.06);
+        Course classic = new Course(Course.FORMAT, "Classic", flat.terrain(), flat.bounds(), slick, flat.start(), flat.hole(),
+                java.util.List.of(ice));
+        assertEquals(0.041 / TerrainMesh.GRASS_ICE_FRICTION, TerrainMesh.slickness(classic), 1e-12);
+        assertEquals(1, TerrainMesh.slickness(flat));
+        TerrainMesh plain = TerrainMesh.build(flat, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN);
+        TerrainMesh m = TerrainMesh.build(classic, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN);
+        int grass = vertexAt(m, -2, -2), glazed = vertexAt(m, 2, 2);
+        for (int k = 0; k < 4; k++) {
+            assertEquals(plain.data().get(grass, COLOR, k), m.data().get(grass, COLOR, k), 1e-6, "component " + k);
+        }
+        assertEquals(1, m.data().get(grass, COLOR, 3), 1e-6); // striped grass
+        // Ice: 0.016 / (0.041 / 0.06) = 0.023, below ICE_FRICTION: fully glazed, no stripes, bluer than the grass.
+        assertEquals(0, m.data().get(glazed, COLOR, 3), 1e-6);
+        assertTrue(m.data().get(glazed, COLOR, 2) > m.data().get(grass, COLOR, 2) + 0.1);
+    }
+
+    private static int vertexAt(TerrainMesh m, double x, double y) {
+        for (int v = 0; v < m.columns() * m.rows(); v++) {
+            if (Math.abs(m.data().get(v, POS, 0) - x) < 1e-4 && Math.abs(m.data().get(v, POS, 1) - y) < 1e-4) return v;
+        }
+        throw new AssertionError("no vertex at " + x + ", " + y);
+    }
+
     private static float[] color(Course c, double x, double y) {
         float[] out = new float[3];
         TerrainMesh.surfaceColor(TerrainMesh.ColorMode.GREEN, c.zones(), x, y, TestCourses.LAKE.height(x, y),

@@ -22,32 +22,24 @@ class LongTextTest {
     private static final String LONG = "Meadowbrook ".repeat(100_000 / 12 + 1).substring(0, 100_000);
     private static final String LONG_WORD = "x".repeat(100_000);
 
-    private Window window;
+    private UiTestWindow ui;
     private Framebuffer target;
     private NuklearLayer layer;
 
     @BeforeEach
     void open() {
-        window = new Window("long text test", W, H, Window.Options.hidden());
-        target = new Framebuffer(W, H, 0);
-        layer = new NuklearLayer(0, 1f);
-        layer.setDisplaySize(W, H, W, H);
+        ui = new UiTestWindow("long text test", W, H, 0f, 0f, 0f);
+        target = ui.target;
+        layer = ui.layer;
     }
 
     @AfterEach
     void close() {
-        layer.close();
-        target.close();
-        window.close();
+        ui.close();
     }
 
-    private void frame(Runnable ui) {
-        target.bind();
-        glViewport(0, 0, W, H);
-        glClear(GL_COLOR_BUFFER_BIT);
-        layer.newFrame();
-        ui.run();
-        layer.render();
+    private void frame(Runnable widgets) {
+        ui.frame(widgets);
     }
 
     @Test
@@ -103,7 +95,7 @@ class LongTextTest {
 
     @Test
     void aLongTitleIsCutForTheWindowSystem() {
-        window.setTitle("Minigolf - " + LONG); // GLFW encodes it on the same small stack
+        ui.window.setTitle("Minigolf - " + LONG); // GLFW encodes it on the same small stack
         String shown = Window.shortTitle("Minigolf - " + LONG);
         assertEquals(200, shown.length());
         assertTrue(shown.startsWith("Minigolf - Meadowbrook") && shown.endsWith("..."), shown);

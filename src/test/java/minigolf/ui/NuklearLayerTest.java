@@ -3,7 +3,6 @@ package minigolf.ui;
 import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicInteger;
 import minigolf.render.Framebuffer;
-import minigolf.render.Window;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -20,33 +19,24 @@ import static org.lwjgl.system.MemoryUtil.*;
  */
 class NuklearLayerTest {
     private static final int W = 360, H = 240;
-    private Window window;
+    private UiTestWindow ui;
     private Framebuffer target;
     private NuklearLayer layer;
 
     @BeforeEach
     void open() {
-        window = new Window("nuklear test", W, H, Window.Options.hidden());
-        target = new Framebuffer(W, H, 0);
-        layer = new NuklearLayer(0, 1f);
-        layer.setDisplaySize(W, H, W, H);
+        ui = new UiTestWindow("nuklear test", W, H, 0f, 0f, 1f);
+        target = ui.target;
+        layer = ui.layer;
     }
 
     @AfterEach
     void close() {
-        layer.close();
-        target.close();
-        window.close();
+        ui.close();
     }
 
-    private void frame(Runnable ui) {
-        target.bind();
-        glViewport(0, 0, W, H);
-        glClearColor(0f, 0f, 1f, 1f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        layer.newFrame();
-        ui.run();
-        layer.render();
+    private void frame(Runnable widgets) {
+        ui.frame(widgets);
     }
 
     private static void panel(Runnable content) {

@@ -171,14 +171,14 @@ final class ElementPanels {
                     Teleport.Exit e = t.exits().get(0);
                     List<Teleport.Exit> exits = new ArrayList<>(t.exits());
                     exits.set(0, new Teleport.Exit(e.position(), Double.isFinite(c.get()) ? c.get() : null));
-                    editor.setTeleport(j, new Teleport(t.entry(), exits));
+                    editor.setTeleport(j, new Teleport(t.entry(), exits, t.seed()));
                 }
-                if (Gui.button("Entry to tool")) editor.setTeleport(j, new Teleport(ObjectsText.moved(t.entry(), tx, ty), t.exits()));
+                if (Gui.button("Entry to tool")) editor.setTeleport(j, new Teleport(ObjectsText.moved(t.entry(), tx, ty), t.exits(), t.seed()));
                 Gui.sameLine();
                 if (Gui.button("Exit to tool")) {
                     List<Teleport.Exit> exits = new ArrayList<>(t.exits());
                     exits.set(0, new Teleport.Exit(new Vec2(tx, ty), t.exits().get(0).directionDeg()));
-                    editor.setTeleport(j, new Teleport(t.entry(), exits));
+                    editor.setTeleport(j, new Teleport(t.entry(), exits, t.seed()));
                 }
                 if (Gui.button("Delete teleport")) {
                     editor.setTeleport(j, null);
@@ -206,6 +206,12 @@ final class ElementPanels {
             if (s instanceof Shape.Rect r) {
                 double hx = (r.max().x() - r.min().x()) / 2, hy = (r.max().y() - r.min().y()) / 2;
                 return new Shape.Rect(new Vec2(x - hx, y - hy), new Vec2(x + hx, y + hy));
+            }
+            if (s instanceof Shape.Cells c) {
+                // The grid moved with its cells, the centre of the cells' box to (x, y).
+                double[] box = minigolf.physics.ShapeBoxes.of(c);
+                double dx = x - (box[0] + box[2]) / 2, dy = y - (box[1] + box[3]) / 2;
+                return new Shape.Cells(new Vec2(c.origin().x() + dx, c.origin().y() + dy), c.size(), c.columns(), c.rows(), c.spans());
             }
             List<Vec2> points = ((Shape.Polygon) s).points();
             double cx = 0, cy = 0;

@@ -46,11 +46,24 @@ public final class HeadlessPlayer {
                           String name, String level, Path seatFile, long thinkMillis) {
     }
 
+    /** Waited for before joining (the benchmark holds each room's last player until every room is nearly full). */
+    private java.util.concurrent.CountDownLatch joinGate;
+
+    /** Joins only once {@code gate} opens (a room's last seat: its round starts when it is taken). */
+    public HeadlessPlayer joinAfter(java.util.concurrent.CountDownLatch gate) {
+        joinGate = gate;
+        return this;
+    }
+
     /** Hooks for the benchmark: a shot sent (with the room's event count) and its stroke received. */
     public interface Timing {
         void shotSent(long seq, long nanos);
 
         void strokeReceived(long seq, int seat, long nanos);
+
+        /** The player holds its seat now (its connection is open). */
+        default void seated() {
+        }
     }
 
     /** Connection retries: the first after 0.25 s, doubling to 8 s, for at most this long in all. */
@@ -64,6 +77,8 @@ public final class HeadlessPlayer {
     private final RoomMirror mirror = new RoomMirror();
     private OnlineClient client;
     private boolean printedRoom;
+    /** The last messages taken in, for a report on a player that never ends. */
+    private final java.util.List<String> recent = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
     /** The seat came from the seat file: the room's code was printed by the run that created it. */
     private boolean resumed;
     private long shotAt = -1;
@@ -75,6 +90,14 @@ public final class HeadlessPlayer {
         this.timing = timing;
     }
 
+    /** The last messages this player took in (type, and the problem for errors), for reports. */
+    public String recentMessages() {
+        synchronized (recent) {
+            return String.join(", ", recent) + "; seat " + mirror.seat() + " turn " + mirror.turn() + " seq " + mirror.seq()
+                    + " shotAt " + shotAt + " status " + mirror.status();
+        }
+    }
+
     /** Why the player stopped early: one line for the user. */
     public static final class Failure extends Exception {
         public Failure(String message) {
@@ -82,12 +105,17 @@ public final class HeadlessPlayer {
         }
     }
 
-    private record Closed(String reason) {
+    private record Closed(OnlineClient client, String reason) {
+    }
+
+    /** A message with the moment it arrived (the benchmark times strokes by arrival, not by when they were read). */
+    private record Arrived(ObjectNode message, long nanos) {
     }
 
     /** Plays to the end of the round and prints the scorecard; the room's code first when it created the room. */
     public void run() throws Failure, InterruptedException {
         SeatFile saved = SeatFile.read(options.seatFile());
+        if (joinGate != null && saved == null && options.create() == null) joinGate.await();
         connect(true);
         resumed = saved != null;
         if (saved != null) {
@@ -98,25 +126,48 @@ public final class HeadlessPlayer {
         } else {
             client.send(new ClientMessage.Join(options.room(), options.name()));
         }
+        long thinkingAt = -1, thinkUntil = 0;
         while (true) {
-            Object item = inbox.poll(30, TimeUnit.SECONDS);
+            // On this seat's turn the player thinks for a while (messages are taken in meanwhile), then shoots.
+            long waitMillis = 30_000;
+            if (mirror.isMyTurn() && shotAt != mirror.seq()) {
+                long now = System.nanoTime();
+                if (thinkingAt != mirror.seq()) {
+                    thinkingAt = mirror.seq();
+                    thinkUntil = now + options.thinkMillis() * 1_000_000;
+                }
+                if (now >= thinkUntil) {
+                    shoot();
+                    continue;
+                }
+                waitMillis = Math.max(1, (thinkUntil - now) / 1_000_000);
+            }
+            Object item = inbox.poll(waitMillis, TimeUnit.MILLISECONDS);
             if (item == null) {
-                client.send(new ClientMessage.Ping());
+                if (waitMillis == 30_000) client.send(new ClientMessage.Ping());
                 continue;
             }
             if (item instanceof Closed c) {
+                if (c.client() != client) continue; // a connection already replaced
                 if (mirror.token() == null && saved == null) throw new Failure(c.reason());
                 reconnect(c.reason(), saved);
                 continue;
             }
-            ObjectNode m = (ObjectNode) item;
-            RoomMirror.Update u = mirror.apply(m);
+            Arrived a = (Arrived) item;
+            ObjectNode m = a.message();
+            RoomMirror.Update u = mirror.apply(m, a.nanos() / 1_000_000);
+            recent.add(m.path("type").asText() + (u.change() == RoomMirror.Change.OUT_OF_STEP || u.change() == RoomMirror.Change.ERROR
+                    ? "(" + u.code() + ": " + u.text() + ")" : "") + "@" + mirror.seq());
+            while (recent.size() > 8) recent.remove(0);
             switch (u.change()) {
-                case JOINED -> joined();
+                case JOINED -> {
+                    joined();
+                    if (timing != null) timing.seated();
+                }
                 case ERROR -> error(u);
                 case OUT_OF_STEP -> client.send(new ClientMessage.Sync());
                 case EVENT -> {
-                    if (timing != null) timing.strokeReceived(u.event().seq(), u.event().seat(), System.nanoTime());
+                    if (timing != null) timing.strokeReceived(u.event().seq(), u.event().seat(), a.nanos());
                 }
                 case NOTICE, CHAT -> log.accept(u.text());
                 default -> {
@@ -127,7 +178,6 @@ public final class HeadlessPlayer {
                 client.close();
                 return;
             }
-            if (mirror.isMyTurn() && shotAt != mirror.seq() && inbox.isEmpty()) shoot();
         }
     }
 
@@ -152,50 +202,49 @@ public final class HeadlessPlayer {
         }
     }
 
-    private void shoot() throws InterruptedException {
+    private void shoot() {
         shotAt = mirror.seq();
-        if (options.thinkMillis() > 0) {
-            Thread.sleep(options.thinkMillis());
-            if (!inbox.isEmpty()) {
-                shotAt = -1; // something changed while thinking: look again
-                return;
-            }
-        }
         Game g = mirror.round().game();
         int seat = mirror.seat();
         PlayerState p = g.player(seat);
-        double[] v = plan(options.level(), g, seat, p, mirror.room().hashCode() * 31L + mirror.seq());
+        // Planned for the room's clock as this client reckons it now; the server hits it at its own reading plus the wait.
+        double[] v = plan(options.level(), g, seat, p, mirror.room().hashCode() * 31L + mirror.seq(),
+                mirror.clockAt(RoomMirror.nowMs()));
         double ground = Math.hypot(v[0], v[1]);
         double speed = Math.sqrt(ground * ground + v[2] * v[2]);
         double loft = Math.min(Loft.MAX_DEGREES, Loft.degreesOf(v[0], v[1], v[2]));
         double ax = ground > 0 ? v[0] / ground * speed : 0, ay = ground > 0 ? v[1] / ground * speed : speed;
         if (timing != null) timing.shotSent(mirror.seq(), System.nanoTime());
-        client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, 0));
+        client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, v[3]));
     }
 
-    /** The bot's shot (vx, vy, vz) within the course's speed limit. */
-    static double[] plan(String level, Game g, int seat, PlayerState p, long seed) {
+    /** The bot's shot (vx, vy, vz) within the course's speed limit and its wait (s), planned at course clock {@code clock}. */
+    static double[] plan(String level, Game g, int seat, PlayerState p, long seed, double clock) {
         ShotPlanner planner = BotCatalog.planner(level);
         double max = g.world().physics().maxSpeed();
-        double[] v = planner.plan(g.world(), g.settings(), p.x(), p.y(), p.total(), seed, BotConditions.of(g, seat, false),
-                new BotControl());
-        double vz = v.length == 3 ? Math.max(0, v[2]) : 0;
+        BotConditions now = BotConditions.of(g, seat, false);
+        double[] v = planner.plan(g.world(), g.settings(), p.x(), p.y(), p.total(), seed,
+                new BotConditions(now.noise(), now.hideFriction(), now.ownStrokes(), clock), new BotControl());
+        double vz = v.length >= 3 ? Math.max(0, v[2]) : 0;
+        double wait = v.length == 4 ? Math.min(Protocol.MAX_WAIT_SECONDS, Math.max(0, v[3])) : 0;
         double speed = Math.sqrt(v[0] * v[0] + v[1] * v[1] + vz * vz);
         double k = speed > max ? max / speed : 1;
-        return new double[]{v[0] * k, v[1] * k, vz * k};
+        return new double[]{v[0] * k, v[1] * k, vz * k, wait};
     }
 
     private void connect(boolean first) throws Failure {
         try {
+            OnlineClient[] self = new OnlineClient[1];
             client = OnlineClient.connect(options.server(), new OnlineClient.Listener() {
                 public void onMessage(ObjectNode message) {
-                    inbox.add(message);
+                    inbox.add(new Arrived(message, System.nanoTime()));
                 }
 
                 public void onClosed(String reason) {
-                    inbox.add(new Closed(reason));
+                    inbox.add(new Closed(self[0], reason));
                 }
             }, Duration.ofSeconds(10));
+            self[0] = client;
         } catch (IOException e) {
             if (first) throw new Failure(e.getMessage());
             client = null;

@@ -23,7 +23,7 @@ import minigolf.online.Json;
 public final class LoadBench {
     /** The measured figures. */
     public record Result(int players, int peakConnected, int roomsFinished, long shots, long[] latencyNanos,
-                         List<String> failures, Map<String, JsonNode> cards, double seconds) {
+                         List<String> failures, Map<String, JsonNode> cards, double seconds, int reconnects) {
         public double percentileMs(double p) {
             if (latencyNanos.length == 0) return Double.NaN;
             long[] sorted = latencyNanos.clone();
@@ -46,8 +46,13 @@ public final class LoadBench {
         List<String> failures = java.util.Collections.synchronizedList(new ArrayList<>());
         Map<String, JsonNode> cards = new ConcurrentHashMap<>();
         List<long[]> latencies = java.util.Collections.synchronizedList(new ArrayList<>());
-        AtomicInteger connected = new AtomicInteger(), peak = new AtomicInteger();
+        Map<String, HeadlessPlayer> playing = new ConcurrentHashMap<>();
+        AtomicInteger connected = new AtomicInteger(), peak = new AtomicInteger(), reconnects = new AtomicInteger();
         CountDownLatch done = new CountDownLatch(rooms * seats);
+        // Every room's last player waits until all the others are connected and seated: then every round starts at
+        // once, with all the players connected together.
+        CountDownLatch others = new CountDownLatch(rooms * Math.max(0, seats - 1));
+        CountDownLatch gate = new CountDownLatch(1);
         long start = System.nanoTime();
         for (int r = 0; r < rooms; r++) {
             CountDownLatch code = new CountDownLatch(1);
@@ -56,14 +61,15 @@ public final class LoadBench {
                 int seat = s;
                 String name = "P" + r + "-" + s;
                 Thread t = new Thread(() -> {
-                    Timer timer = new Timer();
+                    Timer timer = new Timer(() -> {
+                        peak.accumulateAndGet(connected.incrementAndGet(), Math::max);
+                        if (seat < seats - 1) others.countDown();
+                    });
                     try {
                         if (seat > 0 && !code.await(120, TimeUnit.SECONDS)) throw new IllegalStateException("no room code");
                         HeadlessPlayer.Options o = new HeadlessPlayer.Options(server, seat == 0 ? course : null, seats, List.of(),
                                 false, seat == 0 ? null : roomCode[0], name, bot, null, thinkMillis);
-                        connected.incrementAndGet();
-                        peak.accumulateAndGet(connected.get(), Math::max);
-                        new HeadlessPlayer(o, line -> {
+                        HeadlessPlayer player = new HeadlessPlayer(o, line -> {
                             ObjectNode m = parse(line);
                             if (m != null && m.has("room") && !m.has("players")) {
                                 roomCode[0] = m.get("room").asText();
@@ -71,12 +77,18 @@ public final class LoadBench {
                             } else if (m != null && m.has("players")) {
                                 cards.put(m.get("room").asText() + "/" + seat, m);
                             }
-                        }, line -> { }, timer).run();
+                        }, line -> {
+                            if (line.endsWith("; reconnecting")) reconnects.incrementAndGet();
+                        }, timer);
+                        if (seat == seats - 1 && seats > 1) player.joinAfter(gate);
+                        playing.put(name, player);
+                        player.run();
+                        playing.remove(name);
                     } catch (Exception | Error e) {
                         failures.add(name + ": " + e.getMessage());
                         code.countDown();
                     } finally {
-                        connected.decrementAndGet();
+                        if (timer.wasSeated()) connected.decrementAndGet();
                         latencies.add(timer.latencies());
                         done.countDown();
                     }
@@ -88,12 +100,17 @@ public final class LoadBench {
             // Let the room's creator get its code before the next room's players start.
             code.await(120, TimeUnit.SECONDS);
         }
+        others.await(600, TimeUnit.SECONDS);
+        progress.accept(String.format(java.util.Locale.ROOT, "%.0f s: %d connected; the last players join now",
+                (System.nanoTime() - start) / 1e9, connected.get()));
+        gate.countDown();
         long deadline = start + (long) (timeoutSeconds * 1e9);
         while (!done.await(10, TimeUnit.SECONDS)) {
             progress.accept(String.format(java.util.Locale.ROOT, "%.0f s: %d connected, %d rooms' cards in",
                     (System.nanoTime() - start) / 1e9, connected.get(), cards.size() / Math.max(1, seats)));
             if (System.nanoTime() > deadline) {
                 failures.add("timed out after " + timeoutSeconds + " s with " + done.getCount() + " players still playing");
+                playing.forEach((n, p) -> failures.add(n + " still playing: " + p.recentMessages()));
                 break;
             }
         }
@@ -106,7 +123,8 @@ public final class LoadBench {
             for (long[] l : latencies) for (long v : l) all[k++] = v;
         }
         int finished = (int) cards.keySet().stream().map(c -> c.substring(0, c.indexOf('/'))).distinct().count();
-        return new Result(rooms * seats, peak.get(), finished, k, Arrays.copyOf(all, k), List.copyOf(failures), cards, seconds);
+        return new Result(rooms * seats, peak.get(), finished, k, Arrays.copyOf(all, k), List.copyOf(failures), cards, seconds,
+                reconnects.get());
     }
 
     private static ObjectNode parse(String line) {
@@ -119,7 +137,23 @@ public final class LoadBench {
 
     /** One player's shot timings: sent at seq n, received as event n + 1 of the same seat. */
     private static final class Timer implements HeadlessPlayer.Timing {
+        private final Runnable onSeated;
+        private boolean seated;
         private long sentSeq = -1, sentAt;
+
+        Timer(Runnable onSeated) {
+            this.onSeated = onSeated;
+        }
+
+        @Override
+        public synchronized void seated() {
+            if (!seated) onSeated.run();
+            seated = true;
+        }
+
+        synchronized boolean wasSeated() {
+            return seated;
+        }
         private long[] lat = new long[64];
         private int n;
 

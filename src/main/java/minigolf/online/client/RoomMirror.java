@@ -6,8 +6,9 @@ import java.util.ArrayList;
 import java.util.List;
 import minigolf.game.RoundGame;
 import minigolf.game.SaveGameException;
-import minigolf.game.SavedRounds;
+import minigolf.online.StartSaves;
 import minigolf.online.ProtocolException;
+import minigolf.online.RoomClock;
 import minigolf.online.RoomEvent;
 import minigolf.online.RoundSync;
 
@@ -16,6 +17,7 @@ import minigolf.online.RoundSync;
  * sits where, whose turn it is, and the round itself as a {@link RoundGame} (so the game shows it
  * with hot seat's HUD and round card, and saves it as hot seat does). Strokes are settled where the
  * server says ({@link RoundSync}); an event that does not follow the last one asks for a resync.
+ * The room's course clock is reckoned from each message and the moment it arrived ({@link #clockAt}).
  * Not thread-safe: one thread applies the messages.
  */
 public final class RoomMirror {
@@ -57,8 +59,17 @@ public final class RoomMirror {
     private int turn = -1;
     private List<SeatInfo> seats = List.of();
     private RoundGame round;
+    private RoomClock clock = RoomClock.startingAt(0);
+    private long receivedMs;
 
+    /** Applies a message that arrives now. */
     public Update apply(ObjectNode m) {
+        return apply(m, nowMs());
+    }
+
+    /** Applies a message that arrived at {@code receivedMs} (of {@link #nowMs()}'s clock). */
+    public Update apply(ObjectNode m, long receivedMs) {
+        this.receivedMs = receivedMs;
         String type = m.path("type").asText("");
         try {
             switch (type) {
@@ -91,15 +102,24 @@ public final class RoomMirror {
         }
     }
 
-    private void snapshot(ObjectNode m) throws SaveGameException {
+    private void snapshot(ObjectNode m) throws SaveGameException, ProtocolException {
         room = m.path("room").asText(room);
         status = m.path("status").asText("lobby");
         course = m.path("course").asText("");
         title = m.path("title").asText(course);
         isRound = "round".equals(m.path("kind").asText());
-        seq = m.path("seq").asLong(0);
-        JsonNode save = m.get("save");
-        round = save == null || save.isNull() ? null : SavedRounds.parse(save.asText(), "the server's room " + room);
+        JsonNode start = m.get("start");
+        round = start == null || start.isNull() ? null : StartSaves.read(start.asText(), "the server's room " + room);
+        seq = 0;
+        int n = Math.max(1, m.path("seats").size());
+        for (JsonNode e : m.path("events")) {
+            RoomEvent event = RoomEvent.parse(e, n);
+            if (event.seq() != seq + 1) throw new ProtocolException("bad-message", "event " + event.seq() + " follows " + seq);
+            round = RoundSync.apply(round, event);
+            seq = event.seq();
+        }
+        if (seq != m.path("seq").asLong(0)) throw new ProtocolException("bad-message", "the room's events end at " + seq);
+        clock = RoomClock.received(m.path("clock").asDouble(0), m.path("clockRunsIn").asDouble(0), receivedMs);
         seats(m);
     }
 
@@ -107,7 +127,12 @@ public final class RoomMirror {
         RoomEvent e = RoomEvent.parse(m, Math.max(1, seats.size()));
         if (e.seq() <= seq) return new Update(Change.NONE, null, null, null);
         if (e.seq() != seq + 1 || round == null) return new Update(Change.OUT_OF_STEP, null, null, "missed events before " + e.seq());
+        int hole = round.holeIndex();
         round = RoundSync.apply(round, e);
+        boolean holeEnded = round.isOver() || round.holeIndex() != hole;
+        // The server hit the stroke its wait after the shot reached it; here the wait runs from the event's arrival.
+        clock = e.isPickUp() ? clock.afterPickUp(receivedMs, holeEnded)
+                : RoomClock.afterStroke(e.stroke().clock(), e.clockAfter(), receivedMs + Math.round(e.waitSeconds() * 1000), holeEnded);
         seq = e.seq();
         turn = m.path("turn").asInt(-1);
         if (round.isOver()) status = "finished";
@@ -177,6 +202,16 @@ public final class RoomMirror {
     /** The round as settled so far; null before it starts. */
     public RoundGame round() {
         return round;
+    }
+
+    /** The room's course clock at {@code nowMs} as this client reckons it (the server's, behind by the message's travel). */
+    public double clockAt(long nowMs) {
+        return clock.at(nowMs);
+    }
+
+    /** The milliseconds {@link #apply(ObjectNode, long)} and {@link #clockAt} count in: a monotonic clock of this process. */
+    public static long nowMs() {
+        return System.nanoTime() / 1_000_000;
     }
 
     public boolean isMyTurn() {

@@ -16,6 +16,7 @@ import minigolf.game.SavedRounds;
 import minigolf.game.ShotPlanner;
 import minigolf.game.ShotRecord;
 import minigolf.online.ClientMessage;
+import minigolf.online.RoomClock;
 import minigolf.online.RoomEvent;
 import minigolf.online.RoundSync;
 import minigolf.online.store.Score;
@@ -48,6 +49,12 @@ final class Room {
     static final SimulationSettings SETTINGS = SimulationSettings.DEFAULT;
     /** A bot's next stroke waits for the previous ball to stop on screen, but never longer than this (s). */
     private static final double MAX_ROLL_WAIT = 12;
+    /**
+     * Where obstacles move, a bot plans its shot for the room's clock at least this long ahead (ms),
+     * doubled on each try that finished too late to be hit at its planned moment.
+     */
+    private static final long BOT_PLAN_AHEAD_MS = 3000;
+    private static final int BOT_PLAN_TRIES = 3;
 
     final String code;
     final CourseCatalog.Entry entry;
@@ -61,11 +68,16 @@ final class Room {
     private final RoomMessages messages = new RoomMessages(this);
     private Status status;
     private RoundGame round;
+    /** The round as it started (a saved round's text), and every event's message since, in order. */
+    private String startSave;
+    private final List<String> events = new ArrayList<>();
     private long seq;
     private ScheduledFuture<?> timer;
     private long botThinkingAt = -1;
     /** When the last stroke's ball stops rolling on the clients' screens (ms). */
     private long quietAtMs;
+    /** The room's course clock (moving obstacles): the server's own, every stroke is played at it. */
+    private volatile RoomClock clock = RoomClock.startingAt(0);
     private volatile RoomView view;
 
     Room(String code, CourseCatalog.Entry entry, boolean listed, int strokeLimit, long createdMs, String creatorAddress,
@@ -84,16 +96,21 @@ final class Room {
     }
 
     /** A room rebuilt from the database: its round as it started and every stored event settled in order. */
-    void restore(Status stored, RoundGame started, List<RoomEvent> events) {
+    void restore(Status stored, String startText, RoundGame started, List<String> storedEvents) throws minigolf.online.ProtocolException {
         status = stored;
+        startSave = startText;
         round = started;
-        for (RoomEvent e : events) {
+        for (String json : storedEvents) {
+            RoomEvent e = RoomEvent.parse(minigolf.online.Json.parse(json), seats.length);
             if (e.seq() != seq + 1) throw new IllegalStateException("event " + e.seq() + " follows event " + seq);
             round = RoundSync.apply(round, e);
             seq = e.seq();
+            events.add(json);
         }
         if (round != null && round.isOver()) status = Status.FINISHED;
         long now = svc.now();
+        // The clock runs on from where the last stroke left it (a restart loses only the time the server was down).
+        clock = new RoomClock(round != null ? round.game().clock() : 0, now);
         for (Seat s : seats) if (s.isTaken() && !s.bot) s.awaySinceMs = now;
         refreshView();
     }
@@ -219,7 +236,9 @@ final class Room {
         for (Seat s : seats) players.add(s.bot ? Player.bot(s.name, s.level) : Player.human(s.name));
         round = new RoundGame(entry.round(), SETTINGS, players, strokeLimit);
         status = Status.PLAYING;
-        svc.store().startRoom(code, SavedRounds.toJson(round), svc.now()).whenComplete((v, err) -> actor.execute(() -> {
+        clock = RoomClock.startingAt(svc.now());
+        startSave = SavedRounds.toJson(round);
+        svc.store().startRoom(code, startSave, svc.now()).whenComplete((v, err) -> actor.execute(() -> {
             if (err != null) svc.log("room " + code + ": start not stored: " + err.getMessage());
             broadcast(messages.snapshot());
             refreshView();
@@ -279,15 +298,21 @@ final class Room {
     }
 
     /**
-     * Plays a stroke with the engine and records it. The wait runs the course clock on before the
-     * shot (where obstacles move it matters: docs/course-format.md, "Moving obstacles"); the room's
-     * clock is the strokes' times and waits, nothing else, so every client replays it exactly.
+     * Plays a stroke with the engine and records it, at the room's clock when the shot arrived plus
+     * its wait (where obstacles move it matters: docs/course-format.md, "Moving obstacles"). The
+     * server's clock alone decides the moment: a client only says how long to wait.
      */
     private void playStroke(int seat, double[] v, double waitSeconds) {
+        long startMs = clock.strokeStart(svc.now(), waitSeconds);
+        playStrokeAt(seat, v, waitSeconds, clock.at(startMs), startMs);
+    }
+
+    /** Plays a stroke hit at course clock {@code at}, the moment {@code startMs} of the room's clock. */
+    private void playStrokeAt(int seat, double[] v, double waitSeconds, double at, long startMs) {
         Game g = round.game();
         int hole = round.holeIndex();
         int finishedBefore = round.holesFinished();
-        if (waitSeconds > 0) g.advanceClock(waitSeconds);
+        g.advanceClockTo(Math.max(g.clock(), at));
         Stroke stroke = g.startShot(v[0], v[1], v[2], null);
         try {
             stroke.run();
@@ -297,8 +322,10 @@ final class Room {
         double rollSeconds = stroke.result().time();
         ShotRecord record = g.completeShot();
         seq++;
-        quietAtMs = svc.now() + (long) (1000 * Math.min(MAX_ROLL_WAIT, rollSeconds));
-        recordEvent(new RoomEvent(seq, hole, seat, record, g.player(seat), waitSeconds, g.clock()), finishedBefore);
+        quietAtMs = startMs + (long) (1000 * Math.min(MAX_ROLL_WAIT, rollSeconds));
+        double after = g.clock();
+        recordEvent(new RoomEvent(seq, hole, seat, record, g.player(seat), waitSeconds, after), finishedBefore);
+        clock = RoomClock.afterStroke(record.clock(), after, startMs, round.holesFinished() > finishedBefore);
     }
 
     private void pickUp(int seat) {
@@ -309,6 +336,7 @@ final class Room {
         seq++;
         broadcast(messages.notice(seats[seat].name + " picks up on hole " + (hole + 1) + " (away)"));
         recordEvent(new RoomEvent(seq, hole, seat, null, g.player(seat), 0), finishedBefore);
+        clock = clock.afterPickUp(svc.now(), round.holesFinished() > finishedBefore);
     }
 
     /** Stores the event (with any scores it completes) and tells every client once it is stored. */
@@ -317,6 +345,7 @@ final class Room {
         if (round.isOver()) status = Status.FINISHED;
         List<Score> scores = scoresSince(finishedBefore);
         String json = minigolf.online.Json.write(event.toJson(turn()));
+        events.add(json);
         svc.store().appendEvent(code, event.seq(), json, scores, status.jsonName(), svc.now())
                 .whenComplete((v, err) -> actor.execute(() -> {
                     if (err != null) {
@@ -443,26 +472,58 @@ final class Room {
     private void startBot(int seat) {
         if (botThinkingAt == seq) return;
         botThinkingAt = seq;
-        long at = seq;
+        planBot(seat, seq, 0);
+    }
+
+    /**
+     * A bot's turn: it plans on the bot threads and is hit once the last ball has stopped on the
+     * clients' screens. Where obstacles move it plans for the room's clock a little ahead and is hit
+     * exactly at the moment it planned (plus its wait); a plan that comes too late is made again
+     * further ahead, and after {@value #BOT_PLAN_TRIES} tries it is hit at once.
+     */
+    private void planBot(int seat, long at, int attempt) {
         Game g = round.game();
         PlayerState p = g.player(seat);
         World world = g.world();
+        boolean moving = world.moving() != null;
         String level = seats[seat].level;
-        BotConditions conditions = BotConditions.of(g, seat, false);
+        long ready = Math.max(svc.now() + (BOT_PLAN_AHEAD_MS << attempt), quietAtMs);
+        double moment = clock.at(ready);
+        BotConditions asked = BotConditions.of(g, seat, false);
+        BotConditions conditions = new BotConditions(asked.noise(), asked.hideFriction(), asked.ownStrokes(), moment);
         long seed = code.hashCode() * 1_000_003L + at;
         svc.botPool().execute(() -> {
             double[] v = plan(level, world, p, seed, conditions);
-            long delay = Math.max(0, quietAtMs - svc.now());
-            Runnable play = () -> actor.execute(() -> {
+            actor.execute(() -> {
                 if (seq != at || status != Status.PLAYING || round.game().currentPlayer() != seat) return;
-                playStroke(seat, v, 0);
+                RoomClock c = clock;
+                double target = moment + v[3];
+                // The moment the room's clock reads the planned one (it runs from c.base() at c.quietAtMs()).
+                long hitMs = c.quietAtMs() + Math.round((target - c.base()) * 1000);
+                long now = svc.now();
+                Runnable hit;
+                long delay;
+                if (!moving || attempt + 1 >= BOT_PLAN_TRIES) {
+                    hit = () -> playStroke(seat, v, 0);
+                    delay = Math.max(0, quietAtMs - now);
+                } else if (target >= c.base() && hitMs >= now) {
+                    hit = () -> playStrokeAt(seat, v, 0, target, hitMs);
+                    delay = hitMs - now;
+                } else {
+                    planBot(seat, at, attempt + 1);
+                    return;
+                }
+                Runnable play = () -> actor.execute(() -> {
+                    if (seq != at || status != Status.PLAYING || round.game().currentPlayer() != seat) return;
+                    hit.run();
+                });
+                if (delay == 0) play.run();
+                else svc.timers().schedule(play, delay, TimeUnit.MILLISECONDS);
             });
-            if (delay == 0) play.run();
-            else svc.timers().schedule(play, delay, TimeUnit.MILLISECONDS);
         });
     }
 
-    /** A bot's shot within the speed limit; a bot that fails plays the straight putt at the hole. */
+    /** A bot's shot {vx, vy, vz, wait} within the speed limit; a bot that fails plays the straight putt at the hole. */
     private static double[] plan(String level, World world, PlayerState p, long seed, BotConditions conditions) {
         double max = world.physics().maxSpeed();
         for (String name : new String[]{level, "straight"}) {
@@ -470,17 +531,18 @@ final class Room {
             if (planner == null) continue;
             try {
                 double[] v = planner.plan(world, SETTINGS, p.x(), p.y(), p.total(), seed, conditions, new BotControl());
-                if (v == null || v.length < 2 || v.length > 3) continue;
-                double vz = v.length == 3 ? v[2] : 0;
+                if (v == null || v.length < 2 || v.length > 4) continue;
+                double vz = v.length >= 3 ? v[2] : 0;
+                double wait = v.length == 4 ? v[3] : 0;
                 double speed = Math.sqrt(v[0] * v[0] + v[1] * v[1] + vz * vz);
-                if (!Double.isFinite(speed) || vz < 0) continue;
+                if (!Double.isFinite(speed) || vz < 0 || !(wait >= 0 && wait <= minigolf.online.Protocol.MAX_WAIT_SECONDS)) continue;
                 double k = speed > max ? max / speed : 1;
-                return new double[]{v[0] * k, v[1] * k, vz * k};
+                return new double[]{v[0] * k, v[1] * k, vz * k, wait};
             } catch (RuntimeException | StackOverflowError e) {
                 // the fallback plays
             }
         }
-        return new double[]{0, 0, 0};
+        return new double[]{0, 0, 0, 0};
     }
 
     void broadcast(String json) {
@@ -507,6 +569,24 @@ final class Room {
 
     long seq() {
         return seq;
+    }
+
+    /** The room's course clock. */
+    RoomClock clock() {
+        return clock;
+    }
+
+    /** The server's time (ms). */
+    long now() {
+        return svc.now();
+    }
+
+    String startSave() {
+        return startSave;
+    }
+
+    List<String> events() {
+        return events;
     }
 
     /** The room as the web page shows it, safe to read from any thread. */

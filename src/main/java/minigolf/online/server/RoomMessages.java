@@ -3,7 +3,6 @@ package minigolf.online.server;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import minigolf.game.Round;
-import minigolf.game.SavedRounds;
 import minigolf.online.Json;
 import minigolf.online.Protocol;
 
@@ -15,7 +14,7 @@ final class RoomMessages {
         this.room = room;
     }
 
-    /** Everything a client needs to show the room; with the round's save once it has started. */
+    /** Everything a client needs to show the room; once started, the round as it started and every event since. */
     String snapshot() {
         ObjectNode o = Json.message("room").put("protocol", Protocol.VERSION).put("room", room.code)
                 .put("course", room.entry.name()).put("kind", room.entry.isRound() ? "round" : "course")
@@ -25,7 +24,15 @@ final class RoomMessages {
         ArrayNode holes = o.putArray("holes");
         for (Round.Hole h : room.entry.round().holes()) holes.addObject().put("course", h.course()).put("par", h.par());
         seats(o.putArray("seats"));
-        if (room.round() != null) o.put("save", SavedRounds.toJson(room.round()));
+        if (room.startSave() != null) {
+            // The round as it started and every event since: a client settles them as the server did.
+            o.put("start", room.startSave());
+            // The room's course clock now, and how long it stands yet (a ball still rolls): clients run it on from here.
+            long now = room.now();
+            o.put("clock", room.clock().at(now)).put("clockRunsIn", room.clock().holdSeconds(now));
+            ArrayNode events = o.putArray("events");
+            for (String e : room.events()) events.addRawValue(new com.fasterxml.jackson.databind.util.RawValue(e));
+        }
         return Json.write(o);
     }
 

@@ -10,11 +10,9 @@ import minigolf.game.BotCatalog;
 import minigolf.game.Player;
 import minigolf.game.RoundGame;
 import minigolf.game.SaveGameException;
-import minigolf.game.SavedRounds;
 import minigolf.online.ClientMessage;
 import minigolf.online.Json;
 import minigolf.online.ProtocolException;
-import minigolf.online.RoomEvent;
 import minigolf.online.store.StoreException;
 import minigolf.online.store.StoredRoom;
 import minigolf.online.store.StoredSeat;
@@ -141,7 +139,7 @@ final class Rooms {
             seat.gone = s.gone();
             seats[s.seat()] = seat;
         }
-        RoundGame started = r.startSave() == null ? null : SavedRounds.parse(r.startSave(), "room " + r.code());
+        RoundGame started = r.startSave() == null ? null : minigolf.online.StartSaves.read(r.startSave(), "room " + r.code());
         CourseCatalog.Entry entry;
         if (started != null) {
             CourseCatalog.Entry now = catalog.get(r.course());
@@ -151,9 +149,7 @@ final class Rooms {
             if (entry == null) throw new IllegalStateException("its course " + r.course() + " is no longer offered");
         }
         Room room = new Room(r.code(), entry, r.listed(), r.strokeLimit(), r.createdMs(), null, seats, svc);
-        List<RoomEvent> events = new ArrayList<>();
-        for (String e : r.events()) events.add(RoomEvent.parse(Json.parse(e), seats.length));
-        room.restore(started == null ? Room.Status.LOBBY : Room.Status.PLAYING, started, events);
+        room.restore(started == null ? Room.Status.LOBBY : Room.Status.PLAYING, r.startSave(), started, r.events());
         return room;
     }
 

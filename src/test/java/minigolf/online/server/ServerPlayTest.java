@@ -98,7 +98,8 @@ class ServerPlayTest {
             assertEquals(4, r.scorecard().rows().get(0).holes()[0], "picked up at the limit of 3: scores 4");
             ObjectNode end = ann.await(m -> m.path("type").asText().equals("room") && m.path("status").asText().equals("finished"),
                     "the finished room");
-            assertNotNull(end.get("save"));
+            assertNotNull(end.get("start"));
+            assertEquals(end.get("seq").asLong(), end.get("events").size(), "the finished room holds every event");
             String board = new String(new java.net.URL("http://127.0.0.1:" + server.port() + "/api/course/flat").openStream()
                     .readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
             assertTrue(board.contains("\"name\":\"Ann\",\"strokes\":4"), board);
