@@ -35,7 +35,7 @@ public final class BotCatalog {
     /**
      * Simulations {@code planner-aces}' full search runs through in a second of one core's time, as
      * measured on the project's shared 2-core machine under a load of about 15-20 (planner-aces on
-     * the tile courses of seed 47692372: the median of the eight games whose search spent over
+     * the tile courses of seed 47692372: the median of the nine games whose search spent over
      * 100,000, 11,700-16,300; docs/bots.md); a quiet core runs about twice as many
      * (docs/measurements.md).
      */
