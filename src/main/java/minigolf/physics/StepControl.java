@@ -48,6 +48,8 @@ final class StepControl {
     static final double STOP_AHEAD = 0.25;
 
     private final RollingStep rolling;
+    /** Where friction or push zones have edges, the locator that tells a step that crosses one (null: none). */
+    StepLocator edges;
     private final double dt;
     private final double shortest;
     private final double longest;
@@ -115,6 +117,13 @@ final class StepControl {
                 pause = PAUSE;
                 h *= 0.5;
                 continue;
+            }
+            if (edges != null && previous == Double.POSITIVE_INFINITY && edges.leavesRegion(rolling.nx, rolling.ny)) {
+                // Across a zone's edge the estimate sees the jump, not the step's error: the step
+                // is cut at the edge (StepLocator.zoneEdge), with the start's friction and push.
+                allowed = h;
+                if (pause > 0) pause--;
+                return h;
             }
             double error = rolling.errorEstimate();
             if (!(error > TOLERANCE) || h <= shortest || error > previous * KINK_RATIO) {

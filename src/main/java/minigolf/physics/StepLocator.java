@@ -208,6 +208,11 @@ final class StepLocator {
         return beyond;
     }
 
+    /** Whether (x, y) lies in another friction zone or under another push than the ball. */
+    boolean leavesRegion(double x, double y) {
+        return !sameRegion(friction.zoneAt(ball.x, ball.y), x, y);
+    }
+
     /** Whether (x, y) has the friction zone {@code zone} and the push of the ball's position. */
     private boolean sameRegion(int zone, double x, double y) {
         if (friction.zoneAt(x, y) != zone) return false;

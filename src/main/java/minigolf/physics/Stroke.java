@@ -133,8 +133,9 @@ public final class Stroke {
         this.control = control;
         this.trial = trial;
         this.rest = rest;
-        this.rolling = new RollingPhase(ball, reports, steps, trial, control,
-                new StepLocator(ball, trial, steps, terrain, ground, friction, forces, area), rest,
+        StepLocator locator = new StepLocator(ball, trial, steps, terrain, ground, friction, forces, area);
+        if (control != null && (friction.hasZones() || (forces != null && forces.hasPushZones()))) control.edges = locator;
+        this.rolling = new RollingPhase(ball, reports, steps, trial, control, locator, rest,
                 new TakeOff(terrain, steps, gravity), hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete, forces),
                 scene, lean, paths, contact, terrain, friction, forces,
                 world.teleports() == null ? null : new Teleporter(world.teleports(), ball, trial, reports), area, gravity,

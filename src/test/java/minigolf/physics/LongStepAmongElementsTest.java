@@ -18,6 +18,8 @@ import org.junit.jupiter.api.Test;
  */
 class LongStepAmongElementsTest {
     private static final double G = 9.81;
+    /** Steps of the stripes shot: 67 when the control halved steps across each edge, 49 now. */
+    private static final int STRIPE_STEPS = 55;
 
     @Test
     void aBallRollingAlongAWallAFewCentimetresAwayTakesLongStepsAndStopsAtTheClosedForm() {
@@ -62,5 +64,22 @@ class LongStepAmongElementsTest {
         assertTrue(f.mayChangeWithin(5.5, 0.5, 5.9, 0.9), "a corner outside the circle");
         assertFalse(f.mayChangeWithin(2.5, -2, 3.5, -1.5), "clear of every zone");
         assertTrue(f.mayChangeWithin(-2.6, -0.1, -2.4, 0.1), "the magnet's reach");
+    }
+
+    @Test
+    void aBallCrossingFrictionStripesIsCutAtEachEdgeWithoutHalvingTheStepsBeforeIt() {
+        // Flat, mu_k 0.1 with three stripes of mu_k 0.15, each 0.5 m wide: from (-4, 0) at 3 m/s
+        // along x it loses 2 g (0.1 d + 0.05 * 1.5) of v^2 and stops after d = 3.837 m, past them.
+        // A step whose trial ends in another zone is cut at the edge (StepLocator.zoneEdge) at
+        // once; before, the error control halved it first (the estimate sees the jump in friction).
+        String stripe = "{\"shape\": {\"type\": \"rect\", \"min\": [%s, -1], \"max\": [%s, 1]}, \"kineticFriction\": 0.15, \"staticFriction\": 0.3}";
+        World w = ElementWorlds.flat("\"zones\": [" + String.format(stripe, -3, -2.5) + ", " + String.format(stripe, -2, -1.5)
+                + ", " + String.format(stripe, -1, -0.5) + "]");
+        ShotResult r = ElementWorlds.simulator(w).simulate(-4, 0, 3, 0);
+        assertEquals(Outcome.STOPPED, r.outcome());
+        double d = (9 / (2 * G) - 0.05 * 1.5) / 0.1;
+        assertEquals(-4 + d, r.endX(), 1e-6);
+        assertEquals(0, r.endY(), 1e-12);
+        assertTrue(r.steps() <= STRIPE_STEPS, r.steps() + " steps");
     }
 }

@@ -6,8 +6,10 @@ import minigolf.physics.World;
 /**
  * The course as a grid of square cells, each free or blocked, for the bots' path searches and
  * distance fields. {@link #isBlocked(World, double, double)} is the one place that decides where a
- * ball cannot be: water, out of bounds, and obstacles inflated by the ball's radius
- * ({@link ObstacleFootprint}). A cell is blocked when its centre is, obstacles being inflated by a
+ * ball cannot be: water (terrain below 0, or a hazard zone the ball may not enter), out of bounds,
+ * and obstacles inflated by the ball's radius ({@link ObstacleFootprint}). A hazard zone the ball
+ * may roll across but not rest in (the classic tracks' shallow water) is free, but counts as water
+ * for the clearances ({@link #hazardClearance}), so no rest point is planned in it. A cell is blocked when its centre is, obstacles being inflated by a
  * further half cell diagonal so that a thin fence between cell centres still cuts the grid. Cells
  * blocked by trees only are marked as such ({@link #tree(int)}) for A*'s diagonal rule.
  */
@@ -48,13 +50,14 @@ public final class CourseGrid {
                     lost[i] = true;
                     continue;
                 }
+                lost[i] = world.friction().restsInHazard(x, y);
                 byte kind = footprint.kind(x, y, halfDiagonal);
                 blocked[i] = kind != ObstacleFootprint.FREE;
                 tree[i] = kind == ObstacleFootprint.TREE;
             }
         }
         clearance = chamfer(blocked);
-        hazardClearance = footprint.isEmpty() ? clearance : chamfer(lost);
+        hazardClearance = footprint.isEmpty() && !world.friction().hasHazards() ? clearance : chamfer(lost);
     }
 
     /** Two-pass 3-4 chamfer distance transform: distance to water, obstacles or the edge of the course. */
@@ -155,9 +158,12 @@ public final class CourseGrid {
         return lost(world, x, y) || ObstacleFootprint.of(world).kind(x, y, 0) != ObstacleFootprint.FREE;
     }
 
-    /** Whether a ball at (x, y) is lost: in water or out of bounds (outside the bounds or on a deleted cell). */
+    /**
+     * Whether a ball at (x, y) is lost: in water (below 0, or a hazard zone that ends the stroke on
+     * entry) or out of bounds (outside the bounds or on a deleted cell).
+     */
     public static boolean lost(World world, double x, double y) {
-        return !world.playArea().contains(x, y) || world.terrain().height(x, y) < 0;
+        return !world.playArea().contains(x, y) || world.terrain().height(x, y) < 0 || world.friction().entersHazard(x, y);
     }
 
     public World world() {

@@ -7,7 +7,8 @@ import minigolf.bot.CancellationToken;
 
 /**
  * Shortest distance over free cells from every cell to the hole (Dijkstra, 8 neighbours, no
- * corner cutting): how far a rest point really is from the hole when water or walls lie between.
+ * corner cutting, never through a one-way gate against its way): how far a rest point really is
+ * from the hole when water or walls lie between.
  * Cells close to water (not obstacles: those only bounce the ball) cost more (up to {@code 1 + NEAR_WATER_COST} times within {@code SAFE_CLEARANCE}),
  * so paths keep off the banks and rest points beside water score worse.
  */
@@ -17,6 +18,8 @@ public final class DistanceField {
     public static final double NEAR_WATER_COST = 3;
 
     private final CourseGrid grid;
+    /** The one-way gates (null: none): a step against one is barred. */
+    private final GateCrossings gates;
     private final double[] distance;
     private final double targetX, targetY;
 
@@ -40,6 +43,7 @@ public final class DistanceField {
         // near the target as its (first) exit is.
         double[][] push = pushes(grid);
         int[][] portals = portals(grid);
+        gates = GateCrossings.of(grid);
         double floor = push == null ? 0 : lowestFriction(grid) * grid.world().physics().gravity();
         distance = new double[n];
         Arrays.fill(distance, Double.POSITIVE_INFINITY);
@@ -72,6 +76,7 @@ public final class DistanceField {
                     boolean diagonal = dc != 0 && dr != 0;
                     if (diagonal && !grid.diagonalAllowed(c, r, dc, dr)) continue;
                     int j = grid.index(nc, nr);
+                    if (gates != null && gates.barred(j, i)) continue;
                     double nearWater = Math.max(0, 1 - grid.hazardClearance(j) / SAFE_CLEARANCE);
                     double step = (diagonal ? SQRT2 : 1) * grid.cell() * (1 + NEAR_WATER_COST * nearWater);
                     // The step between two cells on the friction of both halves.
@@ -205,6 +210,7 @@ public final class DistanceField {
                     if ((dc == 0 && dr == 0) || grid.blocked(nc, nr)) continue;
                     if (dc != 0 && dr != 0 && !grid.diagonalAllowed(c, r, dc, dr)) continue;
                     int j = grid.index(nc, nr);
+                    if (gates != null && gates.barred(i, j)) continue;
                     if (distance[j] < distance[next]) next = j;
                 }
             }

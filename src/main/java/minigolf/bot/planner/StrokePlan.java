@@ -53,7 +53,7 @@ public final class StrokePlan {
         List<Integer> candidates = new ArrayList<>();
         for (int i = 0; i < strokes.length; i++) {
             if (fine.hazardClearance(x(i), y(i)) >= REST_CLEARANCE && fine.clearance(x(i), y(i)) >= REST_OBSTACLE_CLEARANCE
-                    && !CourseGrid.isBlocked(world, x(i), y(i))) {
+                    && !CourseGrid.isBlocked(world, x(i), y(i)) && canRest(world, x(i), y(i))) {
                 candidates.add(i);
             }
         }
@@ -80,6 +80,18 @@ public final class StrokePlan {
             }
             frontier = next;
         }
+    }
+
+    /**
+     * Whether a ball can rest at (x, y) on level ground: not where a push zone or magnet pulls harder
+     * than static friction holds (a classic track's downhill tiles push at 0.89 m/s^2 against 0.59):
+     * a lay-up aimed there rolls on.
+     */
+    static boolean canRest(World world, double x, double y) {
+        if (world.forces() == null || world.forces().isEmpty()) return true;
+        double[] f = new double[2];
+        world.forces().force(x, y, f);
+        return Math.hypot(f[0], f[1]) <= world.friction().staticFriction(x, y) * world.physics().gravity();
     }
 
     double x(int i) {
