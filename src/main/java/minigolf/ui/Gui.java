@@ -382,6 +382,11 @@ public final class Gui {
         return lastItem;
     }
 
+    /** The last widget's rectangle, {x, y, width, height} in the interface's pixels (a copy; tests click there). */
+    public static float[] lastItemBounds() {
+        return lastItem.clone();
+    }
+
     static void setDeactivatedAfterEdit(boolean value) {
         lastDeactivatedAfterEdit = value;
     }
