@@ -1,5 +1,7 @@
 package minigolf.render;
 
+import minigolf.course.Segments;
+
 /**
  * Which of the sky's ground cells can show the seaside's shore (beach, foam, the water's edge) and
  * so need sky.frag's per-pixel sea (SEA_PIXEL); the others are wholly grass or wholly open sea, whose
@@ -61,23 +63,13 @@ final class ShoreCells {
 
     static double segmentDistance(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
         if (segmentsCross(ax, ay, bx, by, cx, cy, dx, dy)) return 0;
-        return Math.min(Math.min(pointToSegment(ax, ay, cx, cy, dx, dy), pointToSegment(bx, by, cx, cy, dx, dy)),
-                Math.min(pointToSegment(cx, cy, ax, ay, bx, by), pointToSegment(dx, dy, ax, ay, bx, by)));
+        return Math.min(Math.min(Segments.distance(ax, ay, cx, cy, dx, dy), Segments.distance(bx, by, cx, cy, dx, dy)),
+                Math.min(Segments.distance(cx, cy, ax, ay, bx, by), Segments.distance(dx, dy, ax, ay, bx, by)));
     }
 
     private static boolean segmentsCross(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
-        double d1 = side(cx, cy, dx, dy, ax, ay), d2 = side(cx, cy, dx, dy, bx, by);
-        double d3 = side(ax, ay, bx, by, cx, cy), d4 = side(ax, ay, bx, by, dx, dy);
+        double d1 = Segments.side(cx, cy, dx, dy, ax, ay), d2 = Segments.side(cx, cy, dx, dy, bx, by);
+        double d3 = Segments.side(ax, ay, bx, by, cx, cy), d4 = Segments.side(ax, ay, bx, by, dx, dy);
         return d1 * d2 < 0 && d3 * d4 < 0;
-    }
-
-    private static double side(double ax, double ay, double bx, double by, double px, double py) {
-        return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-    }
-
-    private static double pointToSegment(double px, double py, double ax, double ay, double bx, double by) {
-        double vx = bx - ax, vy = by - ay, len2 = vx * vx + vy * vy;
-        double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((px - ax) * vx + (py - ay) * vy) / len2));
-        return Math.hypot(px - ax - t * vx, py - ay - t * vy);
     }
 }
