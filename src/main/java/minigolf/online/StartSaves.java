@@ -23,22 +23,22 @@ import minigolf.physics.World;
  */
 public final class StartSaves {
     private static final int KEPT = 32;
-    private static final Map<String, RoundGame> READ = new LinkedHashMap<>(16, 0.75f, true) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<String, RoundGame> eldest) {
-            return size() > KEPT;
-        }
-    };
+    private static final Map<String, RoundGame> READ = recentlyUsed(KEPT);
 
     private static final int KEPT_WORLDS = 64;
-    private static final Map<String, World> WORLDS = new LinkedHashMap<>(16, 0.75f, true) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<String, World> eldest) {
-            return size() > KEPT_WORLDS;
-        }
-    };
+    private static final Map<String, World> WORLDS = recentlyUsed(KEPT_WORLDS);
 
     private StartSaves() {
+    }
+
+    /** A map that keeps only its {@code kept} most recently used entries (callers synchronise on it). */
+    private static <V> Map<String, V> recentlyUsed(int kept) {
+        return new LinkedHashMap<>(16, 0.75f, true) {
+            @Override
+            protected boolean removeEldestEntry(Map.Entry<String, V> eldest) {
+                return size() > kept;
+            }
+        };
     }
 
     /** The round {@code text} holds, as a round of its own (its games fresh, its courses shared). */
