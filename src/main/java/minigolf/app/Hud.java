@@ -74,7 +74,8 @@ final class Hud {
         }
         // The stroke being set up, on a person's turn only (a bot chooses its own).
         if (g != null && !g.isOver() && g.currentPlayer() >= 0 && !g.players().get(g.currentPlayer()).isBot()) {
-            Gui.text(Loft.describe(loftDegrees) + "  -  mouse wheel or Up / Down to " + (loftDegrees == 0 ? "chip" : "change"));
+            if (play.world().physics().puttsOnly()) Gui.text("Putt  -  this course plays putts only");
+            else Gui.text(Loft.describe(loftDegrees) + "  -  mouse wheel or Up / Down to " + (loftDegrees == 0 ? "chip" : "change"));
         }
         // The physics readout is for practice (expert) mode: a player's HUD shows no coordinates.
         boolean practice = app.settings().practice();

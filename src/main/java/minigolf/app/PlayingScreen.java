@@ -177,7 +177,7 @@ class PlayingScreen extends GameScreen {
     public boolean keyPressed(int key, int mods) {
         switch (key) {
             case GLFW_KEY_ESCAPE -> app.setScreen(app.screens().pause());
-            case GLFW_KEY_UP, GLFW_KEY_DOWN -> loft = Loft.step(loft, key == GLFW_KEY_UP ? 1 : -1);
+            case GLFW_KEY_UP, GLFW_KEY_DOWN -> loft = stepLoft(key == GLFW_KEY_UP ? 1 : -1);
             case GLFW_KEY_SPACE -> app.play().skipAnimation(); // the same stroke, run to its end
             case GLFW_KEY_V -> { // practice mode: the typed-velocity Shot panel and the physics readout
                 boolean on = !app.settings().practice();
@@ -228,8 +228,13 @@ class PlayingScreen extends GameScreen {
     @Override
     public boolean scrolled(double dy) {
         if (!aiming) return false;
-        loft = Loft.step(loft, (int) Math.signum(dy)); // while aiming the wheel lofts the shot
+        loft = stepLoft((int) Math.signum(dy)); // while aiming the wheel lofts the shot
         return true;
+    }
+
+    /** The loft after {@code notches} steps; always a putt on a course that plays putts only (a classic track). */
+    private int stepLoft(int notches) {
+        return app.play().world().physics().puttsOnly() ? 0 : Loft.step(loft, notches);
     }
 
     private boolean nearBall(double x, double y) {

@@ -78,6 +78,8 @@ public final class CountingSimulator {
                              BotProgress progress) {
         this(world, new Simulator(world, settings), new Account(budget, token, progress), true, true);
         if (budget < 0) throw new IllegalArgumentException("budget must be >= 0, got " + budget);
+        // A course that plays putts only (a classic track) has no chips for the bots to search.
+        if (world.physics().puttsOnly()) account.puttsOnly = true;
     }
 
     /** Unlimited, never cancelled, default settings: for tests and tools. */

@@ -124,7 +124,7 @@ public final class TrackConverter {
         double width = scale.width(), height = scale.height();
         PhysicsSettings physics = new PhysicsSettings(ClassicScale.GRAVITY, scale.friction(0.0065), STATIC_FRICTION,
                 scale.maxSpeed(), PhysicsModel.CLASSIC, scale.ballRadius(), PhysicsSettings.DEFAULT_BALL_MASS,
-                PhysicsSettings.DEFAULT_DRAG_COEFFICIENT, PhysicsSettings.DEFAULT_AIR_DENSITY, null);
+                PhysicsSettings.DEFAULT_DRAG_COEFFICIENT, PhysicsSettings.DEFAULT_AIR_DENSITY, null, true);
         Hole cup = new Hole(hole, HOLE_CAPTURE_SHARE * HOLE_PIXELS / 2 * px, HoleRule.CAPTURE,
                 HOLE_CAPTURE_SPEED * scale.maxSpeed());
 

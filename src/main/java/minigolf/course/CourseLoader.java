@@ -43,7 +43,7 @@ public final class CourseLoader {
             "deletedCells");
     static final List<String> BOUNDS_FIELDS = List.of("min", "max");
     static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model",
-            "ballRadius", "ballMass", "dragCoefficient", "airDensity", "groundRestitution");
+            "ballRadius", "ballMass", "dragCoefficient", "airDensity", "groundRestitution", "puttsOnly");
     static final List<String> HOLE_FIELDS = List.of("position", "radius", "rule", "captureSpeed");
     static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction", "hazard");
     static final List<String> HAZARD_FIELDS = List.of("kind", "when", "returnTo", "penalty");
@@ -302,7 +302,14 @@ public final class CourseLoader {
             Double ground = o.has("groundRestitution")
                     ? unit(number(o.get("groundRestitution"), join(path, "groundRestitution")), join(path, "groundRestitution"))
                     : null;
-            return new PhysicsSettings(gravity, kinetic, stat, maxSpeed, model, ballRadius, ballMass, drag, air, ground);
+            boolean puttsOnly = false;
+            if (o.has("puttsOnly")) {
+                JsonNode b = o.get("puttsOnly");
+                if (!b.isBoolean()) throw error(join(path, "puttsOnly"), "expected true or false, got " + show(b));
+                puttsOnly = b.booleanValue();
+            }
+            return new PhysicsSettings(gravity, kinetic, stat, maxSpeed, model, ballRadius, ballMass, drag, air, ground,
+                    puttsOnly);
         }
 
         Hole hole(JsonNode n, String path) throws CourseException {

@@ -54,6 +54,7 @@ public final class CourseWriter {
         if (p.groundRestitution() != null) {
             sb.append(", \"groundRestitution\": ").append(num(p.groundRestitution(), "physics.groundRestitution"));
         }
+        if (p.puttsOnly()) sb.append(", \"puttsOnly\": true");
         sb.append(" },\n");
         sb.append("  \"start\": ");
         vec(sb, require(course.start(), "start"), "start");

@@ -9,10 +9,12 @@ package minigolf.course;
  * @param airDensity        kg/m^3
  * @param groundRestitution the normal restitution of a landing ball, or null for Penner's turf
  *                          model e = 0.510 - 0.0375 vn + 0.000903 vn^2
+ * @param puttsOnly         the ball is only ever struck along the ground: a shot's upward part is
+ *                          dropped (a classic track: the original game had no chips)
  */
 public record PhysicsSettings(double gravity, double kineticFriction, double staticFriction,
                               double maxSpeed, PhysicsModel model, double ballRadius, double ballMass,
-                              double dragCoefficient, double airDensity, Double groundRestitution) {
+                              double dragCoefficient, double airDensity, Double groundRestitution, boolean puttsOnly) {
     public static final double DEFAULT_GRAVITY = 9.81;
     public static final double DEFAULT_MAX_SPEED = 5.0;
     /** A golf ball: 42.67 mm across, 45.93 g. */
@@ -21,6 +23,14 @@ public record PhysicsSettings(double gravity, double kineticFriction, double sta
     /** A golf ball's drag coefficient below Reynolds number 5e4 (every putting and chipping speed). */
     public static final double DEFAULT_DRAG_COEFFICIENT = 0.5;
     public static final double DEFAULT_AIR_DENSITY = 1.2;
+
+    /** Settings where chips may be played (every course but those that say {@code puttsOnly}). */
+    public PhysicsSettings(double gravity, double kineticFriction, double staticFriction, double maxSpeed,
+                           PhysicsModel model, double ballRadius, double ballMass, double dragCoefficient,
+                           double airDensity, Double groundRestitution) {
+        this(gravity, kineticFriction, staticFriction, maxSpeed, model, ballRadius, ballMass, dragCoefficient,
+                airDensity, groundRestitution, false);
+    }
 
     /** The settings of a course file without the ball and flight fields: those take their defaults. */
     public PhysicsSettings(double gravity, double kineticFriction, double staticFriction, double maxSpeed,
@@ -31,12 +41,18 @@ public record PhysicsSettings(double gravity, double kineticFriction, double sta
 
     public PhysicsSettings withModel(PhysicsModel newModel) {
         return new PhysicsSettings(gravity, kineticFriction, staticFriction, maxSpeed, newModel, ballRadius, ballMass,
-                dragCoefficient, airDensity, groundRestitution);
+                dragCoefficient, airDensity, groundRestitution, puttsOnly);
     }
 
     public PhysicsSettings withFlight(double newDragCoefficient, Double newGroundRestitution) {
         return new PhysicsSettings(gravity, kineticFriction, staticFriction, maxSpeed, model, ballRadius, ballMass,
-                newDragCoefficient, airDensity, newGroundRestitution);
+                newDragCoefficient, airDensity, newGroundRestitution, puttsOnly);
+    }
+
+    /** These settings with {@code puttsOnly} set as given. */
+    public PhysicsSettings withPuttsOnly(boolean newPuttsOnly) {
+        return new PhysicsSettings(gravity, kineticFriction, staticFriction, maxSpeed, model, ballRadius, ballMass,
+                dragCoefficient, airDensity, groundRestitution, newPuttsOnly);
     }
 
     /** k in the drag acceleration -k |v| v: Cd rho A / (2 m), A the ball's cross-section. */

@@ -37,6 +37,8 @@ public final class Stroke {
     private final double dt;
     private final double maxTime;
     private final double maxSpeed;
+    /** The course's {@code puttsOnly}: a shot's upward part is dropped, the ball struck along the ground. */
+    private final boolean puttsOnly;
     private final PlayArea area;
     private final PathSweep paths;
     /** The course clock when the ball was hit (s). */
@@ -111,6 +113,7 @@ public final class Stroke {
         this.dt = settings.dt();
         this.maxTime = settings.maxTime();
         this.maxSpeed = physics.maxSpeed();
+        this.puttsOnly = physics.puttsOnly();
         this.area = area;
         GroundCache ground = new GroundCache(terrain);
         ForceField forces = world.forces();
@@ -164,6 +167,7 @@ public final class Stroke {
                     "shot speed %.3f m/s exceeds the course's maxSpeed of %s m/s", speed, maxSpeed));
         }
         if (!Double.isFinite(clock)) throw new IllegalArgumentException("the course clock must be a finite number");
+        if (puttsOnly) vz0 = 0;
         startClock = clock;
         BallState ball = this.ball;
         ball.reset(x0, y0, vx0, vy0);

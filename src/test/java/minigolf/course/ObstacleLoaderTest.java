@@ -4,6 +4,7 @@ import static minigolf.course.CourseLoaderTest.SRC;
 import static minigolf.course.CourseLoaderTest.edit;
 import static minigolf.course.CourseLoaderTest.error;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -86,6 +87,20 @@ class ObstacleLoaderTest {
                 error(edit("\"model\": \"classic\" }", "\"model\": \"classic\", \"ballRadius\": 0 }")));
         assertEquals("courses/x.json: physics.groundRestitution: must be between 0 and 1, got -0.1",
                 error(edit("\"model\": \"classic\" }", "\"model\": \"classic\", \"groundRestitution\": -0.1 }")));
+    }
+
+    /** {@code physics.puttsOnly} (classic tracks): read, written back only when set, refused when not a boolean. */
+    @Test
+    void puttsOnlyIsReadWrittenAndChecked() throws CourseException {
+        Course plain = CourseLoader.parse(edit("\"model\": \"classic\" }", "\"model\": \"classic\" }"), SRC);
+        assertFalse(plain.physics().puttsOnly());
+        assertFalse(CourseWriter.toJson(plain).contains("puttsOnly"));
+        Course putts = CourseLoader.parse(edit("\"model\": \"classic\" }", "\"model\": \"classic\", \"puttsOnly\": true }"), SRC);
+        assertTrue(putts.physics().puttsOnly());
+        assertEquals(putts.physics(), CourseLoader.parse(CourseWriter.toJson(putts), SRC).physics());
+        assertTrue(putts.physics().withModel(PhysicsModel.COMPLETE).withFlight(0, 0.5).puttsOnly());
+        assertEquals("courses/x.json: physics.puttsOnly: expected true or false, got \"yes\"",
+                error(edit("\"model\": \"classic\" }", "\"model\": \"classic\", \"puttsOnly\": \"yes\" }")));
     }
 
     @Test

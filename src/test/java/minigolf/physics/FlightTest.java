@@ -106,6 +106,20 @@ class FlightTest {
         assertTrue(chip.events().stream().noneMatch(e -> e.type() == StrokeEvent.Type.COLLISION), chip.events().toString());
     }
 
+    /** A course that plays putts only (a classic track): the chip over the wall is played along the ground. */
+    @Test
+    void onAPuttsOnlyCourseAChipIsPlayedAsThePuttBeneathIt() {
+        World w = TestObstacles.with(flat(0.5, null), List.of(new Obstacle.Wall(new Vec2(0, -3), new Vec2(0, 3), 0.1, 0.15, 0.7)));
+        World putts = new World(w.course().withPhysics(w.physics().withPuttsOnly(true)), w.terrain());
+        ShotResult chip = TestWorlds.rk4(putts).simulate(-1, 0, 2.8, 0, 2.8, null);
+        ShotResult putt = TestWorlds.rk4(putts).simulate(-1, 0, 2.8, 0, 0, null);
+        assertTrue(chip.endX() < 0, chip.toString());
+        assertEquals(putt.endX(), chip.endX(), 0);
+        assertEquals(putt.endY(), chip.endY(), 0);
+        assertTrue(chip.events().stream().noneMatch(e -> e.type() == StrokeEvent.Type.LAUNCH), chip.events().toString());
+        assertEquals(StrokeEvent.Type.COLLISION, chip.events().get(0).type());
+    }
+
     /** A plateau at h = 3 for x < 0, then a drop of slope 1. */
     private static World cliff() {
         Terrain cliff = new Terrain() {

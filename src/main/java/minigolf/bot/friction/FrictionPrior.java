@@ -49,7 +49,8 @@ public final class FrictionPrior {
         Course c = truth.course();
         PhysicsSettings p = c.physics();
         PhysicsSettings physics = new PhysicsSettings(p.gravity(), KINETIC * scales[0], STATIC * scales[0], p.maxSpeed(),
-                p.model(), p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution());
+                p.model(), p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution(),
+                p.puttsOnly());
         List<Zone> zones = new ArrayList<>();
         for (int i = 0; i < c.zones().size(); i++) {
             Zone z = c.zones().get(i);

@@ -54,7 +54,8 @@ final class DenseSweep {
     DenseSweep(Stroke s, MapTwoStrokes layups) {
         this.s = s;
         this.layups = layups;
-        boolean flat = Flatness.isFlat(s.world);
+        // Push zones and magnets bend slow shots more than fast ones, as hills do.
+        boolean flat = Flatness.isFlat(s.world) && s.world.forces() == null;
         this.speeds = flat ? new double[] {1} : HILL_SPEEDS;
         this.fineSpeeds = flat ? new double[] {1} : HILL_FINE_SPEEDS;
     }

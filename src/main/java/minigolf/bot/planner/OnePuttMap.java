@@ -92,7 +92,7 @@ final class OnePuttMap {
         // restitutions above 1 that trace the rays backwards.
         PhysicsSettings quick = new PhysicsSettings(p.gravity(), p.kineticFriction(), p.staticFriction(),
                 UNCAPPED * p.maxSpeed(), p.model(), p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(),
-                p.groundRestitution());
+                p.groundRestitution(), p.puttsOnly());
         Hole h = c.hole();
         List<Obstacle> inverse = new ArrayList<>();
         for (Obstacle o : c.obstacles()) {

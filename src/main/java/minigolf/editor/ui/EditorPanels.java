@@ -337,7 +337,7 @@ final class EditorPanels {
             if (Gui.button("Apply physics")) {
                 PhysicsSettings p = app.editor.toCourse().physics();
                 app.editor.setPhysics(new PhysicsSettings(gravity.get(), kinetic.get(), statics.get(), maxSpeed.get(), p.model(),
-                        p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution()));
+                        p.ballRadius(), p.ballMass(), p.dragCoefficient(), p.airDensity(), p.groundRestitution(), p.puttsOnly()));
             }
             if (Gui.inputInt("Max objects", maxObjects)) app.editor.setMaxObstacles(Math.max(0, maxObjects.get()));
         } catch (IllegalArgumentException e) {
