@@ -22,7 +22,10 @@ final class StoppingTail {
     static final double TOLERANCE = 1e-6;
     /** Fixed-point iterations of the chord's midpoint. */
     static final int ITERATIONS = 2;
-    /** After a tail is refused at some speed, it is tried again only below this fraction of it. */
+    /**
+     * After a tail is refused at some speed, it is tried again only below this fraction of it, or
+     * below the speed at which its estimate (growing like the speed^4: the length squared) would pass.
+     */
     static final double RETRY = 0.8;
     /** How much further than its bound from the sampled slopes the path may reach (the slope between samples). */
     static final double REACH_FACTOR = 1.25;
@@ -46,8 +49,8 @@ final class StoppingTail {
     private final double[] pull = new double[2];
     /** Set by the rolling phase: its obstacles, zones' edges, magnets, teleports and (capture rule) hole. */
     Reach reach;
-    /** The speed at which the tail was last tried this stroke. */
-    private double lastTried = Double.POSITIVE_INFINITY;
+    /** The speed at which the tail was last tried this stroke, and the speed below which it is tried again. */
+    private double lastTried = Double.POSITIVE_INFINITY, retryBelow = Double.POSITIVE_INFINITY;
 
     StoppingTail(BallState ball, GroundCache ground, Terrain terrain, StepLocator locate, StrokeReports reports,
                  RestRule rest, double gravity, double dt, double maxTime) {
@@ -65,6 +68,7 @@ final class StoppingTail {
     /** A new stroke. */
     void reset() {
         lastTried = Double.POSITIVE_INFINITY;
+        retryBelow = Double.POSITIVE_INFINITY;
     }
 
     /**
@@ -73,8 +77,9 @@ final class StoppingTail {
      */
     boolean stops(double speed) {
         // Tried again only once the ball is much slower (or faster: it gained speed since).
-        if (!(speed <= MAX_SPEED) || (speed > RETRY * lastTried && speed <= lastTried)) return false;
+        if (!(speed <= MAX_SPEED) || (speed > retryBelow && speed <= lastTried)) return false;
         lastTried = speed;
+        retryBelow = RETRY * speed;
         BallState b = ball;
         double mu = b.muK;
         double s0 = Math.hypot(b.pullX, b.pullY);
@@ -105,7 +110,11 @@ final class StoppingTail {
         // times that change over the margin of friction (the midpoint's plane does not cancel it).
         double spread = Math.hypot(pull[0] - b.pullX, pull[1] - b.pullY) / (mu - steepest);
         double length = Math.hypot(dx, dy);
-        if (!(change + length * spread <= TOLERANCE)) return false;
+        double estimate = change + length * spread;
+        if (!(estimate <= TOLERANCE)) {
+            retryBelow = Math.min(retryBelow, speed * Math.sqrt(Math.sqrt(TOLERANCE / estimate)));
+            return false;
+        }
         // Braking at least g (mu_k - steepest), the ball's path is no longer than this.
         double r = REACH_FACTOR * speed * speed / (2 * gravity * (mu - steepest)) + RollingPhase.PATH_MARGIN;
         double minX = b.x - r, maxX = b.x + r, minY = b.y - r, maxY = b.y + r;
