@@ -1,4 +1,7 @@
 #include "lighting.glsl"
+#ifdef BED_BLEND
+#include "sky-colour.glsl"
+#endif
 
 // Water at z = 0. With render targets (uUseTargets = 1): the scene mirrored in z = 0 (reflection)
 // and the lake bed under the surface (refraction), both sampled at this pixel's screen position,
@@ -6,6 +9,10 @@
 // mostly reflection at grazing angles). Water depth tints and darkens the refraction and fades
 // the shoreline. Without targets (the minimap, or reflections off) a sky colour and a body colour
 // stand in for the two images.
+// BED_BLEND (software rasterisers; WaterPass): no images at all. The reflection is the sky's gradient
+// in the rippled mirror direction, and the bed is the one already drawn behind the water: dual-source
+// blending (fragColor + destination x bedFactor) tints and darkens it exactly as the refraction image
+// would be, only not shifted by the ripples.
 
 in vec3 vWorld;
 in float vDepth;
@@ -18,7 +25,12 @@ uniform sampler2D uRefraction;
 uniform sampler2D uDudv;
 uniform float uDistortion;   // ripple strength in screen-space units
 
+#ifdef BED_BLEND
+layout(location = 0, index = 0) out vec4 fragColor;
+layout(location = 0, index = 1) out vec4 bedFactor;
+#else
 out vec4 fragColor;
+#endif
 
 const vec3 SHALLOW = vec3(0.10, 0.52, 0.74);
 const vec3 DEEP = vec3(0.04, 0.24, 0.52);
@@ -38,6 +50,18 @@ void main() {
     float shore = smoothstep(0.0, 0.02, vDepth);
 
     vec3 body = mix(SHALLOW, DEEP, deep);
+#ifdef BED_BLEND
+    vec3 reflectedSky = skyGradient(reflect(-v, n));
+    float mirror = clamp((0.02 + 0.98 * pow(1.0 - clamp(dot(n, v), 0.0, 1.0), 5.0)) * 1.3, 0.0, 1.0);
+    float murk = 0.55 + 0.32 * deep;                       // the body colour's share of the refraction
+    vec3 glint = uSunColor * pow(max(dot(n, normalize(normalize(uSunDirection) + v)), 0.0), 220.0) * 0.8 * shore;
+    vec3 own = (1.0 - mirror) * murk * body + mirror * reflectedSky + glint;
+    float fog = hazeAmount(length(uEye - vWorld));
+    float cover = smoothstep(0.0, 0.006, vDepth);          // the soft shoreline
+    fragColor = vec4(cover * mix(own, uFogColor, fog), 1.0);
+    bedFactor = vec4(cover * (1.0 - fog) * (1.0 - mirror) * (1.0 - murk) * vec3(0.55, 0.85, 0.95) + (1.0 - cover), 1.0);
+    return;
+#endif
     vec3 reflected;
     vec3 refracted;
     if (uUseTargets == 1) {

@@ -485,6 +485,15 @@ public final class GameApp implements WindowApp {
         return toasts.notice();
     }
 
+    /** Where the notice at the top ends (0 when none is shown): a panel at the top goes below it. */
+    float noticeBottom() {
+        return toasts.noticeBottom();
+    }
+
+    Toasts toasts() {
+        return toasts;
+    }
+
     public void dismissNotice() {
         toasts.dismissNotice();
     }

@@ -29,6 +29,8 @@ final class Hud {
     private final GameApp app;
     /** The physics readout: off unless asked for. */
     private final GuiBool details = new GuiBool(false);
+    /** Where the bot's panel was drawn in the last frame ({x, y, w, h}), or null (tests). */
+    private float[] botPanel;
 
     Hud(GameApp app) {
         this.app = app;
@@ -36,6 +38,7 @@ final class Hud {
 
     /** Draws the HUD; {@code aimSpeed} in m/s while an aim is dragged, else negative. */
     void render(float w, float h, double aimSpeed, int loftDegrees) {
+        botPanel = null;
         PlaySession play = app.play();
         Game g = play.game();
         Gui.setNextWindowPos(12, 12, GuiCond.Always);
@@ -90,9 +93,11 @@ final class Hud {
         BotTurn bot = play.botTurn();
         if (bot != null) {
             PlanOverlay.draw(Gui.getBackgroundDrawList(), bot.plan(), p -> app.toScreen(p[0], p[1]));
-            // At the top: at the bottom it hid the bot's own ball at the tee.
-            Gui.setNextWindowPos(w * 0.5f, 12, GuiCond.Always, 0.5f, 0f);
+            // At the top (at the bottom it hid the bot's own ball at the tee), below a notice if one is shown.
+            float notice = app.noticeBottom();
+            Gui.setNextWindowPos(w * 0.5f, notice > 0 ? notice + 8 : 12, GuiCond.Always, 0.5f, 0f);
             Gui.begin("##bot", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize);
+            botPanel = Gui.windowRect();
             Game game = play.game();
             String who = game != null && game.currentPlayer() >= 0 ? game.players().get(game.currentPlayer()).name() : "The bot";
             // The bot's phase and simulations are for practice mode; a player sees that it is thinking.
@@ -110,6 +115,10 @@ final class Hud {
             Gui.text(String.format(Locale.ROOT, "Bot waits for its moment: hits in %.1f s", waitLeft));
             Gui.end();
         }
+    }
+
+    float[] botPanel() {
+        return botPanel;
     }
 
     /** "Ann to play"; a bot says it is one once ("Robo to play (computer)"; "Bot (planner) to play" as it is). */

@@ -81,8 +81,6 @@ final class PlaySession {
     static final double MIN_THINKING_SECONDS = 0.8;
     /** How long the bot now to play has been thinking (s of play). */
     private double botThinking;
-    /** The bots' seed for this game or round (BotTurn.seed), drawn afresh when one starts or is resumed. */
-    private long botSeed = System.nanoTime();
     private ShotRecord lastStroke;
     /** A room on a game server being played instead of a local game, or null. */
     private OnlinePlay online;
@@ -160,9 +158,10 @@ final class PlaySession {
     void start(List<Player> players, UserSettings s) {
         stopPlay();
         closeOnline();
-        botSeed = System.nanoTime();
+        // The bots' seed (BotTurn.seed), drawn for each game or round and saved with it (Game.botSeed).
+        long botSeed = System.nanoTime();
         if (roundToPlay != null) {
-            round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
+            round = new RoundGame(roundToPlay, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime(), botSeed);
             showHole();
             say.accept(roundToPlay.name() + ", hole 1 of " + roundToPlay.size() + " (par " + roundToPlay.hole(0).par() + "): "
                     + teeOff(players.get(0)));
@@ -170,7 +169,7 @@ final class PlaySession {
         }
         round = null;
         // The "realistic" noise, drawn from a new seed each game (saved with the game, so a resumed game goes on alike).
-        game = new Game(world, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime());
+        game = new Game(world, s.simulation(), players, s.strokeLimit(), s.noise(), System.nanoTime(), botSeed);
         say.accept(teeOff(players.get(0)));
     }
 
@@ -219,7 +218,6 @@ final class PlaySession {
             SavedRounds.AnySave save = SavedRounds.loadAny(file);
             stopPlay();
             closeOnline();
-            botSeed = System.nanoTime();
             if (save.round() != null) {
                 round = save.round();
                 roundToPlay = round.round();
@@ -337,7 +335,7 @@ final class PlaySession {
                 }
                 PlayerState s = game.player(seat);
                 botTurn = new BotTurn(planner, game.world(), game.settings(), s.x(), s.y(), s.total(),
-                        BotTurn.seed(botSeed, round == null ? 0 : round.holeIndex(), game.history().size(), seat),
+                        BotTurn.seed(game.botSeed(), round == null ? 0 : round.holeIndex(), game.history().size(), seat),
                         BotConditions.of(game, seat, hideFrictionFromBots));
                 botThinking = 0;
             } else if ((botThinking += elapsed * timeScale) >= MIN_THINKING_SECONDS && botTurn.isDone()) {

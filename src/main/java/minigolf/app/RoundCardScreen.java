@@ -20,6 +20,8 @@ final class RoundCardScreen extends GameScreen {
     /** Frames a scripted run (--frames) shows the card between holes before it plays the next. */
     static final int SCRIPTED_FRAMES = 30;
     private int frames;
+    /** Where the final card's "Play again" was drawn last ({x, y, width, height}), or null: a window test clicks it. */
+    private float[] playAgain;
 
     RoundCardScreen(GameApp app) {
         super(app);
@@ -28,6 +30,11 @@ final class RoundCardScreen extends GameScreen {
     @Override
     public void show() {
         frames = 0;
+        playAgain = null;
+    }
+
+    float[] playAgainBounds() {
+        return playAgain;
     }
 
     private boolean over() {
@@ -79,9 +86,9 @@ final class RoundCardScreen extends GameScreen {
             }
         } else {
             // After an online round, another room on the server rather than a hot-seat game.
-            if (Gui.button("Play again", 160, 0)) {
-                app.setScreen(app.play().online() != null ? app.screens().online() : app.screens().newGame());
-            }
+            boolean again = Gui.button("Play again", 160, 0);
+            playAgain = Gui.lastItemBounds();
+            if (again) app.setScreen(app.play().online() != null ? app.screens().online() : app.screens().newGame());
             Gui.sameLine();
             if (Gui.button("Main menu", 160, 0)) app.toMainMenu();
         }

@@ -18,6 +18,10 @@ final class Toasts {
     private String message;
     private double until;
     private String notice;
+    private float[] noticeRect;
+    /** The notice's window, and the top of the screen it hangs from (interface units). */
+    static final String NOTICE = "Notice##notice";
+    static final float NOTICE_TOP = 16;
 
     Toasts(DoubleSupplier clock) {
         this.clock = clock;
@@ -48,11 +52,28 @@ final class Toasts {
         notice = null;
     }
 
+    /**
+     * The lowest point of the notice at the top of the screen (interface units), where a panel at
+     * the top goes below it; 0 without a notice, and in the notice's first frame (it measures itself
+     * off screen then).
+     */
+    float noticeBottom() {
+        float[] size = notice == null ? null : Gui.measuredSize(NOTICE);
+        return size == null ? 0 : NOTICE_TOP + size[1];
+    }
+
+    /** Where the notice was drawn in the last frame ({x, y, w, h}), or null (tests). */
+    float[] noticeRect() {
+        return noticeRect;
+    }
+
     /** Draws the notice and the message over whatever screen is shown. */
     void render(float w, float h) {
+        noticeRect = null;
         if (notice != null) {
-            Gui.setNextWindowPos(w * 0.5f, 16, GuiCond.Always, 0.5f, 0f);
-            Gui.begin("Notice##notice", GuiWindowFlags.NoCollapse | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
+            Gui.setNextWindowPos(w * 0.5f, NOTICE_TOP, GuiCond.Always, 0.5f, 0f);
+            Gui.begin(NOTICE, GuiWindowFlags.NoCollapse | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
+            noticeRect = Gui.windowRect();
             Gui.text(notice);
             if (Gui.button("Dismiss")) dismissNotice();
             Gui.end();

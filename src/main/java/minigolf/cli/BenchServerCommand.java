@@ -49,6 +49,14 @@ final class BenchServerCommand implements Callable<Integer> {
             + "aims (default: ${DEFAULT-VALUE}).")
     double think = 2;
 
+    @Option(names = "--think-spread", paramLabel = "FRACTION", description = "Each pause is drawn uniformly within "
+            + "think × (1 ± FRACTION), 0 to 1 (default: ${DEFAULT-VALUE}; 0: every room shoots in lock-step, since all play "
+            + "the same course with the same bot).")
+    double thinkSpread = 0.5;
+
+    @Option(names = "--seed", paramLabel = "N", description = "Seed of the pauses (default: ${DEFAULT-VALUE}).")
+    long seed = 1;
+
     @Option(names = "--server-heap", paramLabel = "SIZE", description = "The server's -Xmx (default: ${DEFAULT-VALUE}).")
     String serverHeap = "768m";
 
@@ -60,6 +68,7 @@ final class BenchServerCommand implements Callable<Integer> {
         if (rooms < 1 || rooms > 5000) throw new UserError("--rooms: must be 1 to 5000");
         if (seats < 1 || seats > 4) throw new UserError("--seats: must be 1 to 4");
         if (!(think >= 0 && think <= 60)) throw new UserError("--think: must be 0 to 60 s");
+        if (!(thinkSpread >= 0 && thinkSpread <= 1)) throw new UserError("--think-spread: must be 0 to 1");
         if (!serverHeap.matches("[0-9]+[mMgG]")) throw new UserError("--server-heap: a size such as 768m or 1g");
         Path scratch = Files.createTempDirectory("minigolf-bench-server");
         Path db = scratch.resolve("bench.db");
@@ -77,7 +86,7 @@ final class BenchServerCommand implements Callable<Integer> {
             String loadBefore = loadAverage();
             double cpuBefore = LoadBench.cpuSeconds(server.pid());
             LoadBench.Result res = LoadBench.run(OnlineClient.uri("127.0.0.1:" + port), course, rooms, seats, bot,
-                    Math.round(think * 1000), timeout, line -> {
+                    Math.round(think * 1000), thinkSpread, seed, timeout, line -> {
                         err.println("bench-server: " + line + ", load " + loadAverage());
                         err.flush();
                     });
@@ -90,7 +99,7 @@ final class BenchServerCommand implements Callable<Integer> {
             Check check = check(db, res.cards(), seats);
             ObjectNode out = minigolf.online.Json.object();
             out.put("players", res.players()).put("peakConnected", res.peakConnected()).put("rooms", rooms)
-                    .put("roomsFinished", res.roomsFinished()).put("course", course).put("bot", bot).put("thinkSeconds", think)
+                    .put("roomsFinished", res.roomsFinished()).put("course", course).put("bot", bot).put("thinkSeconds", think).put("thinkSpread", thinkSpread).put("seed", seed)
                     .put("shots", res.shots()).put("seconds", Math.round(res.seconds() * 10) / 10.0)
                     .put("p50Ms", round(res.percentileMs(50))).put("p99Ms", round(res.percentileMs(99)))
                     .put("maxMs", round(res.percentileMs(100))).put("reconnects", res.reconnects()).put("serverPeakRssMb", Math.round(rss))

@@ -37,6 +37,10 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--no-reflections", description = "Plain water colours instead of reflection and refraction (default: off).")
     boolean noReflections;
 
+    @Option(names = "--quality", paramLabel = "Q",
+            description = "high (real GPUs: 4x multisampling, water images) or software (what llvmpipe gets) (default: ${DEFAULT-VALUE}).")
+    String quality = "high";
+
     @Option(names = "--minimap", description = "Draw the minimap in the top-right corner, as the game does (default: off).")
     boolean minimap;
 
@@ -47,11 +51,13 @@ final class RenderCommand implements Callable<Integer> {
             throw new UserError("--out: the file name must end in .png, got '" + out + "'");
         }
         if (Files.isDirectory(out)) throw new UserError("--out: '" + out + "' is a directory");
+        minigolf.render.RenderQuality q = minigolf.render.RenderQuality.named(quality);
+        if (q == null) throw new UserError("--quality: must be high or software, got '" + quality + "'");
         World world = CourseArgument.load(course);
         float aspect = (float) s.width() / s.height();
-        try (Offscreen off = new Offscreen(s.width(), s.height(), 4);
+        try (Offscreen off = new Offscreen(s.width(), s.height(), q.samples());
              SceneRenderer renderer = new SceneRenderer(world.course(), world.terrain(),
-                     heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN)) {
+                     heightMap ? TerrainMesh.ColorMode.HEIGHT_MAP : TerrainMesh.ColorMode.GREEN, q)) {
             renderer.setCourseFolder(course.toAbsolutePath().getParent());
             renderer.setWaterReflections(!noReflections);
             OrbitCamera camera = camera(world, aspect);

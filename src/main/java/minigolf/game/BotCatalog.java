@@ -30,13 +30,24 @@ import minigolf.physics.World;
 public final class BotCatalog {
     /** Simulations a bot may spend on one stroke in the game. */
     public static final long BUDGET_PER_STROKE = 20_000;
-    /**
-     * The budget of {@code planner-aces}, the strong and slow choice: enough for the planner's full
-     * search with its two- and three-stroke searches (docs/bots.md), still within the time limit.
-     */
-    public static final long FULL_SEARCH_BUDGET_PER_STROKE = 1_000_000;
     /** Wall time a bot may think about one stroke in the game; then it plays its best shot so far. */
     public static final double TIME_LIMIT_PER_STROKE = 20;
+    /**
+     * Simulations {@code planner-aces}' full search runs through in a second of one core's time, as
+     * measured on the project's shared 2-core machine under a load of about 15-20 (planner-aces on
+     * the tile courses of seed 47692372: the median of the nine games whose search spent over
+     * 100,000, 11,700-16,300; docs/bots.md); a quiet core runs about twice as many
+     * (docs/measurements.md).
+     */
+    static final double FULL_SEARCH_SIMULATIONS_PER_SECOND = 13_000;
+    /**
+     * The budget of {@code planner-aces}, the strong and slow choice: the simulations its full
+     * search (which it runs at any budget, its stages sized to what is left) gets through in the
+     * stroke's {@link #TIME_LIMIT_PER_STROKE} at that rate. With 1,000,000 a single stroke's search
+     * could run 300,000 simulations and more, over 20 s on a loaded machine, and the time limit cut it
+     * at whatever it had found; sized to the time, its search ends and it plays its choice.
+     */
+    public static final long FULL_SEARCH_BUDGET_PER_STROKE = Math.round(TIME_LIMIT_PER_STROKE * FULL_SEARCH_SIMULATIONS_PER_SECOND);
     private static final Map<String, Supplier<ShotPlanner>> PLANNERS = new LinkedHashMap<>();
 
     /** The opponent a new bot seat starts with. */

@@ -46,6 +46,8 @@ public final class Game {
 
     private final NoiseModel noise;
     private final long noiseSeed;
+    /** The seed the computer opponents' decisions are drawn from (see {@link #botSeed()}). */
+    private final long botSeed;
     private Stroke stroke;
     private int strokePlayer = -1;
     /** The stroke in flight as the player chose it (what a save keeps: the noise is drawn again, the same). */
@@ -69,6 +71,12 @@ public final class Game {
      */
     public Game(World world, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
                 long noiseSeed) {
+        this(world, settings, players, strokeLimit, noise, noiseSeed, 0);
+    }
+
+    /** As {@link #Game(World, SimulationSettings, List, int, NoiseModel, long)}, its bots drawing from {@code botSeed}. */
+    public Game(World world, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
+                long noiseSeed, long botSeed) {
         if (world == null || settings == null) throw new IllegalArgumentException("world and settings must be given");
         if (players == null || players.isEmpty() || players.size() > MAX_PLAYERS) {
             throw new IllegalArgumentException("a game has 1 to " + MAX_PLAYERS + " players");
@@ -83,6 +91,8 @@ public final class Game {
         this.noise = noise == null ? NoiseModel.NONE : noise;
         // Without noise the seed means nothing (and a save does not keep it): one state, one save.
         this.noiseSeed = this.noise.isNone() ? 0 : noiseSeed;
+        // Likewise without a computer opponent.
+        this.botSeed = this.players.stream().anyMatch(Player::isBot) ? botSeed : 0;
         // Each ball waits on a spot of its own beside the tee (TeeSpots: checked like a start).
         for (minigolf.course.Vec2 spot : TeeSpots.of(world, players.size())) {
             states.add(new PlayerState(spot.x(), spot.y(), 0, 0, PlayerStatus.PLAYING));
@@ -92,7 +102,8 @@ public final class Game {
 
     /** Rebuilds a game from saved state (see {@link GameState}); a stroke that was rolling starts again. */
     public static Game restore(World world, GameState saved) {
-        Game game = new Game(world, saved.settings(), saved.players(), saved.strokeLimit(), saved.noise(), saved.noiseSeed());
+        Game game = new Game(world, saved.settings(), saved.players(), saved.strokeLimit(), saved.noise(), saved.noiseSeed(),
+                saved.botSeed());
         game.states.clear();
         game.states.addAll(saved.states());
         game.history.addAll(saved.history());
@@ -110,7 +121,7 @@ public final class Game {
     public GameState state() {
         PendingShot pending = stroke == null ? null : new PendingShot(strokeVx, strokeVy, strokeVz);
         return new GameState(settings, players, strokeLimit, List.copyOf(states), List.copyOf(history), pending, noise,
-                noiseSeed, clock);
+                noiseSeed, clock, botSeed);
     }
 
     /**
@@ -148,6 +159,15 @@ public final class Game {
     /** The seed of the noise stream (0 without noise). */
     public long noiseSeed() {
         return noiseSeed;
+    }
+
+    /**
+     * The seed of this game's computer opponents (0 without one): the game mixes it with the hole,
+     * the strokes played and the seat for each decision ({@link BotTurn#seed}). Drawn when a game or
+     * round starts and saved with it, so a resumed game's bots play the strokes an unbroken one would.
+     */
+    public long botSeed() {
+        return botSeed;
     }
 
     public World world() {

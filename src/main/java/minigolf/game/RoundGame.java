@@ -23,6 +23,8 @@ public final class RoundGame {
     private final int strokeLimit;
     private final NoiseModel noise;
     private final long noiseSeed;
+    /** The seed every hole's computer opponents draw from (the same on every hole: BotTurn.seed mixes in the hole). */
+    private final long botSeed;
     /** The strokes of each finished hole, as played (empty for holes of a save from before they were kept). */
     private final List<List<ShotRecord>> finishedStrokes = new ArrayList<>();
     /** scores[hole][seat]; only the first {@link #finished} rows are filled. */
@@ -41,11 +43,17 @@ public final class RoundGame {
     /** A round played with noise on every stroke (the "realistic" setting), drawn from {@code noiseSeed}. */
     public RoundGame(Round round, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
                      long noiseSeed) {
-        this(round, settings, players, strokeLimit, noise, noiseSeed, 0, new int[0][], null);
+        this(round, settings, players, strokeLimit, noise, noiseSeed, 0);
+    }
+
+    /** As {@link #RoundGame(Round, SimulationSettings, List, int, NoiseModel, long)}, its bots drawing from {@code botSeed}. */
+    public RoundGame(Round round, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
+                     long noiseSeed, long botSeed) {
+        this(round, settings, players, strokeLimit, noise, noiseSeed, botSeed, 0, new int[0][], null);
     }
 
     private RoundGame(Round round, SimulationSettings settings, List<Player> players, int strokeLimit, NoiseModel noise,
-                      long noiseSeed, int finished, int[][] done, Game current) {
+                      long noiseSeed, long botSeed, int finished, int[][] done, Game current) {
         if (round == null) throw new IllegalArgumentException("a round must be given");
         this.round = round;
         this.settings = settings;
@@ -53,6 +61,7 @@ public final class RoundGame {
         this.strokeLimit = strokeLimit;
         this.noise = noise == null ? NoiseModel.NONE : noise;
         this.noiseSeed = this.noise.isNone() ? 0 : noiseSeed;
+        this.botSeed = botSeed;
         this.scores = new int[round.size()][];
         if (finished < 0 || finished > round.size() || done.length != finished) {
             throw new IllegalArgumentException("scores for " + done.length + " holes do not fit a round of " + round.size());
@@ -96,14 +105,14 @@ public final class RoundGame {
         int hole = Math.min(finishedScores.length, round.size() - 1);
         long roundSeed = current.noiseSeed() - HOLE_SEED_STEP * hole;
         RoundGame rg = new RoundGame(round, current.settings(), current.players(), current.strokeLimit(), current.noise(),
-                roundSeed, finishedScores.length, finishedScores, current);
+                roundSeed, current.botSeed(), finishedScores.length, finishedScores, current);
         for (int h = 0; h < finishedScores.length; h++) rg.finishedStrokes.add(h < strokes.size() ? List.copyOf(strokes.get(h)) : List.of());
         return rg;
     }
 
     /** The game on hole h, with the round's noise and that hole's stream. */
     private Game holeGame(int h) {
-        return new Game(round.hole(h).world(), settings, players, strokeLimit, noise, noiseSeed + HOLE_SEED_STEP * h);
+        return new Game(round.hole(h).world(), settings, players, strokeLimit, noise, noiseSeed + HOLE_SEED_STEP * h, botSeed);
     }
 
     /** The noise every stroke of the round is played with. */

@@ -28,7 +28,7 @@ public final class SavedGames {
     public static final int FORMAT = 1;
     static final String KIND = "minigolf-saved-game";
     private static final List<String> TOP = List.of("format", "kind", "course", "simulation", "strokeLimit",
-            "players", "history", "pendingShot", "noise", "clock");
+            "players", "history", "pendingShot", "noise", "clock", "botSeed");
     private static final List<String> SIMULATION = List.of("integrator", "dt", "maxTime");
     private static final List<String> PLAYER = List.of("name", "kind", "bot", "ball", "strokes", "penalties", "status");
     private static final List<String> SHOT = List.of("player", "start", "velocity", "outcome", "end", "clock");
@@ -89,6 +89,8 @@ public final class SavedGames {
         }
         // The course clock only where it is not 0, so saves from before it (and of still courses) stay as they were.
         if (s.clock() != 0) root.put("clock", s.clock());
+        // The bots' seed likewise (0 in a game without bots, and the default for saves from before it).
+        if (s.botSeed() != 0) root.put("botSeed", s.botSeed());
         writeHistory(root.putArray("history"), s.history());
         if (s.pendingShot() != null) {
             PendingShot p = s.pendingShot();
@@ -226,7 +228,14 @@ public final class SavedGames {
             noiseSeed = seed.longValue();
         }
         double clock = root.has("clock") ? clock(f, root, null) : 0;
-        return new Loaded(world, new GameState(settings, players, strokeLimit, states, history, pending, noise, noiseSeed, clock));
+        long botSeed = 0; // absent (saves from before it, games without bots): 0
+        JsonNode botSeedNode = root.get("botSeed");
+        if (botSeedNode != null && !botSeedNode.isNull()) {
+            if (!botSeedNode.isIntegralNumber() || !botSeedNode.canConvertToLong()) throw f.error("botSeed", "must be a whole number");
+            botSeed = botSeedNode.longValue();
+        }
+        return new Loaded(world, new GameState(settings, players, strokeLimit, states, history, pending, noise, noiseSeed, clock,
+                botSeed));
     }
 
     /** The course clock field of {@code o} (s): a finite number, 0 or more. */

@@ -93,6 +93,17 @@ public final class SavedRounds {
     }
 
     public static RoundGame parse(String json, String source) throws SaveGameException {
+        return parse(json, source, World::parse);
+    }
+
+    /** How a hole's course definition becomes a world (online play shares one world per definition among rooms). */
+    @FunctionalInterface
+    public interface WorldReader {
+        World read(String json, String source) throws CourseException;
+    }
+
+    /** As {@link #parse(String, String)}, every hole's definition read by {@code worlds}. */
+    public static RoundGame parse(String json, String source, WorldReader worlds) throws SaveGameException {
         JsonFields f = new JsonFields(source);
         JsonNode root = f.parse(json);
         f.onlyFields(root, null, TOP);
@@ -118,7 +129,7 @@ public final class SavedRounds {
             World world;
             try {
                 // Named by the save itself: its models are looked for beside the save, never where the label "course" points.
-                world = World.parse(JsonFields.MAPPER.writeValueAsString(definition), source);
+                world = worlds.read(JsonFields.MAPPER.writeValueAsString(definition), source);
             } catch (CourseException e) {
                 throw new SaveGameException(source, p + ".definition" + (e.path() == null ? "" : "." + e.path()), e.problem(), e);
             } catch (IOException e) {

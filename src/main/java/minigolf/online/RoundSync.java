@@ -48,7 +48,7 @@ public final class RoundSync {
         // The course clock where the server's stands after the stroke (a client does not simulate it).
         double clock = event.stroke() != null ? event.clockAfter() : s.clock();
         Game next = Game.restore(game.world(), new GameState(s.settings(), s.players(), s.strokeLimit(), states, history,
-                null, s.noise(), s.noiseSeed(), clock));
+                null, s.noise(), s.noiseSeed(), clock, s.botSeed()));
         for (int i = 0; i < s.players().size(); i++) next.passOver(i, game.isPassedOver(i));
         List<List<ShotRecord>> done = new ArrayList<>();
         for (int h = 0; h < round.holesFinished(); h++) done.add(round.holeStrokes(h));

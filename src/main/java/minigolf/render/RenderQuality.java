@@ -23,13 +23,16 @@ import static org.lwjgl.opengl.GL11.glGetString;
  *                         (the map is read back and searched once after it is drawn, see {@link SunlitCells})
  * @param ballShadowRedraw whether the balls' shadows are shaded only in a scissored second draw round them
  *                         (true), instead of by every lit pixel of the screen (see {@link BallShadowBounds})
+ * @param waterImages      whether the water mirrors the scene and shows the bed through images drawn for it
+ *                         (true); false: the sky's gradient is mirrored and the bed already drawn behind the
+ *                         water is tinted by blending (see {@link WaterPass}), no extra scene drawn
  */
 public record RenderQuality(String name, int samples, int shadowMapSize, float waterTargetScale, boolean shadowsInWater,
                             int shadowTaps, boolean vertexLit,
                             double terrainSpacing, boolean sunlitTerrain,
-                            boolean ballShadowRedraw) {
-    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4, false, 0.05, false, false);
-    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 1024, 0.35f, false, 1, true, 0.1, true, true);
+                            boolean ballShadowRedraw, boolean waterImages) {
+    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4, false, 0.05, false, false, true);
+    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 1024, 0.35f, false, 1, true, 0.1, true, true, false);
 
     /** Whether a GL_RENDERER string names a software rasteriser. */
     public static boolean isSoftware(String glRenderer) {

@@ -53,6 +53,8 @@ public final class SceneRenderer implements AutoCloseable {
     private float waterTargetScale;
     /** Whether the water's mirrored and refracted scenes are shadowed too (barely visible there). */
     private final boolean shadowsInWater;
+    /** Whether the water's reflection and refraction are images of the scene drawn for it (else sky and blending). */
+    private final boolean waterImages;
     /** Whether the balls' shadows are shaded in a second, scissored draw (software rasterisers). */
     private final boolean ballShadowRedraw;
     /** Whether the terrain's sunlit cells skip the shadow tap (software rasterisers). */
@@ -96,6 +98,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.shadowsInWater = quality.shadowsInWater();
         this.shadowTaps = quality.shadowTaps();
         this.ballShadowRedraw = quality.ballShadowRedraw();
+        this.waterImages = quality.waterImages();
         this.sunlitTerrain = quality.sunlitTerrain();
         SkyPass s = null;
         TerrainPass t = null;
@@ -435,12 +438,14 @@ public final class SceneRenderer implements AutoCloseable {
             terrain.setShadowedCells(shadowMap);
         }
         timer.mark("shadowMap");
-        boolean targets = water.hasWater() && waterReflections;
+        boolean mirror = water.hasWater() && waterReflections;
+        boolean targets = mirror && waterImages;
         if (targets) {
             renderWaterTargets(width, height);
             glBindFramebuffer(GL_FRAMEBUFFER, target);
         }
         water.useTargets(targets);
+        water.useBedBlend(mirror && !waterImages);
         glViewport(0, 0, width, height);
         // No colour clear: the sky fills every pixel the scene leaves at the far plane.
         glClear(GL_DEPTH_BUFFER_BIT);

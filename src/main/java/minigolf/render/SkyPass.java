@@ -27,8 +27,12 @@ public final class SkyPass implements RenderPass {
     static final int GRID_X = 16, GRID_Y = 10;
     /** Cells whose corners all point further than this from the sun cannot hold its disc (cells span about 3.5 degrees). */
     static final double SUN_CELL_COS = Math.cos(Math.toRadians(12));
-    /** The programs per cell group: bit 0 clouds, bit 1 the sun's disc. */
+    /** The programs per cell group: bit 0 clouds, bit 1 the sun's disc, bit 2 ground without per-pixel sea. */
     private final ShaderProgram[] programs;
+    /** Whether cells off the seaside's shore are drawn without the per-pixel sea (software tier). */
+    private final boolean shoreSplit;
+    private final float[] groundX = new float[(GRID_X + 1) * (GRID_Y + 1)];
+    private final float[] groundY = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final Texture clouds = Texture.fromPixels(CLOUD_TEXTURE_SIZE, CLOUD_TEXTURE_SIZE,
             CloudNoise.rgba(CLOUD_TEXTURE_SIZE), true);
     private final int vao = glGenVertexArrays();
@@ -69,8 +73,13 @@ public final class SkyPass implements RenderPass {
         // Per pixel (the shoreline, the ground's detail) only in the cells wholly below the horizon.
         String p = sea != null ? "SEA_PIXEL" : "NO_SEA_PIXEL";
         String g = groundLayer >= 0 ? "GROUND_DETAIL" : "NO_GROUND_DETAIL";
+        // Where the ground shows no per-pixel detail (software rasterisers), the cells off the shore's
+        // band take their colour from the grid's corners (groups 4 and 6; see sortCells).
+        shoreSplit = sea != null && groundLayer < 0;
         programs = new ShaderProgram[]{ShaderProgram.load("sky", s, p, g), ShaderProgram.load("sky", "CLOUDS", s),
-                ShaderProgram.load("sky", "SUN_DISC", s, p, g), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC", s)};
+                ShaderProgram.load("sky", "SUN_DISC", s, p, g), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC", s),
+                shoreSplit ? ShaderProgram.load("sky", s, "NO_SEA_PIXEL", g) : null, null,
+                shoreSplit ? ShaderProgram.load("sky", "SUN_DISC", s, "NO_SEA_PIXEL", g) : null, null};
         glBindVertexArray(vao);
         FloatBuffer corners = MemoryUtil.memAllocFloat((GRID_X + 1) * (GRID_Y + 1) * 2);
         try {
@@ -107,29 +116,51 @@ public final class SkyPass implements RenderPass {
      */
     static int[] sortCells(Matrix4f inverseViewProjection, org.joml.Vector3f toSun, float[] cornerUp, float[] cornerSun,
                            int[] order, Vector4f near, Vector4f far) {
+        return sortCells(inverseViewProjection, toSun, cornerUp, cornerSun, order, near, far, null, null, null);
+    }
+
+    /**
+     * As above, and with a {@code shore} (software rasterisers by the sea), bit 2 set on the cells
+     * below the horizon that cannot show the shore's band ({@link ShoreCells}): their grid corners
+     * give their colour, no per-pixel sea. {@code groundX}/{@code groundY}: scratch, one per corner.
+     */
+    static int[] sortCells(Matrix4f inverseViewProjection, org.joml.Vector3f toSun, float[] cornerUp, float[] cornerSun,
+                           int[] order, Vector4f near, Vector4f far, Shore shore, float[] groundX, float[] groundY) {
         for (int j = 0; j <= GRID_Y; j++) {
             for (int i = 0; i <= GRID_X; i++) {
                 inverseViewProjection.transform(near.set(ndcX(i), ndcY(j), -1f, 1f));
                 inverseViewProjection.transform(far.set(ndcX(i), ndcY(j), 1f, 1f));
-                float dx = far.x / far.w - near.x / near.w, dy = far.y / far.w - near.y / near.w, dz = far.z / far.w - near.z / near.w;
+                float nx = near.x / near.w, ny = near.y / near.w, nz = near.z / near.w;
+                float dx = far.x / far.w - nx, dy = far.y / far.w - ny, dz = far.z / far.w - nz;
                 float len = (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
-                cornerUp[j * (GRID_X + 1) + i] = dz / len;
-                cornerSun[j * (GRID_X + 1) + i] = (dx * toSun.x + dy * toSun.y + dz * toSun.z) / (len * toSun.length());
+                int c = j * (GRID_X + 1) + i;
+                cornerUp[c] = dz / len;
+                cornerSun[c] = (dx * toSun.x + dy * toSun.y + dz * toSun.z) / (len * toSun.length());
+                if (shore != null) {
+                    // Where the corner's ray meets the ground plane (as sky.vert: from the near point); NaN: it does not.
+                    boolean hits = dz < 0 && nz > shore.level();
+                    float t = hits ? (shore.level() - nz) / dz : Float.NaN;
+                    groundX[c] = nx + dx * t;
+                    groundY[c] = ny + dy * t;
+                }
             }
         }
         int[] group = new int[GRID_X * GRID_Y];
-        int[] counts = new int[4];
+        int[] counts = new int[8];
+        float[] qx = new float[4], qy = new float[4];
         for (int j = 0; j < GRID_Y; j++) {
             for (int i = 0; i < GRID_X; i++) {
                 int a = j * (GRID_X + 1) + i, b = a + 1, c = a + GRID_X + 1, d = c + 1;
                 boolean sky = cornerUp[a] > 0 || cornerUp[b] > 0 || cornerUp[c] > 0 || cornerUp[d] > 0;
                 boolean sun = Math.max(Math.max(cornerSun[a], cornerSun[b]), Math.max(cornerSun[c], cornerSun[d])) > SUN_CELL_COS;
                 int g = (sky ? 1 : 0) | (sun ? 2 : 0);
+                if (shore != null && !sky && plainGround(shore, groundX, groundY, qx, qy, a, b, d, c)) g |= 4;
                 group[j * GRID_X + i] = g;
                 counts[g] += 6;
             }
         }
-        int[] next = {0, counts[0], counts[0] + counts[1], counts[0] + counts[1] + counts[2]};
+        int[] next = new int[counts.length];
+        for (int g = 1; g < counts.length; g++) next[g] = next[g - 1] + counts[g - 1];
         for (int j = 0; j < GRID_Y; j++) {
             for (int i = 0; i < GRID_X; i++) {
                 int a = j * (GRID_X + 1) + i, b = a + 1, c = a + GRID_X + 1, d = c + 1;
@@ -146,9 +177,37 @@ public final class SkyPass implements RenderPass {
         return counts;
     }
 
+    /** Whether the cell with these corners (in order round it) lies on the ground, wholly off the shore's band. */
+    private static boolean plainGround(Shore shore, float[] groundX, float[] groundY, float[] qx, float[] qy, int... corners) {
+        for (int k = 0; k < 4; k++) {
+            qx[k] = groundX[corners[k]];
+            qy[k] = groundY[corners[k]];
+            if (Float.isNaN(qx[k]) || Float.isNaN(qy[k])) return false;
+        }
+        return ShoreCells.outsideBand(qx, qy, shore.courseRect(), shore.inner(), shore.outer());
+    }
+
+    /**
+     * The seaside's shore for {@link #sortCells}: the ground plane's height, the course's rectangle,
+     * and the band of distances from it where sky.frag's sea differs from its grid corners' colour
+     * (grass blends into beach from inner on; the foam reaches to outer).
+     */
+    record Shore(float level, float[] courseRect, float inner, float outer) {
+        static Shore of(Sea sea, float level) {
+            return new Shore(level, sea.courseRect(), sea.shore() - BEACH_WIDTH, sea.shore() + FOAM_REACH);
+        }
+    }
+
+    /** sky.frag's beach: grass gives way to sand from this far inside the shore. */
+    static final float BEACH_WIDTH = 2.7f;
+    /** sky.frag's foam: its line (0.25 m out, swinging 0.15 m, 0.22 m wide) is below 1e-5 of its strength beyond this. */
+    static final float FOAM_REACH = 1.2f;
+
     @Override
     public void render(FrameContext frame) {
-        int[] counts = sortCells(frame.inverseViewProjection, frame.sun.direction(), cornerUp, cornerSun, order, near, far);
+        Shore shore = shoreSplit && !Float.isNaN(groundLevel) ? Shore.of(sea, groundLevel) : null;
+        int[] counts = sortCells(frame.inverseViewProjection, frame.sun.direction(), cornerUp, cornerSun, order, near, far,
+                shore, groundX, groundY);
         glBindVertexArray(vao);
         indices.clear();
         indices.put(order).flip();
@@ -213,7 +272,7 @@ public final class SkyPass implements RenderPass {
 
     @Override
     public void close() {
-        for (ShaderProgram p : programs) p.close();
+        for (ShaderProgram p : programs) if (p != null) p.close();
         clouds.close();
         MemoryUtil.memFree(indices);
         glDeleteVertexArrays(vao);

@@ -25,6 +25,9 @@ public final class WaterPass implements RenderPass {
     private final RenderTarget reflection = new RenderTarget();
     private final RenderTarget refraction = new RenderTarget();
     private boolean targetsReady;
+    /** The software tier's water (water.frag's BED_BLEND, loaded on first use) and whether it is drawn. */
+    private ShaderProgram bedBlendShader;
+    private boolean bedBlend;
     /** The wet part of the plane (x, y at z = 0): minX, minY, maxX, maxY; null without water. */
     private float[] wetBox;
 
@@ -148,19 +151,37 @@ public final class WaterPass implements RenderPass {
         targetsReady = ready;
     }
 
+    /**
+     * Whether the next {@link #render} draws the software tier's water instead (no images: the sky's
+     * gradient mirrored, and the bed already drawn behind the water tinted by dual-source blending,
+     * fragment colour + destination x a per-pixel factor; only the ripples' shift of the bed is lost).
+     */
+    void useBedBlend(boolean on) {
+        bedBlend = on;
+    }
+
     /** The water without reflections (the minimap). */
     void renderSimple(FrameContext frame) {
-        boolean saved = targetsReady;
+        boolean saved = targetsReady, savedBlend = bedBlend;
         targetsReady = false;
+        bedBlend = false;
         render(frame);
         targetsReady = saved;
+        bedBlend = savedBlend;
     }
 
     @Override
     public void render(FrameContext frame) {
         if (mesh == null) return;
         glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        ShaderProgram shader = this.shader;
+        if (bedBlend) {
+            if (bedBlendShader == null) bedBlendShader = ShaderProgram.load("water", "BED_BLEND");
+            shader = bedBlendShader;
+            glBlendFunc(GL_ONE, org.lwjgl.opengl.GL33.GL_SRC1_COLOR);
+        } else {
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        }
         glDepthMask(false);
         shader.use();
         shader.set("uViewProjection", frame.viewProjection);
@@ -171,7 +192,7 @@ public final class WaterPass implements RenderPass {
         shader.set("uReflection", 0);
         shader.set("uRefraction", 1);
         shader.set("uDudv", 2);
-        if (targetsReady) {
+        if (targetsReady && !bedBlend) {
             reflection.bindColour(0);
             refraction.bindColour(1);
         }
@@ -179,6 +200,7 @@ public final class WaterPass implements RenderPass {
         mesh.draw();
         org.lwjgl.opengl.GL13.glActiveTexture(org.lwjgl.opengl.GL13.GL_TEXTURE0);
         glDepthMask(true);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDisable(GL_BLEND);
     }
 
@@ -186,6 +208,7 @@ public final class WaterPass implements RenderPass {
     public void close() {
         if (mesh != null) mesh.close();
         if (shader != null) shader.close();
+        if (bedBlendShader != null) bedBlendShader.close();
         if (dudv != null) dudv.close();
         reflection.close();
         refraction.close();

@@ -155,7 +155,8 @@ public final class Gui {
     /** The width and height of a label's plate ({@link GuiDrawList#addLabel}) round {@code text}. */
     public static float[] labelPlate(String text) {
         float pad = GuiDrawList.labelPad(font.height());
-        return new float[]{font.width(text) + 2 + 2 * pad, font.height() + 2 * pad};
+        String drawn = GuiDrawList.labelText(text, font, layer.displayWidth());
+        return new float[]{font.width(drawn) + 2 + 2 * pad, font.height() + 2 * pad};
     }
 
     static float textWidth(String s) {
@@ -206,6 +207,16 @@ public final class Gui {
 
     public static void end() {
         GuiWindows.end();
+    }
+
+    /**
+     * The size (width, height) the window {@code name} takes, as it measured its content in the
+     * frames before, or null before it was first drawn (a new window measures itself off screen):
+     * where one window is placed below another drawn later in the frame.
+     */
+    public static float[] measuredSize(String name) {
+        WindowMemory m = windows.get(windowId(name));
+        return m == null || !m.measured ? null : new float[]{m.needW, m.needH};
     }
 
     /** "Play##main" shows "Play"; "Card: A###card" shows "Card: A". */
@@ -369,6 +380,11 @@ public final class Gui {
 
     static float[] lastItemRect() {
         return lastItem;
+    }
+
+    /** The last widget's rectangle, {x, y, width, height} in the interface's pixels (a copy; tests click there). */
+    public static float[] lastItemBounds() {
+        return lastItem.clone();
     }
 
     static void setDeactivatedAfterEdit(boolean value) {

@@ -48,6 +48,11 @@ public final class GuiDrawList {
         ops.add(new Op(LABEL, x, y, 0, 0, textAbgr, 0, text, plateAbgr));
     }
 
+    /** A label's text as drawn on a screen {@code width} wide: cut to half the screen ({@link Gui#labelPlate} measures the same). */
+    static String labelText(String text, FontAtlas font, float width) {
+        return GuiText.fit(text, font, Math.max(font.height(), width / 2));
+    }
+
     /** The room a label's plate leaves round its text, for text {@code textHeight} high. */
     static float labelPad(float textHeight) {
         return 0.25f * textHeight;
@@ -82,7 +87,7 @@ public final class GuiDrawList {
                     case CIRCLE -> nk_stroke_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), op.thickness, colour);
                     case DISC -> nk_fill_circle(canvas, r.set(op.a - op.c, op.b - op.c, 2 * op.c, 2 * op.c), colour);
                     case LABEL -> {
-                        String text = GuiText.fit(op.text, font, Math.max(font.height(), width / 2));
+                        String text = labelText(op.text, font, width);
                         float w = font.width(text) + 2, h = font.height(), pad = labelPad(h);
                         int p = op.plate;
                         NkColor plate = NkColor.malloc(stack).set((byte) p, (byte) (p >> 8), (byte) (p >> 16), (byte) (p >>> 24));

@@ -9,7 +9,8 @@ import minigolf.game.SettingsStore;
 /**
  * The picture of a computer opponent thinking, as a player sees it (tools/readme-screenshots.sh,
  * docs/playing.md): Ann has putted on the first tee, and the frame is the third one drawn while
- * Hard plans its stroke. Usage: BotThinkingScreenshot OUT.png (exit code 1 if no frame showed it).
+ * Hard plans its stroke. Usage: BotThinkingScreenshot OUT.png [--notice] (exit code 1 if no frame showed
+ * it); {@code --notice}: with a settings file that cannot be read, so its notice is at the top too.
  */
 public final class BotThinkingScreenshot {
     private BotThinkingScreenshot() {
@@ -18,6 +19,7 @@ public final class BotThinkingScreenshot {
     public static void main(String[] args) throws Exception {
         Path out = Path.of(args[0]);
         Path config = Files.createTempDirectory("minigolf-shot");
+        if (List.of(args).contains("--notice")) Files.writeString(new SettingsStore(config).file(), "{\"dt\": 4.9e-324}");
         Path course = Path.of("courses", "holes", "01-first-tee.json");
         // Ann's putt stops short of the cup (3 m/s on the first tee's green); then Hard's turn.
         GameApp app = new GameApp(minigolf.physics.World.load(course), new GameApp.Options(course, out, 2000,

@@ -24,11 +24,14 @@ import minigolf.online.server.ServerOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import static org.lwjgl.glfw.GLFW.GLFW_MOUSE_BUTTON_LEFT;
+
 /**
  * The game window in an online room under Xvfb: Ann hosts a room on Flat from the window, a headless
  * bot client joins with the code, Ann's scripted ace goes to the server, the bot's strokes come back
- * and are animated; the window ends on the same round card the other client printed, the seat is
- * remembered for a resume, and the online round saves and loads back as a hot-seat round does.
+ * and are animated; the window shows the same round card the other client printed, and its "Play
+ * again" (clicked) opens Play online; the seat is remembered for a resume, and the online round
+ * saves and loads back as a hot-seat round does.
  */
 @minigolf.render.NeedsDisplay
 class OnlineWindowTest {
@@ -43,14 +46,26 @@ class OnlineWindowTest {
                 new PrintWriter(new StringWriter(), true))) {
             Path config = dir.resolve("config");
             GameApp app = new GameApp(GameLauncher.loadBundled(GameLauncher.DEFAULT_COURSE), new GameApp.Options(null, null, 6000,
-                    null, List.of(new double[]{3.425, 0.2854}), 20, new SettingsStore(config), true, true));
+                    null, List.of(new double[]{3.425, 0.2854}), 20, new SettingsStore(config), true, false));
             AtomicReference<String> bobsCard = new AtomicReference<>();
             AtomicReference<Throwable> bobFailed = new AtomicReference<>();
             boolean[] sawLobby = {false}, sawPlay = {false};
+            int[] finalCardPasses = {0};
             app.onLoopPass((pass, w) -> {
                 sawLobby[0] |= app.screen() == app.screens().lobby();
                 sawPlay[0] |= app.screen() == app.screens().playing();
+                if (app.screen() != app.screens().roundCard() || app.roundGame() == null || !app.roundGame().isOver()) return;
+                // The final card, drawn a few times (a new panel takes its size in its second frame):
+                // a click on its "Play again", as the pointer would make it.
+                if (++finalCardPasses[0] == 5) {
+                    float[] r = app.screens().roundCard().playAgainBounds();
+                    app.uiLayer().mouseMove(r[0] + r[2] / 2, r[1] + r[3] / 2);
+                    app.uiLayer().mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+                    app.uiLayer().mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+                }
+                if (finalCardPasses[0] > 60) w.requestClose(); // the click did nothing
             });
+            app.finishWhen(() -> app.screen() == app.screens().online());
             app.playOnline(OnlineClient.uri("127.0.0.1:" + server.port()), "Ann", "flat", 2, List.of(), null, code -> {
                 Thread bob = new Thread(() -> {
                     try {
@@ -69,7 +84,8 @@ class OnlineWindowTest {
             RoundGame round = app.roundGame();
             assertNotNull(round);
             assertTrue(round.isOver(), "the hole was played to the end");
-            assertEquals(app.screens().roundCard(), app.screen());
+            assertTrue(finalCardPasses[0] >= 5, "the final card was shown");
+            assertEquals(app.screens().online(), app.screen(), "after an online round Play again opens Play online");
             assertEquals(1, round.finishedScores()[0][0], "Ann's scripted putt holes: v = sqrt(2 mu g d) at the hole");
             for (int i = 0; i < 100 && bobsCard.get() == null && bobFailed.get() == null; i++) Thread.sleep(100);
             assertNull(bobFailed.get());

@@ -83,8 +83,15 @@ final class LevelCalibration {
     static int fewest(World world, boolean search) {
         // Bounded by its simulations; the time limit only stops a runaway (at 60 s a loaded machine cut
         // three of seed 1001's courses short: no game holed within 10 strokes).
+        java.lang.management.ThreadMXBean cpu = java.lang.management.ManagementFactory.getThreadMXBean();
+        long cpuStart = cpu.getCurrentThreadCpuTime();
         Playthrough.Result aces = Playthrough.play(Bots.create("planner-aces"), world, SimulationSettings.DEFAULT, MAX_STROKES,
                 1_000_000, 1, CancellationToken.withTimeLimit(ACES_SECONDS), BotProgress.NONE);
+        // What the full search costs (the game sizes planner-aces' budget a stroke by it: BotCatalog).
+        System.err.printf(Locale.ROOT, "planner-aces %s: %d strokes, %d simulations (most in one stroke %d), %.2f s CPU%n",
+                world.course().name(), aces.strokes(), aces.simulations(),
+                aces.shots().stream().mapToLong(Playthrough.PlayedShot::simulations).max().orElse(0),
+                (cpu.getCurrentThreadCpuTime() - cpuStart) / 1e9);
         int best = aces.holed() ? aces.strokes() : MAX_STROKES;
         if (!search || best <= 1) return best;
         ExhaustiveStrokeSearch.Result s = ExhaustiveStrokeSearch.search(world,
@@ -244,12 +251,16 @@ final class LevelCalibration {
         }
     }
 
-    /** A level by name, or a candidate written NAME:ANGLE_DEGREES:PACE:robust|planner (for tuning). */
+    /**
+     * A level by name, or a candidate written NAME:ANGLE_DEGREES:PACE:robust|planner[:ACE_DEGREES:ACE_PACE]
+     * (for tuning; the last two: the error on an attempt at a hole in one, else the same).
+     */
     static Bot bot(String level) {
         String[] p = level.split(":");
         if (p.length == 1) return Bots.create(level);
-        return new LevelBot(p[0], new HumanError(Math.toRadians(Double.parseDouble(p[1])), Double.parseDouble(p[2])),
-                p[3].equals("robust"));
+        HumanError error = new HumanError(Math.toRadians(Double.parseDouble(p[1])), Double.parseDouble(p[2]));
+        HumanError ace = p.length > 4 ? new HumanError(Math.toRadians(Double.parseDouble(p[4])), Double.parseDouble(p[5])) : error;
+        return new LevelBot(p[0], error, ace, p[3].equals("robust"));
     }
 
     private static String option(String[] args, String prefix, String fallback) {

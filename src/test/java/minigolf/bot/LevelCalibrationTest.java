@@ -34,13 +34,13 @@ class LevelCalibrationTest {
     @Test
     void eachLevelPlaysWithinItsBandOnTheTuningTiles() {
         // Measured (median of the six courses' mean strokes over the fewest; mean strokes a game):
-        // easy 2.88 (5.33), medium 2.00 (4.17), hard 1.75 (4.08), pro 1.13 (2.67). The bands leave
-        // room for small changes of the engine. On tiles hard is now close to medium (it was tuned
-        // to play a little under par on Meadowbrook, below); the round separates them clearly.
+        // easy 2.88 (5.33), medium 2.00 (4.17), hard 1.38 (3.00), pro 1.13 (2.67). The bands leave
+        // room for small changes of the engine. Hard misses the ace of 1001-0 (2 strokes where pro
+        // takes 1): it goes for a hole in one with medium's error and plays the rest nearly exactly.
         LevelCalibration.LevelResult easy = play("easy"), medium = play("medium"), hard = play("hard"), pro = play("pro");
         assertBand(easy, 2.4, 3.4);
         assertBand(medium, 1.7, 2.35);
-        assertBand(hard, 1.5, 2.0);
+        assertBand(hard, 1.1, 1.6);
         assertBand(pro, 1.0, 1.3);
         assertTrue(mean(easy) > mean(medium) && mean(medium) >= mean(hard) && mean(hard) > mean(pro),
                 mean(easy) + " " + mean(medium) + " " + mean(hard) + " " + mean(pro));
@@ -57,11 +57,12 @@ class LevelCalibrationTest {
         int par = round.holes().stream().mapToInt(Round.Hole::par).sum();
         assertEquals(46, par);
         int[] medium = LevelCalibration.roundTotals("medium", holes, 3, 1), hard = LevelCalibration.roundTotals("hard", holes, 3, 1);
-        // Measured (game seeds 1-3, a seed of its own for each hole): medium 48, 49, 49; hard 42, 43, 35
-        // (a few seconds). Hard at a quarter of a degree and 1% of pace scored 28, 29, 27 (the planner 21).
+        // Measured (game seeds 1-3, a seed of its own for each hole): medium 48, 49, 49; hard 34, 36, 34
+        // (a few seconds). Hard at a quarter of a degree and 1% of pace on every stroke scored 28, 29, 27
+        // (the planner 21, with 15 aces; hard's attempts at aces now miss but about one a round).
         assertTrue(Arrays.stream(medium).filter(t -> t > par).count() >= 2, "medium above par: " + Arrays.toString(medium));
         assertTrue(Arrays.stream(hard).filter(t -> t < par).count() >= 2, "hard below par: " + Arrays.toString(hard));
-        assertTrue(Arrays.stream(hard).allMatch(t -> t >= par - 12), "hard a little under par, not the planner's 21: "
+        assertTrue(Arrays.stream(hard).allMatch(t -> t >= par - 14), "hard under par, not the planner's 21: "
                 + Arrays.toString(hard));
         assertTrue(Arrays.stream(hard).max().getAsInt() < Arrays.stream(medium).min().getAsInt(),
                 "hard beats medium every time: " + Arrays.toString(hard) + " " + Arrays.toString(medium));

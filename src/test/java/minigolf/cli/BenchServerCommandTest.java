@@ -25,11 +25,13 @@ class BenchServerCommandTest {
                 && j.get("p99Ms").asDouble() <= j.get("maxMs").asDouble(), r.out());
         assertTrue(j.get("serverPeakRssMb").asInt() > 0, r.out());
         assertFalse(j.has("failures"), r.out());
+        assertEquals(0.5, j.get("thinkSpread").asDouble(), r.out());
+        assertEquals(1, j.get("seed").asLong(), r.out());
     }
 
     @Test
     void badOptionsAreRefusedInOneLine() {
-        for (String[] bad : new String[][]{{"--seats", "5"}, {"--rooms", "0"}, {"--think", "-1"}, {"--server-heap", "lots"}}) {
+        for (String[] bad : new String[][]{{"--seats", "5"}, {"--rooms", "0"}, {"--think", "-1"}, {"--think-spread", "1.5"}, {"--server-heap", "lots"}}) {
             String[] args = {"bench-server", bad[0], bad[1]};
             CliRun r = CliRun.of(args);
             assertEquals(2, r.code(), String.join(" ", args) + ": " + r.err());

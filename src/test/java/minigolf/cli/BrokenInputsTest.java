@@ -91,6 +91,7 @@ class BrokenInputsTest {
         cases.add(new String[]{"solve", lake, "--max-strokes", "0"});
         cases.add(new String[]{"solve", lake, "--bot", "nobody"});
         cases.add(new String[]{"render", lake, "--out", dir.resolve("x.png").toString(), "--size", "0x0"});
+        cases.add(new String[]{"render", lake, "--out", dir.resolve("x.png").toString(), "--quality", "ultra"});
         cases.add(new String[]{"bench-render", lake, "--frames", "-1"});
         cases.add(new String[]{"play", lake, "--frames", "-3"});
         cases.add(new String[]{"play", lake, "--time-scale", "-1", "--frames", "1"});

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.stream.Stream;
+import minigolf.course.CourseException;
 
 /**
  * What every fuzzed case must satisfy, shared by the fuzz tests: loaded, it gives JSON of finite
@@ -61,6 +62,29 @@ final class FuzzChecks {
 
     static String shorten(String s) {
         return s.length() > 120 ? s.substring(0, 117) + "..." : s;
+    }
+
+    /** One case's load and what is done with what it loaded; a {@link CourseException} refuses the file. */
+    interface Load {
+        void run() throws CourseException, IOException;
+    }
+
+    /**
+     * Runs one case: loaded, it counts as accepted under {@code kind}; refused by a
+     * {@link CourseException}, as refused, and the message must pass {@link #oneLine} with
+     * {@code prefix}; any other exception or error thrown is a failure (an I/O error of the test's
+     * own files ends the test).
+     */
+    void loadOrRefuse(String kind, String what, String prefix, Load load) throws IOException {
+        try {
+            load.run();
+            count(kind, true);
+        } catch (CourseException e) {
+            count(kind, false);
+            oneLine(what, e.getMessage() + "\n", prefix);
+        } catch (RuntimeException | Error e) {
+            failure(what + ": threw " + e);
+        }
     }
 
     /** A refusal: one line, starting with {@code prefix}, saying something, no internal error, no system file's content. */

@@ -13,7 +13,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
 import minigolf.cli.MinigolfCommand;
-import minigolf.course.CourseException;
 import minigolf.game.Game;
 import minigolf.game.Player;
 import minigolf.game.SaveGameException;
@@ -139,9 +138,8 @@ class HostileFilesFuzzTest {
         Path file = dir.resolve("save-" + seed + ".json");
         Files.write(file, c.bytes());
         String what = FuzzChecks.describe("saved game", seed, c);
-        try {
-            SavedGames.Loaded loaded = SavedGames.load(file);
-            Game game = loaded.resume();
+        checks.loadOrRefuse("save " + c.kind(), what, file + ": ", () -> {
+            Game game = SavedGames.load(file).resume();
             if (game.activeStroke() != null) {
                 for (int i = 0; i < 100_000 && game.activeStroke() != null && !game.activeStroke().isFinished(); i++) {
                     game.activeStroke().step();
@@ -149,15 +147,8 @@ class HostileFilesFuzzTest {
                 game.completeShot();
             }
             checks.finiteJson(what, SavedGames.toJson(game));
-            checks.count("save " + c.kind(), true);
-        } catch (CourseException e) {
-            checks.count("save " + c.kind(), false);
-            checks.oneLine(what, e.getMessage() + "\n", file + ": ");
-        } catch (RuntimeException | Error e) {
-            checks.failure(what + ": threw " + e);
-        } finally {
-            Files.deleteIfExists(file);
-        }
+        });
+        Files.deleteIfExists(file);
     }
 
     private static String settingsJson() throws Exception {

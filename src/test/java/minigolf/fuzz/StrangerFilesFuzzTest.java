@@ -8,7 +8,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
-import minigolf.course.CourseException;
 import minigolf.game.AudioSettings;
 import minigolf.game.Game;
 import minigolf.game.HighScores;
@@ -77,19 +76,11 @@ class StrangerFilesFuzzTest {
             Path file = courses.resolve("rounds/case-" + seed + ".json");
             Files.write(file, c.bytes());
             String what = FuzzChecks.describe("round", seed, c);
-            try {
-                Round r = RoundLoader.load(file);
-                checks.count("round " + c.kind(), true);
-                RoundGame rg = new RoundGame(r, SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 10);
+            checks.loadOrRefuse("round " + c.kind(), what, file + ": ", () -> {
+                RoundGame rg = new RoundGame(RoundLoader.load(file), SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 10);
                 checks.finiteJson(what, SavedRounds.toJson(rg));
-            } catch (CourseException e) {
-                checks.count("round " + c.kind(), false);
-                checks.oneLine(what, e.getMessage() + "\n", file + ": ");
-            } catch (RuntimeException | Error e) {
-                checks.failure(what + ": threw " + e);
-            } finally {
-                Files.deleteIfExists(file);
-            }
+            });
+            Files.deleteIfExists(file);
         }
         return seed;
     }
@@ -109,7 +100,7 @@ class StrangerFilesFuzzTest {
             Path file = dir.resolve("round-save-" + seed + ".json");
             Files.write(file, c.bytes());
             String what = FuzzChecks.describe("saved round", seed, c);
-            try {
+            checks.loadOrRefuse("saved round " + c.kind(), what, file + ": ", () -> {
                 RoundGame back = SavedRounds.load(file);
                 Game g = back.game();
                 if (g.activeStroke() != null) {
@@ -117,15 +108,8 @@ class StrangerFilesFuzzTest {
                     g.completeShot();
                 }
                 checks.finiteJson(what, SavedRounds.toJson(back));
-                checks.count("saved round " + c.kind(), true);
-            } catch (CourseException e) {
-                checks.count("saved round " + c.kind(), false);
-                checks.oneLine(what, e.getMessage() + "\n", file + ": ");
-            } catch (RuntimeException | Error e) {
-                checks.failure(what + ": threw " + e);
-            } finally {
-                Files.deleteIfExists(file);
-            }
+            });
+            Files.deleteIfExists(file);
         }
         return seed;
     }
@@ -148,16 +132,9 @@ class StrangerFilesFuzzTest {
             ObjMutator.Case c = ObjMutator.mutate(i % 3 == 0 ? windmill : tetra, seed);
             Files.write(folder.resolve("case.obj"), c.bytes());
             String what = "model seed " + seed + " (" + c.kind() + ": " + FuzzChecks.shorten(c.detail()) + ")";
-            try {
-                World w = World.load(courseFile);
-                checks.count("model " + c.kind(), true);
-                if (w.obstacles() == null) checks.failure(what + ": the model's obstacle is gone");
-            } catch (CourseException e) {
-                checks.count("model " + c.kind(), false);
-                checks.oneLine(what, e.getMessage() + "\n", courseFile + ": obstacles[0].file: ");
-            } catch (RuntimeException | Error e) {
-                checks.failure(what + ": threw " + e);
-            }
+            checks.loadOrRefuse("model " + c.kind(), what, courseFile + ": obstacles[0].file: ", () -> {
+                if (World.load(courseFile).obstacles() == null) checks.failure(what + ": the model's obstacle is gone");
+            });
         }
         return seed;
     }
@@ -180,18 +157,12 @@ class StrangerFilesFuzzTest {
             Mutator.Case c = Mutator.mutate(isScores ? scoresJson : volumesJson, seed);
             Files.write(file, c.bytes());
             String kind = (isScores ? "scores " : "volumes ") + c.kind(), what = FuzzChecks.describe(kind, seed, c);
-            try {
+            checks.loadOrRefuse(kind, what, file + ": ", () -> {
                 Path again = dir.resolve("again.json");
                 if (isScores) HighScores.load(file).save(again);
                 else AudioSettings.load(file).save(again);
                 checks.finiteJson(what, Files.readString(again));
-                checks.count(kind, true);
-            } catch (CourseException e) {
-                checks.count(kind, false);
-                checks.oneLine(what, e.getMessage() + "\n", file + ": ");
-            } catch (RuntimeException | Error e) {
-                checks.failure(what + ": threw " + e);
-            }
+            });
         }
         return seed;
     }

@@ -99,6 +99,27 @@ class SavedGamesTest {
     }
 
     @Test
+    void theBotsSeedIsSavedAndASaveWithoutItResumesWithSeedZero() throws Exception {
+        Game withBots = new Game(GameTest.FLAT, SimulationSettings.DEFAULT, List.of(Player.human("Ann"), Player.bot("Robo", "hard")),
+                7, null, 0, -1234567890123L);
+        String json = SavedGames.toJson(withBots);
+        assertTrue(json.contains("\"botSeed\" : -1234567890123"), json);
+        assertEquals(-1234567890123L, SavedGames.parse(json, "x.json").resume().botSeed());
+        // Saves from before the field: the documented default, 0 (docs/playing.md).
+        com.fasterxml.jackson.databind.node.ObjectNode old = (com.fasterxml.jackson.databind.node.ObjectNode) JsonFields.MAPPER.readTree(json);
+        old.remove("botSeed");
+        assertEquals(0, SavedGames.parse(old.toString(), "x.json").resume().botSeed());
+        assertProblem("x.json: botSeed: must be a whole number",
+                () -> SavedGames.parse(json.replace("-1234567890123", "1.5"), "x.json"));
+        assertProblem("x.json: botSeed: must be a whole number",
+                () -> SavedGames.parse(json.replace("-1234567890123", "99999999999999999999"), "x.json"));
+        // Without a computer opponent the seed means nothing and the save does not hold it.
+        Game people = new Game(GameTest.FLAT, SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 7, null, 0, 42);
+        assertEquals(0, people.botSeed());
+        assertTrue(!SavedGames.toJson(people).contains("botSeed"));
+    }
+
+    @Test
     void saveIsAtomicAndLeavesNoTemporaryFiles() throws Exception {
         Path file = dir.resolve("g.json");
         Files.writeString(file, "old");

@@ -2,7 +2,6 @@ package minigolf.ui;
 
 import java.util.ArrayList;
 import java.util.List;
-import minigolf.render.Framebuffer;
 import minigolf.render.Window;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -23,14 +22,10 @@ class LongTextTest {
     private static final String LONG_WORD = "x".repeat(100_000);
 
     private UiTestWindow ui;
-    private Framebuffer target;
-    private NuklearLayer layer;
 
     @BeforeEach
     void open() {
         ui = new UiTestWindow("long text test", W, H, 0f, 0f, 0f);
-        target = ui.target;
-        layer = ui.layer;
     }
 
     @AfterEach
@@ -38,15 +33,11 @@ class LongTextTest {
         ui.close();
     }
 
-    private void frame(Runnable widgets) {
-        ui.frame(widgets);
-    }
-
     @Test
     void everyWidgetDrawsAHundredThousandCharacterNameCutToTheScreen() {
         List<float[]> widths = new ArrayList<>();
         GuiInt choice = new GuiInt(0);
-        Runnable ui = () -> {
+        Runnable widgets = () -> {
             widths.clear();
             Gui.getBackgroundDrawList().addText(10, 10, 0xFFFFFFFF, LONG);
             Gui.setNextWindowPos(10, 10, GuiCond.Always);
@@ -86,11 +77,27 @@ class LongTextTest {
             Gui.text("a window named by a long id");
             Gui.end();
         };
-        for (int i = 0; i < 3; i++) frame(ui); // the windows measure themselves, then draw
+        for (int i = 0; i < 3; i++) ui.frame(widgets); // the windows measure themselves, then draw
         for (float[] r : widths) {
             assertTrue(r[2] > 50 && r[2] <= W, "a widget as wide as the screen at most: " + java.util.Arrays.toString(r));
         }
         assertEquals(GL_NO_ERROR, glGetError());
+    }
+
+    @Test
+    void aNameTagsPlateIsMeasuredOnTheTextAsDrawn() {
+        // The tag's text is drawn cut to half the screen (GuiDrawList): its plate, which name tags
+        // are laid out by, is that wide too, not 100,000 characters wide.
+        float[][] plates = new float[2][];
+        ui.frame(() -> {
+            plates[0] = Gui.labelPlate(LONG);
+            plates[1] = Gui.labelPlate("Ann");
+        });
+        float[] tag = plates[0], ann = plates[1];
+        assertEquals(ann[1], tag[1], 1e-6, "one line high");
+        float chrome = tag[1]; // 2 + twice the pad is less than the plate's height
+        assertTrue(tag[0] <= W / 2f + chrome && tag[0] > W / 2f - 40, "the plate of the cut text: " + tag[0]);
+        assertTrue(ann[0] > 10 && ann[0] < 80, "a short name's plate: " + ann[0]);
     }
 
     @Test

@@ -2,7 +2,6 @@ package minigolf.ui;
 
 import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicInteger;
-import minigolf.render.Framebuffer;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -20,23 +19,15 @@ import static org.lwjgl.system.MemoryUtil.*;
 class NuklearLayerTest {
     private static final int W = 360, H = 240;
     private UiTestWindow ui;
-    private Framebuffer target;
-    private NuklearLayer layer;
 
     @BeforeEach
     void open() {
         ui = new UiTestWindow("nuklear test", W, H, 0f, 0f, 1f);
-        target = ui.target;
-        layer = ui.layer;
     }
 
     @AfterEach
     void close() {
         ui.close();
-    }
-
-    private void frame(Runnable widgets) {
-        ui.frame(widgets);
     }
 
     private static void panel(Runnable content) {
@@ -51,14 +42,14 @@ class NuklearLayerTest {
     void aButtonIsDrawnInTheThemeColourOverTheWindow() {
         float[] rect = new float[4];
         for (int i = 0; i < 3; i++) {
-            frame(() -> panel(() -> {
+            ui.frame(() -> panel(() -> {
                 Gui.button("Play", 200, 40);
                 System.arraycopy(Gui.lastItemRect(), 0, rect, 0, 4);
             }));
         }
         ByteBuffer pixels = memAlloc(W * H * 4);
         try {
-            target.readPixels(pixels);
+            ui.target.readPixels(pixels);
             assertTrue(rect[2] == 200 && rect[3] == 40, "the button's rectangle: " + java.util.Arrays.toString(rect));
             int bx = (int) rect[0] + 8, by = (int) (rect[1] + rect[3] / 2);
             int[] button = rgb(pixels, bx, by);
@@ -89,30 +80,30 @@ class NuklearLayerTest {
     void aClickOnTheButtonPressesItExactlyOnce() {
         AtomicInteger presses = new AtomicInteger();
         float[] rect = new float[4];
-        Runnable ui = () -> panel(() -> {
+        Runnable widgets = () -> panel(() -> {
             Gui.text("Press the button");
             if (Gui.button("Hit", 120, 0)) presses.incrementAndGet();
             System.arraycopy(Gui.lastItemRect(), 0, rect, 0, 4);
         });
-        frame(ui);
-        frame(ui);
+        ui.frame(widgets);
+        ui.frame(widgets);
         float cx = rect[0] + rect[2] / 2, cy = rect[1] + rect[3] / 2;
-        layer.mouseMove(5, 5); // outside: not the interface's
-        assertFalse(layer.wantsMouse());
-        layer.mouseMove(cx, cy);
-        assertTrue(layer.wantsMouse(), "the pointer is over the window");
-        frame(ui);
+        ui.layer.mouseMove(5, 5); // outside: not the interface's
+        assertFalse(ui.layer.wantsMouse());
+        ui.layer.mouseMove(cx, cy);
+        assertTrue(ui.layer.wantsMouse(), "the pointer is over the window");
+        ui.frame(widgets);
         assertEquals(0, presses.get(), "hovering is not pressing");
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false); // a quick click: both in one frame's events
-        for (int i = 0; i < 5; i++) frame(ui);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false); // a quick click: both in one frame's events
+        for (int i = 0; i < 5; i++) ui.frame(widgets);
         assertEquals(1, presses.get(), "one click, one press");
         // A click beside the button presses nothing.
-        layer.mouseMove(rect[0] + rect[2] + 30, cy);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        frame(ui);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        for (int i = 0; i < 3; i++) frame(ui);
+        ui.layer.mouseMove(rect[0] + rect[2] + 30, cy);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.frame(widgets);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        for (int i = 0; i < 3; i++) ui.frame(widgets);
         assertEquals(1, presses.get());
     }
 
@@ -120,7 +111,7 @@ class NuklearLayerTest {
     void aButtonIsNeverNarrowerThanItsLabel() {
         // The final card's "Watch hole" buttons were 24 pixels wide: holes 10 to 18 all showed "1".
         float[] narrow = new float[4], wide = new float[4];
-        frame(() -> panel(() -> {
+        ui.frame(() -> panel(() -> {
             Gui.button("18##watch", 24, 0);
             System.arraycopy(Gui.lastItemRect(), 0, narrow, 0, 4);
             Gui.button("Next hole", 160, 0);
@@ -136,19 +127,19 @@ class NuklearLayerTest {
         // Nuklear moves a slider only by dragging its knob: the new-game players slider ignored clicks.
         int[] players = {2};
         float[] rect = new float[4];
-        Runnable ui = () -> panel(() -> {
+        Runnable widgets = () -> panel(() -> {
             Gui.setNextItemWidth(200);
             Gui.sliderInt("Players", players, 1, 4);
             System.arraycopy(Gui.lastItemRect(), 0, rect, 0, 4);
         });
-        frame(ui);
-        frame(ui);
+        ui.frame(widgets);
+        ui.frame(widgets);
         float cy = rect[1] + rect[3] / 2;
         for (float[] click : new float[][]{{0.97f, 4}, {0.03f, 1}, {0.6f, 3}}) {
-            layer.mouseMove(rect[0] + click[0] * rect[2], cy);
-            layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-            layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-            for (int i = 0; i < 3; i++) frame(ui);
+            ui.layer.mouseMove(rect[0] + click[0] * rect[2], cy);
+            ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+            ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+            for (int i = 0; i < 3; i++) ui.frame(widgets);
             assertEquals((int) click[1], players[0], "a click at " + click[0] + " of the track");
         }
     }
@@ -159,7 +150,7 @@ class NuklearLayerTest {
         GuiDouble speed = new GuiDouble(1.5);
         boolean[] deactivated = new boolean[1];
         float[] field = new float[4];
-        Runnable ui = () -> panel(() -> {
+        Runnable widgets = () -> panel(() -> {
             Gui.inputText("Name", name);
             System.arraycopy(Gui.lastItemRect(), 0, field, 0, 4);
             if (Gui.isItemDeactivatedAfterEdit()) deactivated[0] = true;
@@ -168,60 +159,60 @@ class NuklearLayerTest {
                 // nothing: a widget after the fields
             }
         });
-        frame(ui);
-        frame(ui);
-        assertFalse(layer.wantsKeyboard(), "no field edited: ESC and shortcuts are the game's");
-        layer.mouseMove(field[0] + field[2] - 4, field[1] + field[3] / 2);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        frame(ui);
-        frame(ui);
-        assertTrue(layer.wantsKeyboard(), "the name field is edited");
-        layer.key(GLFW_KEY_END, true, 0);
-        layer.key(GLFW_KEY_END, false, 0);
-        layer.typeChar('e');
-        frame(ui);
-        frame(ui);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertFalse(ui.layer.wantsKeyboard(), "no field edited: ESC and shortcuts are the game's");
+        ui.layer.mouseMove(field[0] + field[2] - 4, field[1] + field[3] / 2);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertTrue(ui.layer.wantsKeyboard(), "the name field is edited");
+        ui.layer.key(GLFW_KEY_END, true, 0);
+        ui.layer.key(GLFW_KEY_END, false, 0);
+        ui.layer.typeChar('e');
+        ui.frame(widgets);
+        ui.frame(widgets);
         assertEquals("Anne", name.get());
-        assertTrue(layer.wantsKeyboard());
+        assertTrue(ui.layer.wantsKeyboard());
         assertFalse(deactivated[0]);
-        layer.key(GLFW_KEY_ENTER, true, 0);
-        layer.key(GLFW_KEY_ENTER, false, 0);
-        frame(ui);
-        frame(ui);
-        assertFalse(layer.wantsKeyboard(), "Enter ends the edit");
+        ui.layer.key(GLFW_KEY_ENTER, true, 0);
+        ui.layer.key(GLFW_KEY_ENTER, false, 0);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertFalse(ui.layer.wantsKeyboard(), "Enter ends the edit");
         assertTrue(deactivated[0], "and says the field was changed");
         // A click on the field, then a click on the 3D view (outside every window), also ends it.
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        frame(ui);
-        frame(ui);
-        assertTrue(layer.wantsKeyboard());
-        layer.mouseMove(W - 5, H - 5);
-        assertFalse(layer.wantsMouse(), "the pointer is off the interface");
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        frame(ui);
-        frame(ui);
-        assertFalse(layer.wantsKeyboard());
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertTrue(ui.layer.wantsKeyboard());
+        ui.layer.mouseMove(W - 5, H - 5);
+        assertFalse(ui.layer.wantsMouse(), "the pointer is off the interface");
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertFalse(ui.layer.wantsKeyboard());
         assertEquals(1.5, speed.get());
         // ESC lets go of the field too (and reaches the game from the next event on).
-        layer.mouseMove(field[0] + 10, field[1] + field[3] / 2);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        frame(ui);
-        frame(ui);
-        assertTrue(layer.wantsKeyboard());
-        layer.key(GLFW_KEY_ESCAPE, true, 0);
-        layer.key(GLFW_KEY_ESCAPE, false, 0);
-        frame(ui);
-        frame(ui);
-        assertFalse(layer.wantsKeyboard(), "ESC ends the edit");
+        ui.layer.mouseMove(field[0] + 10, field[1] + field[3] / 2);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertTrue(ui.layer.wantsKeyboard());
+        ui.layer.key(GLFW_KEY_ESCAPE, true, 0);
+        ui.layer.key(GLFW_KEY_ESCAPE, false, 0);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertFalse(ui.layer.wantsKeyboard(), "ESC ends the edit");
     }
 
     @Test
     void backgroundLinesGoBehindWindowsAndAWindowTakesItsContentsSize() {
-        Runnable ui = () -> {
+        Runnable widgets = () -> {
             GuiDrawList dl = Gui.getBackgroundDrawList();
             dl.addLine(10, 50, 350, 50, 0xFF0000FF, 5f); // ABGR: opaque red, under the window at x < ~200
             dl.addLine(10, 200, 350, 200, 0xFF0000FF, 5f);
@@ -231,15 +222,15 @@ class NuklearLayerTest {
             Gui.text("and a line of text");
             Gui.end();
         };
-        for (int i = 0; i < 3; i++) frame(ui);
+        for (int i = 0; i < 3; i++) ui.frame(widgets);
         // The window fits its content: a 150-pixel button and padding, two rows.
-        assertTrue(layer.overInterface(20 + 160, 30));
-        assertFalse(layer.overInterface(20 + 230, 30), "no wider than its content");
-        assertTrue(layer.overInterface(30, 20 + 50));
-        assertFalse(layer.overInterface(30, 20 + 130), "no taller than its content");
+        assertTrue(ui.layer.overInterface(20 + 160, 30));
+        assertFalse(ui.layer.overInterface(20 + 230, 30), "no wider than its content");
+        assertTrue(ui.layer.overInterface(30, 20 + 50));
+        assertFalse(ui.layer.overInterface(30, 20 + 130), "no taller than its content");
         ByteBuffer pixels = memAlloc(W * H * 4);
         try {
-            target.readPixels(pixels);
+            ui.target.readPixels(pixels);
             int[] free = rgb(pixels, 300, 200), open = rgb(pixels, 300, 50), covered = rgb(pixels, 60, 50);
             assertTrue(free[0] > 200 && free[1] < 60 && free[2] < 60, "a red line: " + java.util.Arrays.toString(free));
             assertTrue(open[0] > 200 && open[2] < 60, "beside the window: " + java.util.Arrays.toString(open));
@@ -254,38 +245,38 @@ class NuklearLayerTest {
         GuiInt kind = new GuiInt(0);
         boolean[] changed = new boolean[1];
         float[] box = new float[4];
-        Runnable ui = () -> panel(() -> {
+        Runnable widgets = () -> panel(() -> {
             if (Gui.combo("Kind", kind, new String[]{"Human", "Bot", "Robot"})) changed[0] = true;
             System.arraycopy(Gui.lastItemRect(), 0, box, 0, 4);
         });
-        frame(ui);
-        frame(ui);
-        assertEquals(1, layer.interfaceRects().size(), "the window only");
-        layer.mouseMove(box[0] + box[2] / 2, box[1] + box[3] / 2);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        frame(ui);
-        frame(ui);
-        assertEquals(2, layer.interfaceRects().size(), "the list is open");
-        float[] list = layer.interfaceRects().get(1);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertEquals(1, ui.layer.interfaceRects().size(), "the window only");
+        ui.layer.mouseMove(box[0] + box[2] / 2, box[1] + box[3] / 2);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertEquals(2, ui.layer.interfaceRects().size(), "the list is open");
+        float[] list = ui.layer.interfaceRects().get(1);
         assertTrue(list[1] >= box[1] + box[3] - 1, "below the box: " + java.util.Arrays.toString(list));
-        float pad = layer.context().style().window().combo_padding().y(), gap = layer.context().style().window().spacing().y();
+        float pad = ui.layer.context().style().window().combo_padding().y(), gap = ui.layer.context().style().window().spacing().y();
         float itemY = list[1] + pad + (Gui.frameHeight() + gap) + Gui.frameHeight() / 2; // the second item's middle
-        layer.mouseMove(list[0] + list[2] / 2, itemY);
-        assertTrue(layer.wantsMouse(), "the open list is the interface's, also outside its window");
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        for (int i = 0; i < 3; i++) frame(ui);
+        ui.layer.mouseMove(list[0] + list[2] / 2, itemY);
+        assertTrue(ui.layer.wantsMouse(), "the open list is the interface's, also outside its window");
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        for (int i = 0; i < 3; i++) ui.frame(widgets);
         assertEquals(1, kind.get(), "Bot chosen");
         assertTrue(changed[0]);
-        assertEquals(1, layer.interfaceRects().size(), "the list closed");
+        assertEquals(1, ui.layer.interfaceRects().size(), "the list closed");
     }
 
     @Test
     void aMenuOfTheMainMenuBarOpensAndItsItemIsChosenOnce() {
         AtomicInteger saves = new AtomicInteger();
         float[] title = new float[4];
-        Runnable ui = () -> {
+        Runnable widgets = () -> {
             if (Gui.beginMainMenuBar()) {
                 boolean open = Gui.beginMenu("File");
                 System.arraycopy(Gui.lastItemRect(), 0, title, 0, 4);
@@ -297,25 +288,25 @@ class NuklearLayerTest {
                 Gui.endMainMenuBar();
             }
         };
-        frame(ui);
-        frame(ui);
-        float[] bar = layer.interfaceRects().get(0);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        float[] bar = ui.layer.interfaceRects().get(0);
         assertEquals(0, bar[0]);
         assertEquals(0, bar[1]);
         assertEquals(W, bar[2], "across the top");
-        layer.mouseMove(12, bar[3] / 2); // on "File"
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        frame(ui);
-        frame(ui);
-        assertEquals(2, layer.interfaceRects().size(), "the menu is open");
-        float[] menu = layer.interfaceRects().get(1);
-        float pad = layer.context().style().window().menu_padding().y();
-        layer.mouseMove(menu[0] + 20, menu[1] + pad + Gui.frameHeight() / 2); // on "Save"
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
-        layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
-        for (int i = 0; i < 3; i++) frame(ui);
+        ui.layer.mouseMove(12, bar[3] / 2); // on "File"
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        ui.frame(widgets);
+        ui.frame(widgets);
+        assertEquals(2, ui.layer.interfaceRects().size(), "the menu is open");
+        float[] menu = ui.layer.interfaceRects().get(1);
+        float pad = ui.layer.context().style().window().menu_padding().y();
+        ui.layer.mouseMove(menu[0] + 20, menu[1] + pad + Gui.frameHeight() / 2); // on "Save"
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
+        ui.layer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false);
+        for (int i = 0; i < 3; i++) ui.frame(widgets);
         assertEquals(1, saves.get());
-        assertEquals(1, layer.interfaceRects().size(), "the menu closed");
+        assertEquals(1, ui.layer.interfaceRects().size(), "the menu closed");
     }
 }

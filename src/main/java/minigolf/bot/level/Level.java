@@ -11,34 +11,43 @@ import minigolf.bot.noise.HumanError;
  * courses {@code easy} aims at a casual player (about 2.5-3x the fewest strokes), {@code medium} at
  * 1.7-2x, {@code hard} at 1.2-1.4x, and {@code pro} is the planner itself; on the Meadowbrook round
  * (par 46) a par player should beat {@code medium} and lose to {@code hard} most of the time, {@code hard}
- * a little under par (not the planner's 21). Tuned on tile seed 1001 and the Meadowbrook round
- * (docs/bots.md has the figures, why {@code hard} cannot meet both its tile band and Meadowbrook, and
- * the fresh seeds they were checked on).
+ * under par (not the planner's 21). Tuned on tile seed 1001 and the Meadowbrook round (docs/bots.md
+ * has the figures and the fresh seeds they were checked on).
  *
  * <ul>
  * <li>{@code easy}: the planner's line, struck about 5 degrees and 17% of pace off (a casual player).</li>
  * <li>{@code medium}: the noise-aware robust bot (it lays up where a bold line would likely miss),
  *     2.25 degrees and 7.75% off.</li>
- * <li>{@code hard}: the planner's line, 1.5 degrees and 5% of pace off: about 42 on Meadowbrook's
- *     par 46 with 2-3 aces a round, where a quarter of a degree and 1% scored 27 with 10.</li>
+ * <li>{@code hard}: the planner's line, nearly exact (0.05 degrees and 0.25% of pace) on lay-ups
+ *     through narrow gaps and on putts, but an attempt at a hole in one struck with {@code medium}'s
+ *     error (2.25 degrees, 7.75%): about 36 on Meadowbrook's par 46 with one ace a round (the planner
+ *     21 with 15), and close to the planner on tile courses, whose fewest strokes are rarely aces.</li>
  * <li>{@code pro}: the planner, no error.</li>
  * </ul>
  *
  * @param error    the error on every stroke while the hole goes well
+ * @param aceError the error on a hole's first stroke when the shot as chosen would hole (the
+ *                 same as {@code error} but for {@code hard})
  * @param robust   whether the level plans for its own error (the noise-aware robust bot) or plays
  *                 the planner's line as if it were exact
  */
 public enum Level {
     EASY(new HumanError(Math.toRadians(5), 0.17), false),
     MEDIUM(new HumanError(Math.toRadians(2.25), 0.0775), true),
-    HARD(new HumanError(Math.toRadians(1.5), 0.05), false),
+    HARD(new HumanError(Math.toRadians(0.05), 0.0025), new HumanError(Math.toRadians(2.25), 0.0775), false),
     PRO(HumanError.NONE, false);
 
     private final HumanError error;
+    private final HumanError aceError;
     private final boolean robust;
 
     Level(HumanError error, boolean robust) {
+        this(error, error, robust);
+    }
+
+    Level(HumanError error, HumanError aceError, boolean robust) {
         this.error = error;
+        this.aceError = aceError;
         this.robust = robust;
     }
 
@@ -49,6 +58,11 @@ public enum Level {
 
     public HumanError error() {
         return error;
+    }
+
+    /** The error on a hole's first stroke when the shot as chosen would hole (an attempt at a hole in one). */
+    public HumanError aceError() {
+        return aceError;
     }
 
     public boolean robust() {

@@ -3,16 +3,23 @@ package minigolf.bot.level;
 import java.util.SplittableRandom;
 import minigolf.bot.Bot;
 import minigolf.bot.BotRequest;
+import minigolf.bot.CountingSimulator;
 import minigolf.bot.NoiseModel;
 import minigolf.bot.Shot;
+import minigolf.bot.BudgetExhaustedException;
 import minigolf.bot.noise.HumanError;
 import minigolf.bot.noise.RobustBot;
 import minigolf.bot.planner.PlannerBot;
+import minigolf.physics.ShotResult;
 
 /**
  * A {@link Level} as a bot: its strategy chooses a shot, then its {@link HumanError} is drawn from
  * the request's seed and the shot comes back as the level plays it (so the game, {@code solve} and
  * {@code experiment} play the error without knowing of it, and the same request gives the same shot).
+ *
+ * <p>The error may depend on the shot: an attempt at a hole in one (a hole's first stroke that
+ * would hole as chosen) is struck with the level's {@link Level#aceError()} ({@code hard} goes for
+ * aces like {@code medium} but plays its other strokes nearly exactly).
  *
  * <p>A player whose hole goes badly takes more care: from stroke {@link #CAREFUL_FROM} on (penalties
  * included) the error halves with every stroke, so the level soon plays like the planner and holes
@@ -25,21 +32,28 @@ public final class LevelBot implements Bot {
     /** The speed at which the robust strategy sizes its noise model ({@link HumanError#asNoiseModel}), m/s. */
     static final double PLANNING_SPEED = 2.0;
     /** Mixed into the request's seed for the error's draws, so the strategy keeps the request's own seed. */
-    private static final long ERROR_SALT = 0x4C6576656C2D3233L;
+    static final long ERROR_SALT = 0x4C6576656C2D3233L;
 
     private final String name;
     private final HumanError error;
+    private final HumanError aceError;
     private final boolean robust;
     private final Bot strategy;
 
     public LevelBot(Level level) {
-        this(level.id(), level.error(), level.robust());
+        this(level.id(), level.error(), level.aceError(), level.robust());
+    }
+
+    /** A level of one's own with one error for every stroke: see {@link Level} for the parts. */
+    public LevelBot(String name, HumanError error, boolean robust) {
+        this(name, error, error, robust);
     }
 
     /** A level of one's own (calibration tools try candidates): see {@link Level} for the parts. */
-    public LevelBot(String name, HumanError error, boolean robust) {
+    public LevelBot(String name, HumanError error, HumanError aceError, boolean robust) {
         this.name = name;
         this.error = error;
+        this.aceError = aceError;
         this.robust = robust;
         this.strategy = robust ? new RobustBot() : new PlannerBot();
     }
@@ -65,7 +79,25 @@ public final class LevelBot implements Bot {
                     request.seed(), new NoiseModel(game.position(), Math.hypot(game.velocity(), own.velocity())));
         }
         Shot chosen = request.simulator().limit(strategy.nextShot(planned));
-        return errorAfter(request.strokesTaken()).play(chosen, new SplittableRandom(request.seed() ^ ERROR_SALT),
-                request.world().physics().maxSpeed());
+        HumanError now = aceAttempt(request, chosen) ? aceError : errorAfter(request.strokesTaken());
+        return now.play(chosen, new SplittableRandom(request.seed() ^ ERROR_SALT), request.world().physics().maxSpeed());
+    }
+
+    /**
+     * Whether {@code chosen} is an attempt at a hole in one: the hole's first stroke, and the shot
+     * as chosen holes. Its result is usually known from the strategy's own search
+     * ({@link CountingSimulator#knownResult}); else it is simulated once, if the budget and the
+     * time allow (when they do not, the stroke counts as no attempt).
+     */
+    private boolean aceAttempt(BotRequest request, Shot chosen) {
+        if (request.strokesTaken() != 0 || aceError.equals(error)) return false;
+        CountingSimulator sim = request.simulator();
+        ShotResult known = sim.knownResult(chosen);
+        if (known != null) return CountingSimulator.holed(known);
+        try {
+            return sim.remaining() > 0 && CountingSimulator.holed(sim.simulate(request.ballX(), request.ballY(), chosen));
+        } catch (BudgetExhaustedException e) {
+            return false;
+        }
     }
 }

@@ -3,6 +3,7 @@ package minigolf.bot.map;
 import java.util.ArrayList;
 import java.util.List;
 import minigolf.course.Obstacle;
+import minigolf.course.Segments;
 
 /**
  * The one-way gates as the grid's searches see them: a step between two cell centres that crosses a
@@ -57,12 +58,8 @@ final class GateCrossings {
 
     /** Whether segment p0-p1 meets segment a-b (touching counts). */
     static boolean segmentsCross(double x0, double y0, double x1, double y1, double ax, double ay, double bx, double by) {
-        double d1 = cross(ax, ay, bx, by, x0, y0), d2 = cross(ax, ay, bx, by, x1, y1);
-        double d3 = cross(x0, y0, x1, y1, ax, ay), d4 = cross(x0, y0, x1, y1, bx, by);
+        double d1 = Segments.side(ax, ay, bx, by, x0, y0), d2 = Segments.side(ax, ay, bx, by, x1, y1);
+        double d3 = Segments.side(x0, y0, x1, y1, ax, ay), d4 = Segments.side(x0, y0, x1, y1, bx, by);
         return d1 * d2 <= 0 && d3 * d4 <= 0 && !(d1 == 0 && d2 == 0);
-    }
-
-    private static double cross(double ax, double ay, double bx, double by, double x, double y) {
-        return (bx - ax) * (y - ay) - (by - ay) * (x - ax);
     }
 }

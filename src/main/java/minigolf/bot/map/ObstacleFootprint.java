@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.WeakHashMap;
 import minigolf.collision.ObstacleGeometry;
 import minigolf.course.Obstacle;
+import minigolf.course.Segments;
 import minigolf.physics.World;
 import minigolf.terrain.Terrain;
 
@@ -136,20 +137,12 @@ public final class ObstacleFootprint {
     /** Distance in the plane from (x, y) to the triangle (0 inside). */
     private static double triangleDistance(double x, double y, double[] p) {
         double ax = p[1], ay = p[2], bx = p[3], by = p[4], cx = p[5], cy = p[6];
-        double d1 = cross(ax, ay, bx, by, x, y), d2 = cross(bx, by, cx, cy, x, y), d3 = cross(cx, cy, ax, ay, x, y);
+        double d1 = Segments.side(ax, ay, bx, by, x, y), d2 = Segments.side(bx, by, cx, cy, x, y);
+        double d3 = Segments.side(cx, cy, ax, ay, x, y);
         boolean negative = d1 < 0 || d2 < 0 || d3 < 0, positive = d1 > 0 || d2 > 0 || d3 > 0;
         if (!(negative && positive)) return 0;
-        return Math.min(segment(x, y, ax, ay, bx, by), Math.min(segment(x, y, bx, by, cx, cy), segment(x, y, cx, cy, ax, ay)));
-    }
-
-    private static double cross(double ax, double ay, double bx, double by, double x, double y) {
-        return (bx - ax) * (y - ay) - (by - ay) * (x - ax);
-    }
-
-    private static double segment(double x, double y, double ax, double ay, double bx, double by) {
-        double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
-        double f = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / len2));
-        return Math.hypot(x - ax - f * dx, y - ay - f * dy);
+        return Math.min(Segments.distance(x, y, ax, ay, bx, by),
+                Math.min(Segments.distance(x, y, bx, by, cx, cy), Segments.distance(x, y, cx, cy, ax, ay)));
     }
 
     private static double[] bbox(double[] p) {

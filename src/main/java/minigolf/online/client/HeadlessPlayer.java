@@ -55,6 +55,29 @@ public final class HeadlessPlayer {
         return this;
     }
 
+    /** Spread of the pause before each shot: 0 (every pause is thinkMillis) or a fraction up to 1. */
+    private double thinkSpread;
+    private java.util.SplittableRandom thinkRandom;
+
+    /**
+     * Makes each pause before a shot vary uniformly within {@code thinkMillis × (1 ± spread)}, drawn from
+     * {@code seed}: people do not aim for exactly the same time, and the benchmark's rooms, all playing
+     * the same course with the same bot, would otherwise shoot in lock-step (every room at the same
+     * instant, hole after hole).
+     */
+    public HeadlessPlayer thinkSpread(double spread, long seed) {
+        if (!(spread >= 0 && spread <= 1)) throw new IllegalArgumentException("think spread must be 0 to 1: " + spread);
+        thinkSpread = spread;
+        thinkRandom = new java.util.SplittableRandom(seed);
+        return this;
+    }
+
+    /** This turn's pause before the shot, in nanoseconds. */
+    long thinkNanos() {
+        double factor = thinkRandom == null || thinkSpread == 0 ? 1 : 1 + thinkSpread * (2 * thinkRandom.nextDouble() - 1);
+        return Math.round(options.thinkMillis() * factor * 1_000_000);
+    }
+
     /** Hooks for the benchmark: a shot sent (with the room's event count) and its stroke received. */
     public interface Timing {
         void shotSent(long seq, long nanos);
@@ -134,7 +157,7 @@ public final class HeadlessPlayer {
                 long now = System.nanoTime();
                 if (thinkingAt != mirror.seq()) {
                     thinkingAt = mirror.seq();
-                    thinkUntil = now + options.thinkMillis() * 1_000_000;
+                    thinkUntil = now + thinkNanos();
                 }
                 if (now >= thinkUntil) {
                     shoot();

@@ -42,6 +42,15 @@ public final class LoadBench {
      */
     public static Result run(URI server, String course, int rooms, int seats, String bot, long thinkMillis,
                              double timeoutSeconds, Consumer<String> progress) throws InterruptedException {
+        return run(server, course, rooms, seats, bot, thinkMillis, 0, 0, timeoutSeconds, progress);
+    }
+
+    /**
+     * As {@link #run(URI, String, int, int, String, long, double, Consumer)}, each pause before a shot drawn
+     * within {@code thinkMillis × (1 ± thinkSpread)} from {@code seed} (one stream per player).
+     */
+    public static Result run(URI server, String course, int rooms, int seats, String bot, long thinkMillis, double thinkSpread,
+                             long seed, double timeoutSeconds, Consumer<String> progress) throws InterruptedException {
         List<Thread> threads = new ArrayList<>();
         List<String> failures = java.util.Collections.synchronizedList(new ArrayList<>());
         Map<String, JsonNode> cards = new ConcurrentHashMap<>();
@@ -81,6 +90,7 @@ public final class LoadBench {
                             if (line.endsWith("; reconnecting")) reconnects.incrementAndGet();
                         }, timer);
                         if (seat == seats - 1 && seats > 1) player.joinAfter(gate);
+                        player.thinkSpread(thinkSpread, seed * 1_000_003L + name.hashCode());
                         playing.put(name, player);
                         player.run();
                         playing.remove(name);

@@ -70,6 +70,9 @@ class LevelBotTest {
         for (int i = 1; i < levels.length; i++) {
             assertTrue(levels[i].error().angle() < levels[i - 1].error().angle(), levels[i].id());
             assertTrue(levels[i].error().pace() < levels[i - 1].error().pace(), levels[i].id());
+            // At a hole in one too: no level goes for an ace more wildly than the one below it.
+            assertTrue(levels[i].aceError().angle() <= levels[i - 1].aceError().angle(), levels[i].id());
+            assertTrue(levels[i].aceError().pace() <= levels[i - 1].aceError().pace(), levels[i].id());
         }
         assertEquals(HumanError.NONE, Level.PRO.error());
         assertEquals(java.util.List.of("easy", "medium", "hard", "pro"), Level.ids());
@@ -87,6 +90,32 @@ class LevelBotTest {
             assertEquals(a, b, level.id());
             assertNotEquals(a, c, level.id());
         }
+    }
+
+    /**
+     * The error of an attempt at a hole in one applies to a hole's first stroke when the chosen
+     * shot holes, and only then: here a level exact on every other stroke, 10 degrees off on an ace.
+     */
+    @Test
+    void theAceErrorIsPlayedOnAFirstStrokeThatWouldHoleAndNowhereElse() throws Exception {
+        LevelBot acesWild = new LevelBot("aces-wild", HumanError.NONE, new HumanError(Math.toRadians(10), 0), false);
+        World ace = World.load(BENCH.resolve("flat-7m.json"));
+        Shot planned = new PlannerBot().nextShot(request(ace, 0, 5));
+        assertTrue(CountingSimulator.holed(new CountingSimulator(ace).simulate(ace.course().start().x(),
+                ace.course().start().y(), planned)), "the planner holes flat-7m in one");
+        Shot struck = acesWild.nextShot(request(ace, 0, 5));
+        double turn = Math.atan2(struck.vy(), struck.vx()) - Math.atan2(planned.vy(), planned.vx());
+        double expected = Math.toRadians(10) * new SplittableRandom(5 ^ LevelBot.ERROR_SALT).nextGaussian();
+        assertEquals(expected, turn, 1e-9, "turned by the ace error's draw");
+        assertEquals(planned.speed(), struck.speed(), 1e-12);
+        // Not the hole's first stroke: no attempt at an ace, the level's own (no) error.
+        assertEquals(new PlannerBot().nextShot(request(ace, 1, 5)), acesWild.nextShot(request(ace, 1, 5)));
+        // A first stroke that does not hole (two-putt needs two): the level's own error.
+        World maze = World.load(BENCH.resolve("two-putt.json"));
+        Shot layUp = new PlannerBot().nextShot(request(maze, 0, 5));
+        assertTrue(!CountingSimulator.holed(new CountingSimulator(maze).simulate(maze.course().start().x(),
+                maze.course().start().y(), layUp)), "two-putt's first stroke does not hole");
+        assertEquals(layUp, acesWild.nextShot(request(maze, 0, 5)));
     }
 
     @Test
