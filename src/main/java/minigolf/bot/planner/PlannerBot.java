@@ -260,14 +260,15 @@ public final class PlannerBot extends SearchBot {
     }
 
     /**
-     * Whether the quick plan sweeps all round ({@link DenseSweep}) on each stroke: where the hole is
-     * a capture hole, any shot whose path crosses it drops, so a sweep of full-speed shots finds
-     * every line through the hole, however many cushions, pushes and teleports it takes (the
-     * classic tracks: on 55 of the sample where the planner took more strokes than the best human,
-     * the sweep on the first stroke only left none at the best score, on every stroke 9).
+     * Whether the quick plan sweeps all round ({@link DenseSweep}) on each stroke: on putts-only
+     * courses (the imported classic tracks) with a capture hole, any shot whose path crosses it
+     * drops, so a sweep of full-speed shots finds every line through the hole, however many
+     * cushions, pushes and teleports it takes (on 55 of the classic sample where the planner took
+     * more strokes than the best human, the sweep on the first stroke only left none at the best
+     * score, on every stroke 9). Other courses keep the plan the levels were calibrated on.
      */
     static boolean sweepsAllRound(World world) {
-        return world.hole().rule() == HoleRule.CAPTURE;
+        return world.hole().rule() == HoleRule.CAPTURE && world.physics().puttsOnly();
     }
 
     /** The one-putt map of this world, traced on first use. */
