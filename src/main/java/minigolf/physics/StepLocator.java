@@ -58,6 +58,11 @@ final class StepLocator {
         return area.contains(qx, qy);
     }
 
+    /** How far (m) (qx, qy) lies inside the bounds, negative outside ({@link PlayArea#depthInside}). */
+    double depthInside(double qx, double qy) {
+        return area.depthInside(qx, qy);
+    }
+
     /**
      * The hazard at a step's end (qx, qy), as {@link #hazardAt}, sampling the ground there fully:
      * the next step starts with that sample.
