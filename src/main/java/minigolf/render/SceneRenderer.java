@@ -179,6 +179,10 @@ public final class SceneRenderer implements AutoCloseable {
         return timer;
     }
 
+    SkyPass skyPass() {
+        return sky;
+    }
+
     public TerrainPass terrainPass() {
         return terrain;
     }
