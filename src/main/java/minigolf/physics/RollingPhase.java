@@ -50,12 +50,14 @@ final class RollingPhase {
     private final ForceField forces;
     /** The course clock when the stroke began. */
     private double startClock;
+    /** The closed-form stop on shallow ground; null where it does not apply (see Stroke). */
+    private final StoppingTail tail;
 
     RollingPhase(BallState ball, StrokeReports reports, RollingStep rolling, RollingTrial trial, StepControl control,
                  StepLocator locate, RestRule rest, TakeOff takeOff, HoleRules hole, EnergyGuard energy,
                  Solids scene, Leaning lean, PathSweep paths, ObstacleContact contact, Terrain terrain,
-                 FrictionField friction, ForceField forces, Teleporter teleporter, PlayArea area, double gravity,
-                 double ballRadius, double dt, double maxTime) {
+                 FrictionField friction, ForceField forces, Teleporter teleporter, PlayArea area, StoppingTail tail,
+                 double gravity, double ballRadius, double dt, double maxTime) {
         this.teleporter = teleporter;
         this.forces = forces;
         this.ball = ball;
@@ -82,6 +84,9 @@ final class RollingPhase {
         this.controlled = control != null;
         this.smooth = terrain.isSmooth() && !area.hasDeletedCells();
         this.captureRule = hole.captureRule;
+        this.tail = tail;
+        if (tail != null) tail.reach = (minX, minY, maxX, maxY) -> elementNear(minX, minY, maxX, maxY)
+                || (captureRule && hole.near(minX, minY, maxX, maxY));
     }
 
     /**
@@ -92,6 +97,7 @@ final class RollingPhase {
         startClock = clock;
         waitUntil = Double.NaN;
         if (teleporter != null) teleporter.reset(strokeKey);
+        if (tail != null) tail.reset();
     }
 
     /** One rolling piece of at most tau seconds; returns the time it took. */
@@ -148,6 +154,8 @@ final class RollingPhase {
                 ghy = lean.gy;
             }
             double slope = Math.sqrt(ghx * ghx + ghy * ghy);
+            // A slow ball on ground shallower than mu_k, with nothing near, stops in one closed-form piece.
+            if (tail != null && !leaning && slope < b.muK && tail.stops(speed)) return b.pieceTime;
             if (controlled && control.isLong(tau)) tau = longestStep(tau, speed, slope, b.muK, leaning, a1x, a1y);
             b.pieceTime = tau;
             // The stop looks a fixed time ahead and the slow step is that long, whatever length the

@@ -135,10 +135,13 @@ public final class Stroke {
         this.rest = rest;
         StepLocator locator = new StepLocator(ball, trial, steps, terrain, ground, friction, forces, area);
         if (control != null && (friction.hasZones() || (forces != null && forces.hasPushZones()))) control.edges = locator;
+        // The closed-form stopping tail: the classic model's, on smooth ground, with the error control.
+        StoppingTail tail = control != null && !complete && terrain.isSmooth() && !area.hasDeletedCells()
+                ? new StoppingTail(ball, ground, terrain, locator, reports, rest, gravity, dt, settings.maxTime()) : null;
         this.rolling = new RollingPhase(ball, reports, steps, trial, control, locator, rest,
                 new TakeOff(terrain, steps, gravity), hole, new EnergyGuard(ball, trial, reports, terrain, gravity, complete, forces),
                 scene, lean, paths, contact, terrain, friction, forces,
-                world.teleports() == null ? null : new Teleporter(world.teleports(), ball, trial, reports), area, gravity,
+                world.teleports() == null ? null : new Teleporter(world.teleports(), ball, trial, reports), area, tail, gravity,
                 ballRadius, dt, settings.maxTime());
         this.flight = new FlightPhase(ball, reports, new FlightStep(terrain, gravity, physics.dragFactor()),
                 new GroundImpact(physics.groundRestitution(), hopSpeed), hole, rest, area, scene, paths, contact,
