@@ -57,8 +57,10 @@ final class TileCourseReport {
             long simulations;
             double ms;
             if (played != null) {
-                String[] row = played.get(w.course().name());
-                if (row == null) throw new IllegalArgumentException("no run of " + w.course().name() + " in the runs file");
+                // A suite written by TileCourseFiles names its files tile-SEED-NN.
+                String file = String.format(Locale.ROOT, "tile-%d-%02d", seed, i);
+                String[] row = played.getOrDefault(w.course().name(), played.get(file));
+                if (row == null) throw new IllegalArgumentException("no run of " + w.course().name() + " (" + file + ") in the runs file");
                 holed = Boolean.parseBoolean(row[0]);
                 strokes = Integer.parseInt(row[1]);
                 simulations = Long.parseLong(row[2]);
