@@ -82,7 +82,7 @@ public final class GameApp implements WindowApp {
         this.settings = files.loadedSettings();
         // Shown until dismissed (a timed message would expire before the window exists).
         if (files.settingsProblem() != null) {
-            toasts.setNotice("Your settings could not be read (" + files.settingsProblem() + "); the defaults are used");
+            toasts.setNotice(settingsNotice(files.settingsProblem()));
         }
         this.play = new PlaySession(world, options.coursePath(), options.scriptedShots(), files, this::say);
         this.screens = new Screens(new MainMenuScreen(this), new CourseSelectScreen(this), new NewGameScreen(this),
@@ -479,6 +479,16 @@ public final class GameApp implements WindowApp {
     /** The renderer's quality now (for tests). */
     public RenderQuality renderQuality() {
         return scene.quality();
+    }
+
+    /**
+     * The notice for a settings file that was not used: what is wrong in a player's words, what the
+     * game plays with instead, and that nothing of the file is lost (SettingsStore keeps it aside).
+     */
+    static String settingsNotice(String problem) {
+        return "Your settings file was not used.\n" + problem
+                + "\nEvery setting is at its default for now.\nYour file is kept: it is renamed settings.broken.json"
+                + " when new settings are saved.";
     }
 
     public String notice() {

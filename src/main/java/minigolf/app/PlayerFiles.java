@@ -20,6 +20,7 @@ import minigolf.game.RoundGame;
 import minigolf.game.SaveGameException;
 import minigolf.game.SavedGames;
 import minigolf.game.SavedRounds;
+import minigolf.game.SettingsException;
 import minigolf.game.SettingsStore;
 import minigolf.game.UserSettings;
 
@@ -46,9 +47,9 @@ final class PlayerFiles {
         String problem = null;
         try {
             settings = store.load();
-        } catch (SaveGameException e) {
+        } catch (SettingsException e) {
             settings = UserSettings.DEFAULTS;
-            problem = e.detail(); // the player's view names no file; the terminal's line does
+            problem = e.forPlayer(); // the player's view names no file and no field; the terminal's line does
             System.err.println("minigolf: settings ignored, the defaults are used: " + e.getMessage());
         }
         loadedSettings = settings;
@@ -81,7 +82,7 @@ final class PlayerFiles {
         return loadedSettings;
     }
 
-    /** Why the settings file was ignored at start (without the file's name), or null. */
+    /** Why the settings file was ignored at start, in a player's words (no file, no field names), or null. */
     String settingsProblem() {
         return settingsProblem;
     }

@@ -149,6 +149,8 @@ final class SettingsScreen extends GameScreen {
             app.applyVolumes(new AudioSettings(masterVolume[0], effectsVolume[0], ambienceVolume[0]));
             formError = null;
             app.setScreen(back);
+        } catch (UserSettings.InvalidSetting e) {
+            formError = e.forPlayer();
         } catch (IllegalArgumentException e) {
             formError = e.getMessage();
         }

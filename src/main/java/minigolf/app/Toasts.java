@@ -74,7 +74,7 @@ final class Toasts {
             Gui.setNextWindowPos(w * 0.5f, NOTICE_TOP, GuiCond.Always, 0.5f, 0f);
             Gui.begin(NOTICE, GuiWindowFlags.NoCollapse | GuiWindowFlags.AlwaysAutoResize | GuiWindowFlags.NoMove);
             noticeRect = Gui.windowRect();
-            Gui.text(notice);
+            for (String line : notice.split("\n")) Gui.text(line);
             if (Gui.button("Dismiss")) dismissNotice();
             Gui.end();
         }

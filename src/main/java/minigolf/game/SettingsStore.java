@@ -64,12 +64,34 @@ public final class SettingsStore {
         return AtomicFile.removeStaleTemporaries(directory) + AtomicFile.removeStaleTemporaries(savesDirectory());
     }
 
-    /** The stored settings, or the defaults when there is no file yet. */
-    public UserSettings load() throws SaveGameException {
+    /**
+     * The stored settings, or the defaults when there is no file yet. A file that cannot be used
+     * throws a {@link SettingsException}: the file's own line and the same in a player's words.
+     */
+    public UserSettings load() throws SettingsException {
         if (!Files.exists(file())) return UserSettings.DEFAULTS;
+        JsonNode[] root = new JsonNode[1];
+        try {
+            return read(root);
+        } catch (SettingsException e) {
+            throw e;
+        } catch (SaveGameException e) {
+            // The player's words name no file or folder, even where the system's reason would.
+            String words = SettingWords.explain(e, root[0]).replace(file().toString(), "the file")
+                    .replace(directory.toString(), "the settings folder");
+            throw new SettingsException(e, words);
+        }
+    }
+
+    /** Reads the file; {@code root[0]} is its parsed text once it parsed (for the player's words of an error). */
+    private UserSettings read(JsonNode[] root) throws SaveGameException {
         String source = file().toString();
         JsonFields f = new JsonFields(source);
-        JsonNode root = f.parse(JsonFields.readText(file(), Limits.SETTINGS_FILE_BYTES));
+        root[0] = f.parse(JsonFields.readText(file(), Limits.SETTINGS_FILE_BYTES));
+        return read(f, source, root[0]);
+    }
+
+    private UserSettings read(JsonFields f, String source, JsonNode root) throws SaveGameException {
         f.onlyFields(root, null, FIELDS);
         UserSettings d = UserSettings.DEFAULTS;
         try {
@@ -106,8 +128,8 @@ public final class SettingsStore {
                     root.has("windowHeight") ? f.integer(root, null, "windowHeight", 0, 16384) : d.windowHeight(),
                     root.has("practice") ? f.bool(root, null, "practice") : d.practice(),
                     root.has("classicFolder") ? f.text(root, null, "classicFolder") : d.classicFolder());
-        } catch (IllegalArgumentException e) {
-            throw new SaveGameException(source, null, e.getMessage(), e);
+        } catch (UserSettings.InvalidSetting e) {
+            throw new SettingsException(new SaveGameException(source, null, e.getMessage(), e), e.forPlayer());
         }
     }
 

@@ -58,36 +58,74 @@ public record UserSettings(Integrator integrator, double dt, boolean vsync, int 
 
     public UserSettings {
         if (integrator == null) throw new IllegalArgumentException("integrator must be given");
-        if (SimulationSettings.dtProblem(dt) != null) throw new IllegalArgumentException("dt " + SimulationSettings.dtProblem(dt));
-        if (frameLimit < 0 || frameLimit > 1000) throw new IllegalArgumentException("frameLimit must be 0 to 1000, got " + frameLimit);
-        if (!(mouseSpeed >= 0.1 && mouseSpeed <= 10)) throw new IllegalArgumentException("mouseSpeed must be 0.1 to 10, got " + mouseSpeed);
+        if (SimulationSettings.dtProblem(dt) != null) throw new InvalidSetting("dt", "dt " + SimulationSettings.dtProblem(dt), dt);
+        if (frameLimit < 0 || frameLimit > 1000) throw new InvalidSetting("frameLimit", "frameLimit must be 0 to 1000, got " + frameLimit, frameLimit);
+        if (!(mouseSpeed >= 0.1 && mouseSpeed <= 10)) throw new InvalidSetting("mouseSpeed", "mouseSpeed must be 0.1 to 10, got " + mouseSpeed, mouseSpeed);
         if (strokeLimit < 1 || strokeLimit > Game.MAX_STROKE_LIMIT) {
-            throw new IllegalArgumentException("strokeLimit must be 1 to " + Game.MAX_STROKE_LIMIT + ", got " + strokeLimit);
+            throw new InvalidSetting("strokeLimit", "strokeLimit must be 1 to " + Game.MAX_STROKE_LIMIT + ", got " + strokeLimit, strokeLimit);
         }
         if (!(noisePosition >= 0 && noisePosition <= MAX_NOISE_POSITION)) {
-            throw new IllegalArgumentException("noisePosition must be 0 to " + MAX_NOISE_POSITION + " m, got " + noisePosition);
+            throw new InvalidSetting("noisePosition", "noisePosition must be 0 to " + MAX_NOISE_POSITION + " m, got " + noisePosition,
+                    noisePosition);
         }
         if (!(noiseVelocity >= 0 && noiseVelocity <= MAX_NOISE_VELOCITY)) {
-            throw new IllegalArgumentException("noiseVelocity must be 0 to " + MAX_NOISE_VELOCITY + " m/s, got " + noiseVelocity);
+            throw new InvalidSetting("noiseVelocity", "noiseVelocity must be 0 to " + MAX_NOISE_VELOCITY + " m/s, got " + noiseVelocity,
+                    noiseVelocity);
         }
-        if (!GRAPHICS.contains(graphics)) throw new IllegalArgumentException("graphics must be auto, high or low, got " + graphics);
+        if (!GRAPHICS.contains(graphics)) {
+            throw new InvalidSetting("graphics", "graphics must be auto, high or low, got " + graphics,
+                    graphics == null ? "empty" : JsonFields.shown(graphics));
+        }
         boolean defaultSize = windowWidth == 0 && windowHeight == 0;
         if (!defaultSize && (windowWidth < 640 || windowWidth > 16384 || windowHeight < 480 || windowHeight > 16384)) {
-            throw new IllegalArgumentException("the window size must be 0 x 0 (the default) or 640 to 16384 x 480 to 16384, got "
-                    + windowWidth + " x " + windowHeight);
+            throw new InvalidSetting("windowWidth", "the window size must be 0 x 0 (the default) or 640 to 16384 x 480 to 16384, got "
+                    + windowWidth + " x " + windowHeight, windowWidth + " x " + windowHeight + " pixels");
         }
         if (classicFolder == null) classicFolder = "";
         if (classicFolder.length() > MAX_FOLDER_LENGTH || classicFolder.indexOf('\0') >= 0) {
-            throw new IllegalArgumentException("classicFolder must be a folder name of at most " + MAX_FOLDER_LENGTH + " characters");
+            throw new InvalidSetting("classicFolder", "classicFolder must be a folder name of at most " + MAX_FOLDER_LENGTH + " characters",
+                    classicFolder.indexOf('\0') >= 0 ? "a name with a zero character" : "a name of " + classicFolder.length() + " characters");
         }
         playerNames = List.copyOf(playerNames);
         if (playerNames.isEmpty() || playerNames.size() > Game.MAX_PLAYERS) {
-            throw new IllegalArgumentException("playerNames must hold 1 to " + Game.MAX_PLAYERS + " names");
+            throw new InvalidSetting("playerNames", "playerNames must hold 1 to " + Game.MAX_PLAYERS + " names",
+                    playerNames.isEmpty() ? "empty" : playerNames.size() + " names");
         }
         for (String n : playerNames) {
             if (n == null || n.isBlank() || n.length() > Player.MAX_NAME_LENGTH) {
-                throw new IllegalArgumentException("player names must be 1 to " + Player.MAX_NAME_LENGTH + " characters");
+                throw new InvalidSetting("playerNames", "player names must be 1 to " + Player.MAX_NAME_LENGTH + " characters",
+                        n == null || n.isBlank() ? "a list with an empty name" : "a list with a name of " + n.length() + " characters");
             }
+        }
+    }
+
+    /**
+     * A setting out of its range: the message for the terminal and the command line (the field's
+     * name, the value as given), and {@link #forPlayer()} in a player's words.
+     */
+    public static final class InvalidSetting extends IllegalArgumentException {
+        private static final long serialVersionUID = 1L;
+        private final String field;
+        private final String shownValue;
+
+        InvalidSetting(String field, String message, double value) {
+            this(field, message, SettingWords.shown(field, value));
+        }
+
+        InvalidSetting(String field, String message, String shownValue) {
+            super(message);
+            this.field = field;
+            this.shownValue = shownValue;
+        }
+
+        /** The settings file's field ({@code windowWidth} for the window size). */
+        public String field() {
+            return field;
+        }
+
+        /** "The stroke limit is 0; it must be a whole number from 1 to 99 strokes a hole." */
+        public String forPlayer() {
+            return SettingWords.sentence(field, shownValue);
         }
     }
 

@@ -22,6 +22,14 @@ public final class PlayArea {
         return bounds.contains(x, y) && (grid == null || !grid.isDeletedAt(x, y));
     }
 
+    /**
+     * How far (m) (x, y) lies inside the bounds' rectangle, negative outside: a guess at where a path
+     * leaves them, between points on either side (deleted cells are not counted).
+     */
+    public double depthInside(double x, double y) {
+        return Math.min(Math.min(x - bounds.minX(), bounds.maxX() - x), Math.min(y - bounds.minY(), bounds.maxY() - y));
+    }
+
     /** Whether some cells are deleted (the area is not just the bounds' rectangle). */
     public boolean hasDeletedCells() {
         return grid != null;

@@ -188,8 +188,16 @@ final class RollingPhase {
         if (controlled) {
             tau = trial.controlledLength(tau, a1x, a1y);
             if (control.isLong(tau) && !clearOfHazards(tau)) {
+                // A long step whose stages met water or the bounds is tried again ending short of
+                // them, where its stages put the crossing; the steps of dt then meet it.
+                double shore = hazardVeto ? shoreLength(tau) : 0;
+                boolean ashore = false;
+                if (control.isLong(shore)) {
+                    tau = trial.controlledLength(shore, a1x, a1y);
+                    ashore = control.isLong(tau) && clearOfHazards(tau);
+                }
                 control.limit(dt);
-                tau = trial.controlledLength(dt, a1x, a1y);
+                if (!ashore) tau = trial.controlledLength(dt, a1x, a1y);
             }
         }
         b.pieceTime = tau;
@@ -310,9 +318,8 @@ final class RollingPhase {
      */
     private boolean clearOfHazards(double tau) {
         RollingStep r = rolling;
-        if (r.stageLowest < 0 || !locate.inPlay(r.stageMinX, r.stageMinY) || !locate.inPlay(r.stageMaxX, r.stageMaxY)) {
-            return false;
-        }
+        hazardVeto = r.stageLowest < 0 || !locate.inPlay(r.stageMinX, r.stageMinY) || !locate.inPlay(r.stageMaxX, r.stageMaxY);
+        if (hazardVeto) return false;
         // The step's path, the cubic through its ends (as swept against obstacles), lies within
         // (4/27)(|v0 tau - c| + |v1 tau - c|) of its chord c; its stages too are looked at, and a
         // margin covers the cubic's own distance from the path.
@@ -331,6 +338,36 @@ final class RollingPhase {
         }
         return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
+
+    /** Whether the last long step clearOfHazards refused had a stage in water or out of the bounds. */
+    private boolean hazardVeto;
+
+    /**
+     * The length of a step that ends short of where the last long step (of length tau) met water
+     * or the bounds: its stages, in the order of their times, by how far each is above the water
+     * and inside the bounds, interpolated between the last one clear and the first one not; less
+     * {@link #SHORE_MARGIN} dt, so that the next steps, of dt, meet it. A guess: the step is
+     * checked as any long step.
+     */
+    private double shoreLength(double tau) {
+        RollingStep r = rolling;
+        BallState b = ball;
+        double before = 0, clear = Math.min(b.h, locate.depthInside(b.x, b.y));
+        for (int k = 0; k < RollingStep.STAGE_TIMES.length; k++) {
+            double at = RollingStep.STAGE_TIMES[k];
+            double depth = Math.min(r.stageH[k], locate.depthInside(r.stageX[k], r.stageY[k]));
+            if (!(depth >= 0)) {
+                double crossing = clear > 0 && depth < 0 ? before + (at - before) * clear / (clear - depth) : before;
+                return crossing * tau - SHORE_MARGIN * dt;
+            }
+            before = at;
+            clear = depth;
+        }
+        return 0;
+    }
+
+    /** How far (in dt) short of the crossing its stages suggest a step towards water or the bounds ends. */
+    static final double SHORE_MARGIN = 0.5;
 
     /** Completes a step of length tau of the given kind, with events, and commits it. */
     private void finishStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {

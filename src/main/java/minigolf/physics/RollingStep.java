@@ -55,6 +55,10 @@ final class RollingStep {
     double stageLowest, stageMinX, stageMinY, stageMaxX, stageMaxY;
     /** The last long step's steepest ground among its stages (|grad h| squared; the pull gradient's with forces). */
     double stageSteepest;
+    /** The stages a long step sampled, in the order of their times (the last is its end): the fraction of the step, position, height. */
+    static final double[] STAGE_TIMES = {0.2, 0.3, 0.8, 8.0 / 9, 1, 1};
+    final double[] stageX = new double[STAGE_TIMES.length], stageY = new double[STAGE_TIMES.length],
+            stageH = new double[STAGE_TIMES.length];
     /** The last long step's error estimate (position, m). */
     private double longError;
 
@@ -179,17 +183,20 @@ final class RollingStep {
         double p2x = x + h * A21 * vx, p2y = y + h * A21 * vy;
         double v2x = vx + h * A21 * a1x, v2y = vy + h * A21 * a1y;
         accelerationAt(p2x, p2y, v2x, v2y);
+        keepStage(0, p2x, p2y);
         double a2x = ax, a2y = ay, lowest = sample[0], steepest = steepness();
         double minX = Math.min(x, p2x), maxX = Math.max(x, p2x), minY = Math.min(y, p2y), maxY = Math.max(y, p2y);
         double p3x = x + h * (A31 * vx + A32 * v2x), p3y = y + h * (A31 * vy + A32 * v2y);
         double v3x = vx + h * (A31 * a1x + A32 * a2x), v3y = vy + h * (A31 * a1y + A32 * a2y);
         accelerationAt(p3x, p3y, v3x, v3y);
+        keepStage(1, p3x, p3y);
         double a3x = ax, a3y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
         double p4x = x + h * (A41 * vx + A42 * v2x + A43 * v3x), p4y = y + h * (A41 * vy + A42 * v2y + A43 * v3y);
         double v4x = vx + h * (A41 * a1x + A42 * a2x + A43 * a3x), v4y = vy + h * (A41 * a1y + A42 * a2y + A43 * a3y);
         accelerationAt(p4x, p4y, v4x, v4y);
+        keepStage(2, p4x, p4y);
         double a4x = ax, a4y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -198,6 +205,7 @@ final class RollingStep {
         double v5x = vx + h * (A51 * a1x + A52 * a2x + A53 * a3x + A54 * a4x);
         double v5y = vy + h * (A51 * a1y + A52 * a2y + A53 * a3y + A54 * a4y);
         accelerationAt(p5x, p5y, v5x, v5y);
+        keepStage(3, p5x, p5y);
         double a5x = ax, a5y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -206,6 +214,7 @@ final class RollingStep {
         double v6x = vx + h * (A61 * a1x + A62 * a2x + A63 * a3x + A64 * a4x + A65 * a5x);
         double v6y = vy + h * (A61 * a1y + A62 * a2y + A63 * a3y + A64 * a4y + A65 * a5y);
         accelerationAt(p6x, p6y, v6x, v6y);
+        keepStage(4, p6x, p6y);
         double a6x = ax, a6y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -214,6 +223,7 @@ final class RollingStep {
         nvx = vx + h * (B1 * a1x + B3 * a3x + B4 * a4x + B5 * a5x + B6 * a6x);
         nvy = vy + h * (B1 * a1y + B3 * a3y + B4 * a4y + B5 * a5y + B6 * a6y);
         accelerationAt(nx, ny, nvx, nvy);
+        keepStage(5, nx, ny);
         if (cache != null) cache.keep(nx, ny, sample[0], sample[1], sample[2]);
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -230,6 +240,12 @@ final class RollingStep {
         stageMinY = minY;
         stageMaxX = maxX;
         stageMaxY = maxY;
+    }
+
+    private void keepStage(int k, double px, double py) {
+        stageX[k] = px;
+        stageY[k] = py;
+        stageH[k] = sample[0];
     }
 
     /** The position error of the last long step: its fifth- minus fourth-order solution. */

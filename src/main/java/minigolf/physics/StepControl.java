@@ -21,6 +21,11 @@ final class StepControl {
      * on smooth ground (docs/physics.md, "Step control").
      */
     static final double LONG_TOLERANCE = 4e-9;
+    /**
+     * The next long step is chosen so that its estimate would be this fraction of the tolerance
+     * (a rejected long step costs its seven stages and holds the next {@link #PAUSE} steps to dt).
+     */
+    static final double LONG_SAFETY = 0.5;
     /** After a long step is rejected, this many steps of at most dt pass before one may be long again. */
     static final int PAUSE = 4;
     /** A step is halved at most this many times: sub-steps down to dt / 8. */
@@ -71,6 +76,17 @@ final class StepControl {
         return allowed;
     }
 
+    /**
+     * The length after an accepted long step of length h with this error estimate: the length at
+     * which the estimate (growing like h^5 against a tolerance growing like h) would reach
+     * {@link #LONG_SAFETY} of the tolerance, at most twice h and {@link #MAX_GROWTH} dt, at least dt.
+     */
+    private double nextLong(double h, double error) {
+        double room = LONG_SAFETY * LONG_TOLERANCE * h / dt / error;
+        double factor = room >= 16 ? 2 : Math.sqrt(Math.sqrt(room));
+        return Math.max(dt, Math.min(longest, h * factor));
+    }
+
     /** Allows the next step at most {@code length} (a long step that something inside it vetoed). */
     void limit(double length) {
         allowed = Math.min(allowed, length);
@@ -109,8 +125,10 @@ final class StepControl {
             if (isLong(h)) {
                 double error = rolling.longErrorEstimate();
                 if (!(error > LONG_TOLERANCE * h / dt)) {
-                    // The fifth- minus fourth-order estimate grows as h^5.
-                    allowed = !longRejected && error * 32 < LONG_TOLERANCE * doubled / dt ? Math.max(doubled, start) : h;
+                    // The fifth- minus fourth-order estimate grows as h^5, its tolerance as h: the
+                    // next step is the length that would meet it with a margin, up to twice this one.
+                    double next = nextLong(h, error);
+                    allowed = longRejected ? Math.min(h, next) : h < start ? Math.max(next, start) : next;
                     return h;
                 }
                 longRejected = true;

@@ -58,6 +58,11 @@ final class StepLocator {
         return area.contains(qx, qy);
     }
 
+    /** How far (m) (qx, qy) lies inside the bounds, negative outside ({@link PlayArea#depthInside}). */
+    double depthInside(double qx, double qy) {
+        return area.depthInside(qx, qy);
+    }
+
     /**
      * The hazard at a step's end (qx, qy), as {@link #hazardAt}, sampling the ground there fully:
      * the next step starts with that sample.
@@ -90,7 +95,7 @@ final class StepLocator {
      * @throws NonFiniteMotionException if the path jumps where the hazard begins
      */
     double hazard(double tau, RollingStep.Kind kind, double a1x, double a1y) {
-        double hazard = onCubic(tau, inHazard);
+        double hazard = onCubic(tau, inHazard, CONFIRM);
         double inside = Math.min(tau, (hazard + CONFIRM) * tau), before = Math.max(0, (hazard - CONFIRM) * tau);
         trial.run(before, kind, a1x, a1y);
         double safeX = trial.nx, safeY = trial.ny;
@@ -114,14 +119,17 @@ final class StepLocator {
     /**
      * Where on the cubic through the step's ends with their velocities (the trial holds the whole
      * step; its end passes the test) the test first holds, by bisection: the fraction of the step
-     * at the first point found that passes.
+     * at the first point found that passes. The bisection stops once the point is within an eighth
+     * of {@code confirm} of the crossing (27 halvings for {@link #CONFIRM} instead of 50): the trial
+     * steps that confirm it lie {@code confirm} either side, so the rest would move the end found
+     * by less than an eighth of that (at most 1e-8 m for a hazard).
      */
-    private double onCubic(double tau, PointTest test) {
+    private double onCubic(double tau, PointTest test, double confirm) {
         BallState b = ball;
         double x0 = b.x, y0 = b.y, mx0 = b.vx * tau, my0 = b.vy * tau;
         double x1 = trial.nx, y1 = trial.ny, mx1 = trial.nvx * tau, my1 = trial.nvy * tau;
         double before = 0, after = 1;
-        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
+        for (int k = 0; k < LOCATE_ITERATIONS && after - before > 0.125 * confirm; k++) {
             double mid = 0.5 * (before + after);
             if (test.at(PathSweep.hermite(mid, x0, mx0, x1, mx1), PathSweep.hermite(mid, y0, my0, y1, my1))) after = mid; else before = mid;
         }
@@ -190,7 +198,7 @@ final class StepLocator {
         // The whole step again with the start's friction and push: a smooth path, whose cubic
         // the edge is found on.
         trial.run(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
-        double edge = onCubic(tau, pastEdge);
+        double edge = onCubic(tau, pastEdge, EDGE_CONFIRM);
         // Found on the step's cubic, confirmed by trial steps a hair either side ({@link #EDGE_CONFIRM});
         // where that fails, by bisection on trial steps.
         double before = Math.max(0, (edge - EDGE_CONFIRM) * tau), past = Math.min(tau, (edge + EDGE_CONFIRM) * tau);

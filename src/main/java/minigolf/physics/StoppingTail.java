@@ -82,19 +82,19 @@ final class StoppingTail {
         retryBelow = RETRY * speed;
         BallState b = ball;
         double mu = b.muK;
-        double s0 = Math.hypot(b.pullX, b.pullY);
+        double s0 = norm(b.pullX, b.pullY);
         plane.solve(b.vx, b.vy, b.pullX, b.pullY, mu, gravity);
         double dx = plane.dx, dy = plane.dy;
         double steepest = s0, lowest = b.h, change = Double.POSITIVE_INFINITY;
         for (int i = 0; i < ITERATIONS; i++) {
             terrain.sample(b.x + 0.5 * dx, b.y + 0.5 * dy, sample);
             pullAt(sample);
-            double s = Math.hypot(pull[0], pull[1]);
+            double s = norm(pull[0], pull[1]);
             if (!(s < mu)) return false;
             steepest = Math.max(steepest, s);
             lowest = Math.min(lowest, sample[0]);
             plane.solve(b.vx, b.vy, pull[0], pull[1], mu, gravity);
-            change = Math.hypot(plane.dx - dx, plane.dy - dy);
+            change = norm(plane.dx - dx, plane.dy - dy);
             dx = plane.dx;
             dy = plane.dy;
         }
@@ -102,14 +102,14 @@ final class StoppingTail {
         if (!(b.t + time < maxTime)) return false;
         double[] end = ground.at(ex, ey);
         pullAt(end);
-        double sEnd = Math.hypot(pull[0], pull[1]);
+        double sEnd = norm(pull[0], pull[1]);
         if (!(sEnd < mu)) return false;
         steepest = Math.max(steepest, sEnd);
         lowest = Math.min(lowest, end[0]);
         // First order in the slope's change over the tail: the end moves by about the tail's length
         // times that change over the margin of friction (the midpoint's plane does not cancel it).
-        double spread = Math.hypot(pull[0] - b.pullX, pull[1] - b.pullY) / (mu - steepest);
-        double length = Math.hypot(dx, dy);
+        double spread = norm(pull[0] - b.pullX, pull[1] - b.pullY) / (mu - steepest);
+        double length = norm(dx, dy);
         double estimate = change + length * spread;
         if (!(estimate <= TOLERANCE)) {
             retryBelow = Math.min(retryBelow, speed * Math.sqrt(Math.sqrt(TOLERANCE / estimate)));
@@ -135,6 +135,11 @@ final class StoppingTail {
         rest.forget();
         reports.state();
         return true;
+    }
+
+    /** |(x, y)|: Math.hypot's care for overflow costs more than the rest of a try here (slopes and metres). */
+    private static double norm(double x, double y) {
+        return Math.sqrt(x * x + y * y);
     }
 
     /** The pull gradient (the ground's, tilted by the start's push: constant where nothing reaches in) of a ground sample. */

@@ -19,7 +19,7 @@ public final class BotThinkingScreenshot {
     public static void main(String[] args) throws Exception {
         Path out = Path.of(args[0]);
         Path config = Files.createTempDirectory("minigolf-shot");
-        if (List.of(args).contains("--notice")) Files.writeString(new SettingsStore(config).file(), "{\"dt\": 4.9e-324}");
+        if (List.of(args).contains("--notice")) BrokenSettings.in(config);
         Path course = Path.of("courses", "holes", "01-first-tee.json");
         // Ann's putt stops short of the cup (3 m/s on the first tee's green); then Hard's turn.
         GameApp app = new GameApp(minigolf.physics.World.load(course), new GameApp.Options(course, out, 2000,

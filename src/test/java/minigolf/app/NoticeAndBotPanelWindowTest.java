@@ -3,7 +3,6 @@ package minigolf.app;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
@@ -26,8 +25,7 @@ class NoticeAndBotPanelWindowTest {
 
     @Test
     void theBotsPanelIsDrawnBelowTheNotice() throws Exception {
-        SettingsStore store = new SettingsStore(dir);
-        Files.writeString(store.file(), "{\"dt\": 4.9e-324}");
+        SettingsStore store = BrokenSettings.in(dir);
         Path course = Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "holes", "01-first-tee.json");
         GameApp app = new GameApp(World.load(course), new GameApp.Options(course, null, 2000,
                 List.of(Player.human("Ann"), Player.bot("Bot (Hard)", "hard")), List.of(new double[]{3.0, 0.05}), 1,

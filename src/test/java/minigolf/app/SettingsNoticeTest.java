@@ -16,15 +16,17 @@ import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** A broken settings file: the game starts with the defaults, shows why until dismissed, says it on stderr, keeps the file. */
+/**
+ * A broken settings file: the game starts with the defaults, shows why in a player's words until
+ * dismissed, says it on stderr in the file's own words, keeps the file (settings.broken.json once new settings are saved).
+ */
 class SettingsNoticeTest {
     @TempDir
     Path dir;
 
     @Test
     void aBrokenSettingsFileIsShownUntilDismissedAndKept() throws Exception {
-        SettingsStore store = new SettingsStore(dir);
-        Files.writeString(store.file(), "{\"dt\": 4.9e-324}");
+        SettingsStore store = BrokenSettings.in(dir);
         World world = World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "flat.json"));
         PrintStream stderr = System.err;
         ByteArrayOutputStream captured = new ByteArrayOutputStream();
@@ -35,15 +37,24 @@ class SettingsNoticeTest {
         } finally {
             System.setErr(stderr);
         }
-        String problem = "dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324";
-        // The player's view names no file; the terminal's line does.
-        assertEquals("Your settings could not be read (" + problem + "); the defaults are used", app.notice());
-        assertEquals("minigolf: settings ignored, the defaults are used: " + store.file() + ": " + problem + "\n",
+        // The player reads which setting, its range in the game's units, what the file has (no raw
+        // double), what is used instead and what became of the file; no path, no field name.
+        assertEquals("Your settings file was not used.\n"
+                + "The physics step is almost 0 ms; it must be 1 to 33 ms (1/1000 to 1/30 of a second).\n"
+                + "Every setting is at its default for now.\nYour file is kept: it is renamed settings.broken.json when new"
+                + " settings are saved.", app.notice());
+        // The terminal's line names the file, the field and the value as written.
+        assertEquals("minigolf: settings ignored, the defaults are used: " + store.file()
+                + ": dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324\n",
                 captured.toString(StandardCharsets.UTF_8).replace("\r\n", "\n"));
         assertEquals(UserSettings.DEFAULTS, app.settings());
-        assertEquals("{\"dt\": 4.9e-324}", Files.readString(store.file()), "the file is not touched");
+        assertEquals(BrokenSettings.TEXT, Files.readString(store.file()), "the file is not touched");
         app.dismissNotice();
         assertNull(app.notice());
         assertTrue(Files.exists(store.file()));
+        // What the notice promises: new settings saved, the old file kept under that name.
+        app.applySettings(app.settings().withAimGuide(false));
+        assertEquals(BrokenSettings.TEXT, Files.readString(dir.resolve("settings.broken.json")));
+        assertEquals(false, store.load().aimGuide());
     }
 }

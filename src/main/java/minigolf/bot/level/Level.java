@@ -11,11 +11,13 @@ import minigolf.bot.noise.HumanError;
  * courses {@code easy} aims at a casual player (about 2.5-3x the fewest strokes), {@code medium} at
  * 1.7-2x, {@code hard} at 1.2-1.4x, and {@code pro} is the planner itself; on the Meadowbrook round
  * (par 46) a par player should beat {@code medium} and lose to {@code hard} most of the time, {@code hard}
- * under par (not the planner's 21). Tuned on tile seed 1001 and the Meadowbrook round (docs/bots.md
- * has the figures and the fresh seeds they were checked on).
+ * under par (not the planner's 21). Tuned on tile seeds 1001, 44706668, 36662537 and 47692372 (the
+ * last three were fresh seeds of earlier checks) and the Meadowbrook round (docs/bots.md has the
+ * figures and the fresh seeds they were checked on).
  *
  * <ul>
- * <li>{@code easy}: the planner's line, struck about 5 degrees and 17% of pace off (a casual player).</li>
+ * <li>{@code easy}: the planner's line, struck 6 degrees and 20% of pace off (a casual player; 5 degrees
+ *     and 17% until 28 Nov played 2.33 on a fresh seed, below its band).</li>
  * <li>{@code medium}: the noise-aware robust bot (it lays up where a bold line would likely miss),
  *     2.25 degrees and 7.75% off.</li>
  * <li>{@code hard}: the planner's line, nearly exact (0.05 degrees and 0.25% of pace) on lay-ups
@@ -32,7 +34,7 @@ import minigolf.bot.noise.HumanError;
  *                 the planner's line as if it were exact
  */
 public enum Level {
-    EASY(new HumanError(Math.toRadians(5), 0.17), false),
+    EASY(new HumanError(Math.toRadians(6), 0.20), false),
     MEDIUM(new HumanError(Math.toRadians(2.25), 0.0775), true),
     HARD(new HumanError(Math.toRadians(0.05), 0.0025), new HumanError(Math.toRadians(2.25), 0.0775), false),
     PRO(HumanError.NONE, false);
