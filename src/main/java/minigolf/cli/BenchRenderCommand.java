@@ -159,6 +159,9 @@ final class BenchRenderCommand implements Callable<Integer> {
                 renderer.passTimer().setOn(false);
                 ObjectNode passes = out.putObject("passMs");
                 renderer.passTimer().millisPerFrame(frames).forEach(passes::put);
+                // Triangles each pass sent (GL_PRIMITIVES_GENERATED): llvmpipe's vertex and set-up work is serial.
+                ObjectNode sent = out.putObject("passTriangles");
+                renderer.passTimer().trianglesPerFrame(frames).forEach(sent::put);
                 out.put("terrainVertices", renderer.terrainPass().vertexCount());
                 // Of the terrain's indices, those drawn without the shadow tap (-1: every cell keeps it).
                 out.put("sunlitTerrainIndices", renderer.terrainPass().sunlitIndexCount());

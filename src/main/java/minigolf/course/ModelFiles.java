@@ -52,6 +52,11 @@ interface ModelFiles {
         return file -> read(base, file);
     }
 
+    /** Files in {@code folder} (null: none), then the bundled models. */
+    static ModelFiles in(Path folder) {
+        return file -> read(folder, file);
+    }
+
     /** The meshes a course already holds, by file name (to check a course before saving it elsewhere). */
     static ModelFiles known(Map<String, TriangleMesh> meshes, ModelFiles fallback) {
         return file -> {
@@ -75,11 +80,11 @@ interface ModelFiles {
 
     private static TriangleMesh read(Path folder, String file) throws ModelException {
         String shown = CourseException.oneLine(file);
-        Path base = folder.toAbsolutePath().normalize();
+        Path base = folder == null ? null : folder.toAbsolutePath().normalize();
         Path relative, real;
         try {
             relative = ConfinedFiles.relativeName(file);
-            real = ConfinedFiles.resolve(base, file);
+            real = base == null ? null : ConfinedFiles.resolve(base, file);
             if (real != null) return parse(shown, TextFiles.read(real, Limits.MODEL_FILE_BYTES));
         } catch (TextFiles.TextFileException e) {
             String m = e.getMessage();
@@ -99,7 +104,7 @@ interface ModelFiles {
                 throw new ModelException(shown + ": cannot read: " + e.getMessage());
             }
         }
-        throw new ModelException("no such file: " + shown + " (looked in " + base + " and the game's bundled models)");
+        throw new ModelException("no such file: " + shown + " (looked in " + (base == null ? "" : base + " and ") + "the game's bundled models)");
     }
 
     private static TriangleMesh parse(String shown, String text) throws ModelException {

@@ -7,7 +7,9 @@ import java.util.List;
  * An indexed triangle mesh as read from a Wavefront .obj file: one vertex per distinct
  * (position, uv, normal) corner, three indices per triangle, and the parts (runs of triangles that
  * share an object/group name and a material). The renderer draws exactly these triangles and the
- * collision code collides with exactly these triangles, so what the player sees is what the ball hits.
+ * collision code collides with exactly these triangles, so what the player sees is what the ball hits
+ * (the software quality tier may draw a model's lighter twin of the same shape instead:
+ * {@code minigolf.course.ModelTwins}).
  *
  * <p>Coordinates are in the model's own frame (as written in the file); a course's {@code model}
  * obstacle places them in the world (see {@code minigolf.collision.ObstacleGeometry}).

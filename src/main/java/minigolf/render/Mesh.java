@@ -67,6 +67,19 @@ public final class Mesh implements AutoCloseable {
         }
     }
 
+    /** Overwrites part of the index buffer in place: {@code indices} go to the buffer from index {@code firstIndex} on. */
+    public void updateIndices(int firstIndex, int[] indices) {
+        IntBuffer buffer = memAllocInt(indices.length);
+        try {
+            buffer.put(indices).flip();
+            glBindVertexArray(vao);
+            glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, (long) firstIndex * Integer.BYTES, buffer);
+            glBindVertexArray(0);
+        } finally {
+            memFree(buffer);
+        }
+    }
+
     public int indexCount() {
         return indexCount;
     }

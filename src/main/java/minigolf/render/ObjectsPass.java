@@ -34,6 +34,7 @@ public final class ObjectsPass implements RenderPass {
     /** Confetti and splashes (Particles), rebuilt each frame while they last; null when none. */
     private Mesh effects;
     private final Mesh ball;
+    private final Mesh mapBall;
     private final List<BallView> defaultBalls;
     private List<BallView> balls;
     private AimView aim;
@@ -58,12 +59,18 @@ public final class ObjectsPass implements RenderPass {
         holeY = course.hole().position().y();
         double hx = holeX, hy = holeY, r = course.hole().radius();
         double ground = terrain.height(hx, hy);
-        cupRim = new Mesh(Shapes.drapedDisc(hx, hy, r * 1.15, 48, 3, terrain::height, 0.003, 0.92f, 0.92f, 0.88f));
-        cup = new Mesh(Shapes.drapedDisc(hx, hy, r, 48, 3, terrain::height, 0.005, 0.03f, 0.04f, 0.03f));
+        // The software tier pays per triangle (llvmpipe sets each up on one thread): a rounder cup and
+        // ball than a few pixels of them can show cost it more than the whole sky.
+        int cupSegments = vertexLit ? 24 : 48;
+        cupRim = new Mesh(Shapes.drapedDisc(hx, hy, r * 1.15, cupSegments, 3, terrain::height, 0.003, 0.92f, 0.92f, 0.88f));
+        cup = new Mesh(Shapes.drapedDisc(hx, hy, r, cupSegments, 3, terrain::height, 0.005, 0.03f, 0.04f, 0.03f));
         // The cloth flies sideways to the line from the start to the hole, so the opening view sees it broadside.
         flag = new Mesh(ModelResource.get("flag").placed(hx, hy, ground - FLAG_FOOT_DEPTH,
                 clothHeading(course.start().x(), course.start().y(), hx, hy), 1));
-        ball = new Mesh(Shapes.icosphere(3, 1f, 1f, 1f));
+        // 1,280 triangles; the software tier's ball 320 (lit per vertex, a ball 25 pixels across shows no
+        // facet), and the minimap's balls, a few pixels across, 80.
+        ball = new Mesh(Shapes.icosphere(vertexLit ? 2 : 3, 1f, 1f, 1f));
+        mapBall = vertexLit ? new Mesh(Shapes.icosphere(1, 1f, 1f, 1f)) : ball;
         double bx = course.start().x(), by = course.start().y();
         defaultBalls = List.of(BallView.white(bx, by, terrain.height(bx, by)));
         balls = defaultBalls;
@@ -203,8 +210,27 @@ public final class ObjectsPass implements RenderPass {
         if (arrow != null) draw(arrow, model.identity(), 0.2f, 16f);
         if (marker != null) draw(marker, model.identity(), 0.3f, 16f);
         if (trail != null) draw(trail, model.identity(), 0.1f, 8f);
-        drawBalls((float) visualBallRadius());
+        drawBalls(ball, (float) visualBallRadius());
         if (effects != null) draw(effects, model.identity(), 0.4f, 24f);
+    }
+
+    /**
+     * The objects again for the balls' shadows' second draw (SceneRenderer, software tier): as
+     * {@link #render}, but a single ball is left out, since no ball shades itself (shadow.glsl skips
+     * the caster's own surface) and its pixels are already drawn.
+     */
+    void renderForBallShadows(FrameContext frame) {
+        if (balls.size() > 1) {
+            render(frame);
+            return;
+        }
+        List<BallView> all = balls;
+        balls = List.of();
+        try {
+            render(frame);
+        } finally {
+            balls = all;
+        }
     }
 
     /**
@@ -218,7 +244,7 @@ public final class ObjectsPass implements RenderPass {
         model.translation((float) holeX, (float) holeY, 0).scale(s, s, 1).translate((float) -holeX, (float) -holeY, 0);
         draw(cupRim, model, 0.0f, 8f);
         draw(cup, model, 0.0f, 8f);
-        drawBalls(Math.max((float) visualBallRadius(), markerRadius));
+        drawBalls(mapBall, Math.max((float) visualBallRadius(), markerRadius));
         glEnable(GL_DEPTH_TEST);
     }
 
@@ -249,10 +275,10 @@ public final class ObjectsPass implements RenderPass {
         program.set("uClipPlane", frame.clipPlane);
     }
 
-    private void drawBalls(float radius) {
+    private void drawBalls(Mesh sphere, float radius) {
         for (BallView b : balls) {
             model.translation(b.x(), b.y(), b.z() + radius).scale(radius);
-            draw(ball, model, 0.6f, 64f, b.red(), b.green(), b.blue());
+            draw(sphere, model, 0.6f, 64f, b.red(), b.green(), b.blue());
         }
     }
 
@@ -275,6 +301,7 @@ public final class ObjectsPass implements RenderPass {
         cup.close();
         flag.close();
         ball.close();
+        mapBall.close();
         if (arrow != null) arrow.close();
         if (effects != null) effects.close();
         if (marker != null) marker.close();

@@ -1,7 +1,9 @@
 package minigolf.render;
 
 import minigolf.course.HeightProbe;
+import minigolf.course.ModelTwins;
 import minigolf.course.Obstacle;
+import minigolf.mesh.TriangleMesh;
 import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 
@@ -32,6 +34,10 @@ public final class ObstaclesPass implements RenderPass {
     private final ObstacleMeshes.Style style;
     /** Nothing is drawn below this height (the plinth's foot): the rails' footings reach 1 m into the ground. */
     private final double floor;
+    /** Whether models are drawn from their lighter twins where they have one (software tier, see {@link ModelTwins}). */
+    private final boolean lowModels;
+    /** The twins found so far by model file (empty: none), cleared with the course folder. */
+    private final Map<String, java.util.Optional<TriangleMesh>> twins = new HashMap<>();
 
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
         this(obstacles, ground, false);
@@ -49,13 +55,16 @@ public final class ObstaclesPass implements RenderPass {
 
     /**
      * As above, drawn down to {@code floor} only: the course's plinth stands on the ground there, and
-     * the footings below it (collision only) would show under the plinth from a high view.
+     * the footings below it (collision only) would show under the plinth from a high view. With
+     * {@code vertexLit} (the software tier) models are drawn from their lighter twins where they have
+     * one: llvmpipe pays per triangle, and the windmill's 10,560 cost more than a hole's whole terrain.
      */
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground, boolean vertexLit, ObstacleMeshes.Style style, double floor) {
         this.shader = new LitShader(vertexLit ? "object-vertexlit" : "object");
         this.ground = ground;
         this.style = style;
         this.floor = floor;
+        this.lowModels = vertexLit;
         try {
             setObstacles(obstacles);
         } catch (RuntimeException e) {
@@ -67,7 +76,7 @@ public final class ObstaclesPass implements RenderPass {
     /** Replaces the drawn obstacles (null or empty: none). */
     public void setObstacles(List<Obstacle> list) {
         obstacles = list == null ? List.of() : List.copyOf(list);
-        ObstacleMeshes.Built built = ObstacleMeshes.build(obstacles, ground, this::materialsOf,
+        ObstacleMeshes.Built built = ObstacleMeshes.build(lowModels ? withTwins(obstacles) : obstacles, ground, this::materialsOf,
                 ObstacleMeshes.CrownStyle.COURSE, style);
         if (floor > Double.NEGATIVE_INFINITY) {
             float[] v = built.solid().vertices();
@@ -87,6 +96,7 @@ public final class ObstaclesPass implements RenderPass {
     public void setCourseFolder(Path folder) {
         courseFolder = folder;
         materials.clear();
+        twins.clear();
         setObstacles(obstacles);
     }
 
@@ -106,6 +116,19 @@ public final class ObstaclesPass implements RenderPass {
     /** The highest point of anything drawn here, or -infinity when there is nothing. */
     public double top() {
         return top;
+    }
+
+    /** The obstacles with each model's mesh replaced by its lighter twin, where it has one (drawn only: the list kept is the course's). */
+    private List<Obstacle> withTwins(List<Obstacle> list) {
+        List<Obstacle> drawn = new java.util.ArrayList<>(list.size());
+        for (Obstacle o : list) {
+            if (o instanceof Obstacle.Model m) {
+                TriangleMesh low = twins.computeIfAbsent(m.file(), f -> java.util.Optional.ofNullable(ModelTwins.low(f, courseFolder))).orElse(null);
+                if (low != null) o = new Obstacle.Model(m.file(), m.position(), m.rotationDeg(), m.scale(), m.restitution(), low);
+            }
+            drawn.add(o);
+        }
+        return drawn;
     }
 
     private MaterialLibrary materialsOf(Obstacle.Model m) {

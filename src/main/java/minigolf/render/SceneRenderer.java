@@ -119,8 +119,8 @@ public final class SceneRenderer implements AutoCloseable {
             el = new ElementsPass(course, surface::height, quality.vertexLit());
             o = new ObjectsPass(course, surface, quality.vertexLit());
             u = new SurroundingsPass(course, TerrainMesh.skirtBase(t.minHeight(), course.bounds()), theme,
-                    SurroundingsPass.shareFor(quality));
-            water = new WaterPass(course, surface);
+                    SurroundingsPass.shareFor(quality), quality.vertexLit());
+            water = new WaterPass(course, surface, quality.terrainSpacing());
         } catch (RuntimeException e) {
             for (RenderPass p : new RenderPass[]{u, o, el, ob, t, s}) if (p != null) p.close();
             throw e;
@@ -177,6 +177,10 @@ public final class SceneRenderer implements AutoCloseable {
     /** The per-pass timer (off by default; the benchmark's --breakdown turns it on). */
     public PassTimer passTimer() {
         return timer;
+    }
+
+    SkyPass skyPass() {
+        return sky;
     }
 
     public TerrainPass terrainPass() {
@@ -492,7 +496,7 @@ public final class SceneRenderer implements AutoCloseable {
         frame.ballShadowsInline = true;
         terrain.redrawWithin(frame, region.box()); // the chunks at the levels just drawn
         obstacles.renderWithin(frame, region.box());
-        objects.render(frame);
+        objects.renderForBallShadows(frame);
         frame.ballShadowsInline = false;
         glDisable(GL_SCISSOR_TEST);
     }

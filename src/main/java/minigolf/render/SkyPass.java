@@ -30,7 +30,7 @@ public final class SkyPass implements RenderPass {
     /** The programs per cell group: bit 0 clouds, bit 1 the sun's disc, bit 2 ground without per-pixel sea. */
     private final ShaderProgram[] programs;
     /** Whether cells off the seaside's shore are drawn without the per-pixel sea (software tier). */
-    private final boolean shoreSplit;
+    private boolean shoreSplit;
     private final float[] groundX = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final float[] groundY = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final Texture clouds = Texture.fromPixels(CLOUD_TEXTURE_SIZE, CLOUD_TEXTURE_SIZE,
@@ -47,6 +47,9 @@ public final class SkyPass implements RenderPass {
     private float groundLevel = Float.NaN;
     private float[] groundColor = {0, 0, 0};
     private float fadeStart, fadeEnd;
+    /** The shore's band for sorting the cells (software tier by the sea, once a ground is set), or null: built with the ground, not per frame. */
+    private Shore shore;
+    private int[] lastCounts = new int[8];
 
     /** The shore (metres from the course's bounds), the course's bounds, the sea's and the beach's colours: a seaside world. */
     record Sea(float shore, float[] courseRect, float[] seaColor, float[] beachColor) {
@@ -205,9 +208,9 @@ public final class SkyPass implements RenderPass {
 
     @Override
     public void render(FrameContext frame) {
-        Shore shore = shoreSplit && !Float.isNaN(groundLevel) ? Shore.of(sea, groundLevel) : null;
         int[] counts = sortCells(frame.inverseViewProjection, frame.sun.direction(), cornerUp, cornerSun, order, near, far,
                 shore, groundX, groundY);
+        lastCounts = counts;
         glBindVertexArray(vao);
         indices.clear();
         indices.put(order).flip();
@@ -237,9 +240,30 @@ public final class SkyPass implements RenderPass {
      */
     public void setGround(double level, float[] color, float fadeStart, float fadeEnd) {
         this.groundLevel = (float) level;
+        this.shore = shoreSplit && !Float.isNaN(groundLevel) ? Shore.of(sea, groundLevel) : null;
         this.groundColor = color.clone();
         this.fadeStart = fadeStart;
         this.fadeEnd = fadeEnd;
+    }
+
+    /** The shore the cells are sorted by (null: no split; tests). */
+    Shore shore() {
+        return shore;
+    }
+
+    /** The indices drawn per cell group in the last frame (see {@link #sortCells}; tests). */
+    int[] lastCounts() {
+        return lastCounts.clone();
+    }
+
+    /**
+     * Off: every ground cell by the sea gets the per-pixel shore, as before the split (tests compare
+     * the pictures); on: the software tier's split again. Only where the split can exist.
+     */
+    void splitShore(boolean on) {
+        if (sea == null || groundLayer >= 0 || programs[4] == null) return;
+        shoreSplit = on;
+        shore = on && !Float.isNaN(groundLevel) ? Shore.of(sea, groundLevel) : null;
     }
 
     private void use(ShaderProgram shader, FrameContext frame) {

@@ -47,8 +47,14 @@ public final class SurroundingsPass implements RenderPass {
      * count (see {@link #shareFor}).
      */
     public SurroundingsPass(Course course, double level, Theme theme, double share) {
+        this(course, level, theme, share, false);
+    }
+
+    /** As above; {@code light}: the props' smallest parts with fewer triangles (the software tier, see {@link SceneryMesh#build}). */
+    public SurroundingsPass(Course course, double level, Theme theme, double share, boolean light) {
         this(course.bounds(), level, treeCount(theme, share), SceneryMesh.build(SceneryPlan.plan(theme.scenery(), course.bounds(),
-                course.start().x(), course.start().y(), course.hole().position().x(), course.hole().position().y(), share), theme, level));
+                course.start().x(), course.start().y(), course.hole().position().x(), course.hole().position().y(), share), theme, level,
+                light));
     }
 
     private SurroundingsPass(Bounds bounds, double level, int treeCount, SceneryMesh props) {

@@ -40,6 +40,11 @@ public final class TerrainLod {
         final int[] first = new int[LEVELS], count = new int[LEVELS];
         /** No cell of the chunk can be in the shadow map's shadow (set by TerrainPass.setShadowedCells): drawn without the tap. */
         boolean allSunlit;
+        /**
+         * Of the level-0 indices, how many come first and need the shadow tap (TerrainPass.setShadowedCells
+         * sorts the chunk's cells, those the map can darken first); the rest are drawn without it.
+         */
+        int shadowedAtLevel0 = -1;
 
         Chunk(int i0, int j0, int i1, int j1) {
             this.i0 = i0;

@@ -18,6 +18,8 @@ public final class TerrainPass implements RenderPass {
     private int columns, rows;
     /** The main mesh's vertices as uploaded (patches included): what the sunlit cells are found from. */
     private float[] vertices;
+    /** The main mesh's own indices (cell by cell, then the skirts): the level-0 chunks are re-sorted from them. */
+    private int[] ownIndices;
     /** Runs of cells (see SunlitCells.runs) as index ranges {first, count}: shadowed and sunlit; null: all shadowed. */
     private int[][] shadowedRanges, sunlitRanges;
     private final double minSpacing;
@@ -74,6 +76,7 @@ public final class TerrainPass implements RenderPass {
         columns = built.columns();
         rows = built.rows();
         vertices = built.data().vertices();
+        ownIndices = own;
         shadowedRanges = sunlitRanges = null;
         minHeight = built.minHeight();
         maxHeight = built.maxHeight();
@@ -127,7 +130,10 @@ public final class TerrainPass implements RenderPass {
     public void setShadowedCells(ShadowMap map) {
         if (map == null) {
             shadowedRanges = sunlitRanges = null;
-            for (TerrainLod.Chunk c : lod.chunks()) c.allSunlit = false;
+            for (TerrainLod.Chunk c : lod.chunks()) {
+                c.allSunlit = false;
+                c.shadowedAtLevel0 = c.count[0];
+            }
             return;
         }
         boolean[] mask = SunlitCells.shadowed(map.readDepth(), map.size(), map.lightViewProjection(), map.bias(),
@@ -145,7 +151,30 @@ public final class TerrainPass implements RenderPass {
             boolean any = false;
             for (int j = c.j0; j < c.j1 && !any; j++) for (int i = c.i0; i < c.i1 && !any; i++) any = mask[j * nx + i];
             c.allSunlit = !any;
+            sortLevel0(c, mask);
         }
+    }
+
+    /**
+     * Rewrites chunk c's level-0 indices (the same triangles) with the cells the map can darken first,
+     * so that a near chunk, drawn at full resolution, skips the tap on its sunlit cells too: a course
+     * with rails all round has a shadow in every chunk, and chunk by chunk none would skip it.
+     */
+    private void sortLevel0(TerrainLod.Chunk c, boolean[] mask) {
+        int nx = columns - 1;
+        int[] sorted = new int[c.count[0]];
+        int n = 0;
+        for (int pass = 0; pass < 2; pass++) {
+            for (int j = c.j0; j < c.j1; j++) {
+                for (int i = c.i0; i < c.i1; i++) {
+                    int cell = j * nx + i;
+                    if (mask[cell] != (pass == 0)) continue;
+                    for (int q = cellStarts[cell]; q < cellStarts[cell + 1]; q++) sorted[n++] = ownIndices[q];
+                }
+            }
+            if (pass == 0) c.shadowedAtLevel0 = n;
+        }
+        mesh.updateIndices(indexCount + c.first[0], sorted);
     }
 
     /** Indices in the main mesh (surface and skirts). */
@@ -248,13 +277,24 @@ public final class TerrainPass implements RenderPass {
             boolean used = false;
             for (int n = 0; n < chunks.size(); n++) {
                 TerrainLod.Chunk c = chunks.get(n);
-                if (levels[n] < 0 || (split && c.allSunlit != sunlitPass)) continue;
+                if (levels[n] < 0) continue;
+                // Full resolution: the chunk's cells the map can darken come first (sortLevel0), the sunlit rest after.
+                int first = indexCount + c.first[levels[n]], count = c.count[levels[n]];
+                if (split && levels[n] == 0) {
+                    int shadowed = c.shadowedAtLevel0;
+                    if (sunlitPass) first += shadowed;
+                    count = sunlitPass ? count - shadowed : shadowed;
+                } else if (split && c.allSunlit != sunlitPass) {
+                    continue;
+                }
+                if (count <= 0) continue;
                 if (!used) {
                     if (sunlitPass) use(frame, LitShader.Variant.UNSHADOWED);
                     else use(frame);
                     used = true;
                 }
-                drawn += drawChunk(c, levels[n]);
+                mesh.drawRange(first, count);
+                drawn += count;
             }
         }
         use(frame);
@@ -298,11 +338,27 @@ public final class TerrainPass implements RenderPass {
         var b = course.bounds();
         boolean edge = box[0] <= b.minX() || box[3] >= b.maxX() || box[1] <= b.minY() || box[4] >= b.maxY();
         use(frame);
+        // The grid's cells that meet the box (one cell more each way): a chunk drawn at full resolution
+        // is redrawn there only, from the mesh's own indices (the same triangles), row by row.
+        int nx = columns - 1, ny = rows - 1;
+        int i0 = (int) Math.max(0, Math.floor((box[0] - b.minX()) / b.width() * nx) - 1);
+        int i1 = (int) Math.min(nx, Math.ceil((box[3] - b.minX()) / b.width() * nx) + 1);
+        int j0 = (int) Math.max(0, Math.floor((box[1] - b.minY()) / b.depth() * ny) - 1);
+        int j1 = (int) Math.min(ny, Math.ceil((box[4] - b.minY()) / b.depth() * ny) + 1);
         var chunks = lod.chunks();
         for (int n = 0; n < chunks.size(); n++) {
             TerrainLod.Chunk c = chunks.get(n);
             if (lastLevels[n] < 0 || c.max[0] < box[0] || c.min[0] > box[3] || c.max[1] < box[1] || c.min[1] > box[4]) continue;
-            drawChunk(c, lastLevels[n]);
+            if (lastLevels[n] > 0) {
+                drawChunk(c, lastLevels[n]);
+                continue;
+            }
+            int a = Math.max(c.i0, i0), e = Math.min(c.i1, i1);
+            if (a >= e) continue;
+            for (int j = Math.max(c.j0, j0); j < Math.min(c.j1, j1); j++) {
+                int first = cellStarts[j * nx + a], end = cellStarts[j * nx + e];
+                if (end > first) mesh.drawRange(first, end - first);
+            }
         }
         if (edge) {
             int skirts = cellStarts[cellStarts.length - 1];

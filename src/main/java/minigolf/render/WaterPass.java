@@ -30,8 +30,20 @@ public final class WaterPass implements RenderPass {
     private boolean bedBlend;
     /** The wet part of the plane (x, y at z = 0): minX, minY, maxX, maxY; null without water. */
     private float[] wetBox;
+    /** The plane's finest grid spacing (metres). */
+    private final double minSpacing;
 
     public WaterPass(Course course, Terrain terrain) {
+        this(course, terrain, TerrainMesh.MIN_SPACING);
+    }
+
+    /**
+     * As above with the plane's grid no finer than {@code minSpacing} metres: the software tier's
+     * terrain spacing (0.1 m), so the water's shoreline follows the drawn ground's facets and
+     * llvmpipe sets up a quarter of the triangles.
+     */
+    public WaterPass(Course course, Terrain terrain, double minSpacing) {
+        this.minSpacing = minSpacing;
         try {
             rebuild(course, terrain);
         } catch (RuntimeException e) {
@@ -45,7 +57,7 @@ public final class WaterPass implements RenderPass {
      * once). The shader and the ripple texture are loaded the first time there is water and kept.
      */
     public void rebuild(Course course, Terrain terrain) {
-        MeshData data = buildPlane(course.bounds(), terrain);
+        MeshData data = buildPlane(course.bounds(), terrain, minSpacing);
         if (mesh != null) mesh.close();
         mesh = null;
         wetBox = data == null ? null : wetBox(data);
@@ -56,7 +68,12 @@ public final class WaterPass implements RenderPass {
     }
     /** The z = 0 grid with a depth per vertex (layout {3, 1}); null when the terrain never dips below 0. */
     static MeshData buildPlane(Bounds b, Terrain terrain) {
-        double spacing = Math.max(TerrainMesh.MIN_SPACING, Math.max(b.width(), b.depth()) / MAX_QUADS);
+        return buildPlane(b, terrain, TerrainMesh.MIN_SPACING);
+    }
+
+    /** As above, the grid no finer than {@code minSpacing} metres. */
+    static MeshData buildPlane(Bounds b, Terrain terrain, double minSpacing) {
+        double spacing = Math.max(minSpacing, Math.max(b.width(), b.depth()) / MAX_QUADS);
         int nx = Math.max(1, Math.min(MAX_QUADS, (int) Math.ceil(b.width() / spacing - 1e-9)));
         int ny = Math.max(1, Math.min(MAX_QUADS, (int) Math.ceil(b.depth() / spacing - 1e-9)));
         int cols = nx + 1, rows = ny + 1;

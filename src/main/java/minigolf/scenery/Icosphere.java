@@ -5,10 +5,14 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
-/** A unit icosahedron subdivided once (42 points, 80 faces, counter-clockwise from outside): the props' lumps. */
+/**
+ * A unit icosahedron subdivided once (42 points, 80 faces, counter-clockwise from outside): the props' lumps;
+ * and the icosahedron itself (its 12 points are the first 12, 20 faces) for the smallest ones on the software tier.
+ */
 final class Icosphere {
     private static final double[][] POINTS;
     private static final int[][] FACES;
+    private static final int[][] PLAIN_FACES;
 
     static {
         double t = (1 + Math.sqrt(5)) / 2;
@@ -38,11 +42,15 @@ final class Icosphere {
         }
         POINTS = p.toArray(new double[0][]);
         FACES = faces.toArray(new int[0][]);
+        PLAIN_FACES = new int[f.length][];
+        for (int k = 0; k < f.length; k++) PLAIN_FACES[k] = f[k].clone();
         // The swap of y and z above mirrors the shape: restore counter-clockwise faces.
-        for (int[] face : FACES) {
-            int s = face[1];
-            face[1] = face[2];
-            face[2] = s;
+        for (int[][] all : new int[][][]{FACES, PLAIN_FACES}) {
+            for (int[] face : all) {
+                int s = face[1];
+                face[1] = face[2];
+                face[2] = s;
+            }
         }
     }
 
@@ -55,6 +63,11 @@ final class Icosphere {
 
     static int[][] faces() {
         return FACES;
+    }
+
+    /** The plain icosahedron's 20 faces, over the first 12 of {@link #points()}. */
+    static int[][] plainFaces() {
+        return PLAIN_FACES;
     }
 
     private static int midpoint(List<double[]> p, Map<Long, Integer> cache, int a, int b) {

@@ -147,8 +147,14 @@ public final class MeshWriter {
      */
     public void lump(double x, double y, double z, double rx, double ry, double rz, double roughness, long seed,
                      boolean flat, double floor, float[] colour, float[] topColour) {
+        lump(x, y, z, rx, ry, rz, roughness, seed, flat, floor, colour, topColour, false);
+    }
+
+    /** As above; {@code plain}: from the icosahedron itself (20 faces, not 80), for parts a few pixels across. */
+    public void lump(double x, double y, double z, double rx, double ry, double rz, double roughness, long seed,
+                     boolean flat, double floor, float[] colour, float[] topColour, boolean plain) {
         double[][] pts = Icosphere.points();
-        int[][] faces = Icosphere.faces();
+        int[][] faces = plain ? Icosphere.plainFaces() : Icosphere.faces();
         java.util.Random random = new java.util.Random(seed);
         double[][] w = new double[pts.length][];
         for (int k = 0; k < pts.length; k++) {
@@ -163,7 +169,7 @@ public final class MeshWriter {
             return;
         }
         int base = vertexCount();
-        for (int k = 0; k < pts.length; k++) {
+        for (int k = 0; k < (plain ? 12 : pts.length); k++) {
             float[] c = pts[k][2] > 0.45 ? topColour : colour;
             vertex(w[k][0], w[k][1], w[k][2], pts[k][0] / rx, pts[k][1] / ry, pts[k][2] / rz, c);
         }

@@ -27,6 +27,11 @@ public final class SceneryMesh {
     }
 
     public static SceneryMesh build(List<SceneryPlan.Placed> placed, Theme theme, double level) {
+        return build(placed, theme, level, false);
+    }
+
+    /** As above; {@code light}: the software tier's props, the smallest parts with fewer triangles (see {@link PropMeshes#flowers}). */
+    public static SceneryMesh build(List<SceneryPlan.Placed> placed, Theme theme, double level, boolean light) {
         MeshWriter w = new MeshWriter();
         List<Piece> pieces = new ArrayList<>();
         float[] rock = theme.materials().edgeColor().toArray();
@@ -41,7 +46,7 @@ public final class SceneryMesh {
                 case PINE -> PropMeshes.pine(w, x, y, z, p.size(), snowy);
                 case ROCK -> PropMeshes.rock(w, x, y, z, p.size(), p.seed(), rock, snowy);
                 case CACTUS -> PropMeshes.cactus(w, x, y, z, p.size(), p.seed());
-                case FLOWERS -> PropMeshes.flowers(w, x, y, z, p.seed());
+                case FLOWERS -> PropMeshes.flowers(w, x, y, z, p.seed(), light);
                 case FENCE -> {
                     double a = Math.toRadians(p.headingDeg()), h = p.size() / 2;
                     PropMeshes.fence(w, x - Math.cos(a) * h, y - Math.sin(a) * h, x + Math.cos(a) * h, y + Math.sin(a) * h, z, snowy);

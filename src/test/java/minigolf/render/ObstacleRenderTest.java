@@ -183,4 +183,53 @@ class ObstacleRenderTest {
             assertTrue(wooden(shots[1], new int[]{px, py}), "the wall on the redrawn minimap: " + shots[1].describe(px, py));
         }
     }
+
+    /**
+     * The software tier draws the windmill from its lighter twin (164 triangles for 10,560), the
+     * course keeps the full model for the physics, and the picture barely changes: the twin's
+     * outline is the full one's within 0.2% of the tower's radius.
+     */
+    @Test
+    void theSoftwareTierDrawsTheWindmillsTwinAndLooksTheSame() throws Exception {
+        minigolf.physics.World w = minigolf.physics.World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "windmill.json"));
+        Course course = w.course();
+        Obstacle.Model mill = (Obstacle.Model) course.obstacles().get(0);
+        // The same model under a file name with no twin beside it: drawn in full at every tier.
+        Obstacle.Model untwinned = new Obstacle.Model("models/untwinned.obj", mill.position(), mill.rotationDeg(), mill.scale(),
+                mill.restitution(), mill.mesh());
+        java.util.List<Obstacle> others = course.obstacles().subList(1, course.obstacles().size());
+        java.util.List<Obstacle> full = new java.util.ArrayList<>(java.util.List.of(untwinned));
+        full.addAll(others);
+        int W2 = 640, H2 = 360;
+        OrbitCamera cam = OrbitCamera.behindBall(course, w.terrain(), (float) W2 / H2);
+        int[][] pictures = new int[2][];
+        int[] triangles = new int[2];
+        for (int k = 0; k < 2; k++) {
+            Course drawn = k == 0 ? course : course.withObstacles(full);
+            try (Offscreen off = new Offscreen(W2, H2, 0);
+                 SceneRenderer r = new SceneRenderer(drawn, w.terrain(), TerrainMesh.ColorMode.GREEN, RenderQuality.SOFTWARE)) {
+                r.setBalls(List.of());
+                off.bind();
+                r.render(cam, W2, H2, 0f);
+                assertEquals(GL_NO_ERROR, glGetError());
+                Path png = TestCourses.screenshotDir().resolve(k == 0 ? "windmill-twin.png" : "windmill-full-software.png");
+                off.savePng(png);
+                pictures[k] = Pixels.read(png).rgb();
+                triangles[k] = r.obstaclesPass().solidTriangles();
+                assertSame(mill.mesh(), ((Obstacle.Model) r.obstaclesPass().obstacles().get(0)).mesh(), "the pass keeps the course's model");
+            }
+        }
+        assertEquals(10560 - 164, triangles[1] - triangles[0], "the twin's 164 triangles drawn instead of 10,560");
+        int millPixels = 0, differ = 0;
+        for (int i = 0; i < pictures[0].length; i++) {
+            int a = pictures[0][i], b = pictures[1][i];
+            int d = 0;
+            for (int shift = 0; shift < 24; shift += 8) d = Math.max(d, Math.abs(((a >> shift) & 0xff) - ((b >> shift) & 0xff)));
+            if (d > 24) differ++;
+            // Whitewash and thatch: light and warm, unlike the grass round it.
+            if (((b >> 16) & 0xff) > 120 && ((b >> 16) & 0xff) >= ((b >> 8) & 0xff)) millPixels++;
+        }
+        assertTrue(millPixels > 2000, "the windmill is in view: " + millPixels + " pixels");
+        assertTrue(differ * 50 < millPixels, differ + " of the windmill's " + millPixels + " pixels changed by more than 24 levels");
+    }
 }

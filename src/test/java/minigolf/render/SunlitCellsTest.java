@@ -124,7 +124,12 @@ class SunlitCellsTest {
             OrbitCamera cam = OrbitCamera.behindBall(w.course(), w.terrain(), (float) width / height);
             off.bind();
             r.render(cam, width, height, 0f);
-            if (q.sunlitTerrain()) assertTrue(r.terrainPass().sunlitIndexCount() > 0, "no sunlit cell found");
+            if (q.sunlitTerrain()) {
+                assertTrue(r.terrainPass().sunlitIndexCount() > 0, "no sunlit cell found");
+                // A near chunk (full resolution) drawn part with the tap, part without (TerrainPass.sortLevel0).
+                assertTrue(r.terrainPass().lod().chunks().stream().anyMatch(c -> c.shadowedAtLevel0 > 0 && c.shadowedAtLevel0 < c.count[0]),
+                        file + ": no chunk split between shadowed and sunlit cells");
+            }
             off.savePng(png);
         }
         return Pixels.read(png);

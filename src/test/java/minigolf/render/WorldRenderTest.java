@@ -105,4 +105,53 @@ class WorldRenderTest {
         assertTrue(red > 200, "the cloth is in view: " + red + " red pixels");
         assertTrue(changed > red / 10, "the cloth moved: " + changed + " of " + red + " pixels changed");
     }
+
+    /**
+     * The software tier's sky by the sea sorts its cells by a shore built once with the ground (not
+     * per frame), and drawing the cells off the shore's band from their grid corners leaves the
+     * picture as the per-pixel sea everywhere drew it.
+     */
+    @Test
+    void theShoreIsBuiltWithTheGroundAndTheSplitLeavesThePictureAsItWas() {
+        Course course = TestCourses.flat().withObstacles(List.of(RAIL)).withWorld("seaside");
+        OrbitCamera out = new OrbitCamera(new Vector3f(0, 0, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(35), 30f);
+        try (Offscreen off = new Offscreen(W, H, 0);
+             SceneRenderer r = new SceneRenderer(course, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN, RenderQuality.SOFTWARE)) {
+            r.setBalls(List.of());
+            SkyPass sky = r.skyPass();
+            assertNotNull(sky.shore(), "the seaside's software sky has a shore");
+            for (OrbitCamera cam : new OrbitCamera[]{out, low()}) {
+                SkyPass.Shore shore = sky.shore();
+                Pixels split = draw(off, r, cam, "sea-split.png");
+                int[] counts = sky.lastCounts();
+                assertTrue(counts[4] + counts[6] > 0, "some ground cells skip the per-pixel shore");
+                assertSame(shore, sky.shore(), "the same shore frame after frame");
+                sky.splitShore(false);
+                Pixels whole = draw(off, r, cam, "sea-whole.png");
+                counts = sky.lastCounts();
+                assertEquals(0, counts[4] + counts[5] + counts[6] + counts[7], "every cell per pixel");
+                sky.splitShore(true);
+                int worst = 0;
+                for (int i = 0; i < split.rgb().length; i++) {
+                    for (int shift = 0; shift < 24; shift += 8) {
+                        worst = Math.max(worst, Math.abs(((split.rgb()[i] >> shift) & 0xff) - ((whole.rgb()[i] >> shift) & 0xff)));
+                    }
+                }
+                assertTrue(worst <= 3, "the pictures differ by up to " + worst + " levels");
+            }
+            SkyPass.Shore first = sky.shore();
+            sky.setGround(first.level() - 1, new float[]{0.3f, 0.5f, 0.2f}, SurroundingsPass.FADE_START, SurroundingsPass.FADE_END);
+            assertEquals(first.level() - 1, sky.shore().level(), 1e-6, "a new ground, a new shore");
+            assertArrayEquals(first.courseRect(), sky.shore().courseRect());
+        }
+    }
+
+    private static Pixels draw(Offscreen off, SceneRenderer r, OrbitCamera cam, String name) {
+        off.bind();
+        r.render(cam, W, H, 0f);
+        assertEquals(0, org.lwjgl.opengl.GL11.glGetError(), name);
+        Path png = TestCourses.screenshotDir().resolve(name);
+        off.savePng(png);
+        return Pixels.read(png);
+    }
 }

@@ -75,11 +75,35 @@ class SceneryPlanTest {
         boolean top = false;
         for (double[] p : pts) top |= Math.abs(p[2] - 1) < 1e-9;
         assertTrue(top, "a vertex points straight up");
-        for (int[] f : Icosphere.faces()) {
+        // The plain icosahedron (the software tier's smallest lumps): 20 faces over the first 12 points, also outward.
+        assertEquals(20, Icosphere.plainFaces().length);
+        java.util.List<int[]> all = new java.util.ArrayList<>(java.util.Arrays.asList(Icosphere.faces()));
+        for (int[] f : Icosphere.plainFaces()) {
+            assertTrue(f[0] < 12 && f[1] < 12 && f[2] < 12, "a plain face uses the icosahedron's own points");
+            all.add(f);
+        }
+        for (int[] f : all) {
             double[] a = pts[f[0]], b = pts[f[1]], c = pts[f[2]];
             double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2], wx = c[0] - a[0], wy = c[1] - a[1], wz = c[2] - a[2];
             double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
             assertTrue(nx * (a[0] + b[0] + c[0]) + ny * (a[1] + b[1] + c[1]) + nz * (a[2] + b[2] + c[2]) > 0, "outward");
         }
+    }
+
+    /** The software tier's flowers: the heads from the plain icosahedron (a clump 260 triangles, not 800); the same clumps in the same places. */
+    @Test
+    void lightFlowersHaveAThirdOfTheTriangles() {
+        MeshWriter full = new MeshWriter(), light = new MeshWriter();
+        PropMeshes.flowers(full, 2, 3, 0.1, 42);
+        PropMeshes.flowers(light, 2, 3, 0.1, 42, true);
+        assertEquals(800, full.indexCount() / 3);
+        assertEquals(80 + 9 * 20, light.indexCount() / 3);
+        float[] a = full.box(0), b = light.box(0);
+        for (int k = 0; k < 6; k++) assertEquals(a[k], b[k], 0.02, "the clump's box, coordinate " + k);
+        List<SceneryPlan.Placed> plan = SceneryPlan.plan(Themes.MEADOWBROOK.scenery(), B, -3, 0, 3, 0, 0.5);
+        int flowers = (int) plan.stream().filter(p -> p.prop() == Theme.Prop.FLOWERS).count();
+        assertTrue(flowers > 0);
+        assertEquals(flowers * (800 - 260), SceneryMesh.build(plan, Themes.MEADOWBROOK, 0).triangleCount()
+                - SceneryMesh.build(plan, Themes.MEADOWBROOK, 0, true).triangleCount());
     }
 }
