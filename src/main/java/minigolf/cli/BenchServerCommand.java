@@ -63,6 +63,10 @@ final class BenchServerCommand implements Callable<Integer> {
     @Option(names = "--timeout", paramLabel = "SECONDS", description = "Give up after this long (default: ${DEFAULT-VALUE}).")
     double timeout = 1800;
 
+    @Option(names = "--strokes", paramLabel = "FILE", description = "Also write every timed stroke to FILE as CSV: player, "
+            + "event number, hole, when it was sent (s), its latency and its arrival at the room's other players (ms) (default: none).")
+    Path strokesFile;
+
     @Override
     public Integer call() throws Exception {
         if (rooms < 1 || rooms > 5000) throw new UserError("--rooms: must be 1 to 5000");
@@ -70,6 +74,11 @@ final class BenchServerCommand implements Callable<Integer> {
         if (!(think >= 0 && think <= 60)) throw new UserError("--think: must be 0 to 60 s");
         if (!(thinkSpread >= 0 && thinkSpread <= 1)) throw new UserError("--think-spread: must be 0 to 1");
         if (!serverHeap.matches("[0-9]+[mMgG]")) throw new UserError("--server-heap: a size such as 768m or 1g");
+        if (strokesFile != null) {
+            Path folder = strokesFile.toAbsolutePath().getParent();
+            if (folder == null || !Files.isDirectory(folder)) throw new UserError("--strokes: no folder " + folder);
+            if (Files.isDirectory(strokesFile)) throw new UserError("--strokes: " + strokesFile + " is a folder");
+        }
         Path scratch = Files.createTempDirectory("minigolf-bench-server");
         Path db = scratch.resolve("bench.db");
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
@@ -91,19 +100,24 @@ final class BenchServerCommand implements Callable<Integer> {
                         err.flush();
                     });
             for (String f : res.failures().subList(0, Math.min(20, res.failures().size()))) err.println("bench-server: " + f);
+            if (strokesFile != null) writeStrokes(strokesFile, res.strokes());
             double serverCpu = LoadBench.cpuSeconds(server.pid()) - cpuBefore;
             double rss = LoadBench.peakRssMb(server.pid());
             String loadAfter = loadAverage();
             server.destroy(); // SIGTERM: the server closes its database cleanly
             server.waitFor(30, TimeUnit.SECONDS);
             Check check = check(db, res.cards(), seats);
+            // The server's own report of strokes that went out a second or more after their shot arrived (where the time went).
+            List<String> slow = Files.readAllLines(scratch.resolve("server.err"), StandardCharsets.UTF_8).stream()
+                    .filter(l -> l.contains("went out")).toList();
+            for (String l : slow.subList(0, Math.min(20, slow.size()))) err.println("bench-server: " + l);
             ObjectNode out = minigolf.online.Json.object();
             out.put("players", res.players()).put("peakConnected", res.peakConnected()).put("rooms", rooms)
                     .put("roomsFinished", res.roomsFinished()).put("course", course).put("bot", bot).put("thinkSeconds", think).put("thinkSpread", thinkSpread).put("seed", seed)
                     .put("shots", res.shots()).put("seconds", Math.round(res.seconds() * 10) / 10.0)
                     .put("p50Ms", round(res.percentileMs(50))).put("p99Ms", round(res.percentileMs(99)))
                     .put("maxMs", round(res.percentileMs(100))).put("reconnects", res.reconnects()).put("serverPeakRssMb", Math.round(rss))
-                    .put("serverCpuSeconds", round(serverCpu)).put("storedStrokes", check.stored)
+                    .put("serverCpuSeconds", round(serverCpu)).put("serverSlowStrokes", slow.size()).put("storedStrokes", check.stored)
                     .put("lostOrDuplicated", check.problems.size()).put("loadAverageBefore", loadBefore)
                     .put("loadAverageAfter", loadAfter).put("cores", Runtime.getRuntime().availableProcessors());
             if (!res.failures().isEmpty()) out.put("failures", res.failures().size()).put("firstFailure", res.failures().get(0));
@@ -116,6 +130,12 @@ final class BenchServerCommand implements Callable<Integer> {
                 files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
             }
         }
+    }
+
+    private static void writeStrokes(Path file, List<LoadBench.StrokeTime> strokes) throws IOException {
+        StringBuilder b = new StringBuilder(LoadBench.StrokeTime.CSV_HEADER).append('\n');
+        for (LoadBench.StrokeTime t : strokes) b.append(t.csv()).append('\n');
+        minigolf.io.AtomicFile.write(file, b.toString().getBytes(StandardCharsets.UTF_8));
     }
 
     private record Check(int stored, List<String> problems) {

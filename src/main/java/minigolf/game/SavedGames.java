@@ -10,7 +10,6 @@ import java.util.ArrayList;
 import java.util.List;
 import minigolf.bot.NoiseModel;
 import minigolf.course.CourseException;
-import minigolf.course.CourseWriter;
 import minigolf.course.Limits;
 import minigolf.io.AtomicFile;
 import minigolf.physics.Integrator;
@@ -60,12 +59,21 @@ public final class SavedGames {
     }
 
     public static String toJson(Game game) {
+        try {
+            return JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(tree(game)) + "\n";
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot write JSON", e);
+        }
+    }
+
+    /** The save of {@code game} as a JSON tree (a saved round embeds it as its current hole). */
+    static ObjectNode tree(Game game) {
         GameState s = game.state();
         ObjectNode root = JsonFields.MAPPER.createObjectNode();
         root.put("format", FORMAT);
         root.put("kind", KIND);
         try {
-            root.set("course", JsonFields.MAPPER.readTree(CourseWriter.toJson(game.world().course())));
+            root.set("course", CourseTrees.of(game.world()));
         } catch (IOException e) {
             throw new IllegalStateException("the course writer produced invalid JSON", e);
         }
@@ -102,11 +110,7 @@ public final class SavedGames {
             noise.put("velocity", s.noise().velocity());
             noise.put("seed", s.noiseSeed());
         }
-        try {
-            return JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";
-        } catch (IOException e) {
-            throw new IllegalStateException("cannot write JSON", e);
-        }
+        return root;
     }
 
     /** A putt is written [vx, vy], as before chips (older versions read it); a chip [vx, vy, vz]. */

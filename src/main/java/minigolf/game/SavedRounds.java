@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import minigolf.course.CourseException;
-import minigolf.course.CourseWriter;
 import minigolf.io.AtomicFile;
 import minigolf.physics.World;
 
@@ -75,7 +74,7 @@ public final class SavedRounds {
                 ObjectNode o = holes.addObject();
                 o.put("course", h.course());
                 o.put("par", h.par());
-                o.set("definition", JsonFields.MAPPER.readTree(CourseWriter.toJson(h.world().course())));
+                o.set("definition", CourseTrees.of(h.world()));
             }
             ArrayNode scores = root.putArray("scores");
             for (int[] row : rg.finishedScores()) {
@@ -85,7 +84,7 @@ public final class SavedRounds {
             // Every finished hole's strokes, so that any hole of a saved round can be watched again.
             ArrayNode strokes = root.putArray("strokes");
             for (int h = 0; h < rg.holesFinished(); h++) SavedGames.writeHistory(strokes.addArray(), rg.holeStrokes(h));
-            root.set("hole", JsonFields.MAPPER.readTree(SavedGames.toJson(rg.game())));
+            root.set("hole", SavedGames.tree(rg.game()));
             return JsonFields.MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n";
         } catch (IOException e) {
             throw new IllegalStateException("cannot write JSON", e);

@@ -80,6 +80,8 @@ class OnlinePlayTest {
             bob.send(new ClientMessage.Leave());
             until(ann, () -> ann.chat().stream().anyMatch(l -> l.equals("Bob left the game")), "the leave said");
             assertTrue(said.contains("Bob left the game"), said.toString());
+            // The server sends the seats after the notice: under load they may come a moment later.
+            until(ann, () -> ann.mirror().seats().size() > 1 && ann.mirror().seats().get(1).gone(), "Bob's seat marked gone");
             assertNotNull(ann.mirror().seats().get(1));
             assertTrue(ann.mirror().seats().get(1).gone());
             bob.close();

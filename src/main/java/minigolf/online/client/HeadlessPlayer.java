@@ -80,9 +80,11 @@ public final class HeadlessPlayer {
 
     /** Hooks for the benchmark: a shot sent (with the room's event count) and its stroke received. */
     public interface Timing {
-        void shotSent(long seq, long nanos);
+        /** This player's shot for seat {@code seat} left at {@code nanos}, the room being at event {@code seq}. */
+        void shotSent(long seq, int seat, long nanos);
 
-        void strokeReceived(long seq, int seat, long nanos);
+        /** The stroke numbered {@code seq} (seat, hole counted from 0) arrived at {@code nanos}. */
+        void strokeReceived(long seq, int seat, int hole, long nanos);
 
         /** The player holds its seat now (its connection is open). */
         default void seated() {
@@ -105,6 +107,10 @@ public final class HeadlessPlayer {
     /** The seat came from the seat file: the room's code was printed by the run that created it. */
     private boolean resumed;
     private long shotAt = -1;
+    /** After a refusal, the shot is sent again no sooner than this (System.nanoTime). */
+    private long retryAt = Long.MIN_VALUE;
+    /** How long after a refusal the player tries its shot again (the server's rate limit refills meanwhile). */
+    static final long RETRY_NANOS = 1_000_000_000L;
 
     public HeadlessPlayer(Options options, Consumer<String> out, Consumer<String> log, Timing timing) {
         this.options = options;
@@ -159,11 +165,12 @@ public final class HeadlessPlayer {
                     thinkingAt = mirror.seq();
                     thinkUntil = now + thinkNanos();
                 }
-                if (now >= thinkUntil) {
+                long shootAt = Math.max(thinkUntil, retryAt);
+                if (now - shootAt >= 0) {
                     shoot();
                     continue;
                 }
-                waitMillis = Math.max(1, (thinkUntil - now) / 1_000_000);
+                waitMillis = Math.max(1, (shootAt - now) / 1_000_000);
             }
             Object item = inbox.poll(waitMillis, TimeUnit.MILLISECONDS);
             if (item == null) {
@@ -179,9 +186,11 @@ public final class HeadlessPlayer {
             Arrived a = (Arrived) item;
             ObjectNode m = a.message();
             RoomMirror.Update u = mirror.apply(m, a.nanos() / 1_000_000);
-            recent.add(m.path("type").asText() + (u.change() == RoomMirror.Change.OUT_OF_STEP || u.change() == RoomMirror.Change.ERROR
-                    ? "(" + u.code() + ": " + u.text() + ")" : "") + "@" + mirror.seq());
-            while (recent.size() > 8) recent.remove(0);
+            if (!"pong".equals(m.path("type").asText())) { // an idle player's pongs would push out what matters
+                recent.add(m.path("type").asText() + (u.change() == RoomMirror.Change.OUT_OF_STEP || u.change() == RoomMirror.Change.ERROR
+                        ? "(" + u.code() + ": " + u.text() + ")" : "") + "@" + mirror.seq());
+                while (recent.size() > 8) recent.remove(0);
+            }
             switch (u.change()) {
                 case JOINED -> {
                     joined();
@@ -190,7 +199,7 @@ public final class HeadlessPlayer {
                 case ERROR -> error(u);
                 case OUT_OF_STEP -> client.send(new ClientMessage.Sync());
                 case EVENT -> {
-                    if (timing != null) timing.strokeReceived(u.event().seq(), u.event().seat(), a.nanos());
+                    if (timing != null) timing.strokeReceived(u.event().seq(), u.event().seat(), u.event().hole(), a.nanos());
                 }
                 case NOTICE, CHAT -> log.accept(u.text());
                 default -> {
@@ -215,6 +224,13 @@ public final class HeadlessPlayer {
     }
 
     private void error(RoomMirror.Update u) throws Failure {
+        // An error while this seat's shot is unanswered may be its refusal (rate-limited, stale, ...): the player tries
+        // again a little later, unless the stroke comes meanwhile. Without this a refused shot left the seat waiting
+        // forever, and with it its whole room. The server checks the event count, so no stroke is played twice.
+        if (shotAt >= 0 && shotAt == mirror.seq()) {
+            shotAt = -1;
+            retryAt = System.nanoTime() + RETRY_NANOS;
+        }
         switch (u.code()) {
             case "stale" -> client.send(new ClientMessage.Sync());
             case "not-your-turn", "rate-limited", "not-playing" -> log.accept("server: " + u.text());
@@ -237,7 +253,7 @@ public final class HeadlessPlayer {
         double speed = Math.sqrt(ground * ground + v[2] * v[2]);
         double loft = Math.min(Loft.MAX_DEGREES, Loft.degreesOf(v[0], v[1], v[2]));
         double ax = ground > 0 ? v[0] / ground * speed : 0, ay = ground > 0 ? v[1] / ground * speed : speed;
-        if (timing != null) timing.shotSent(mirror.seq(), System.nanoTime());
+        if (timing != null) timing.shotSent(mirror.seq(), seat, System.nanoTime());
         client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, v[3]));
     }
 

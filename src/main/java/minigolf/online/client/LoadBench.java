@@ -23,13 +23,32 @@ import minigolf.online.Json;
 public final class LoadBench {
     /** The measured figures. */
     public record Result(int players, int peakConnected, int roomsFinished, long shots, long[] latencyNanos,
-                         List<String> failures, Map<String, JsonNode> cards, double seconds, int reconnects) {
+                         List<String> failures, Map<String, JsonNode> cards, double seconds, int reconnects,
+                         List<StrokeTime> strokes) {
         public double percentileMs(double p) {
             if (latencyNanos.length == 0) return Double.NaN;
             long[] sorted = latencyNanos.clone();
             Arrays.sort(sorted);
             int i = (int) Math.ceil(p / 100 * sorted.length) - 1;
             return sorted[Math.max(0, Math.min(sorted.length - 1, i))] / 1e6;
+        }
+    }
+
+    /**
+     * One timed stroke: the player ({@code P<room>-<seat>}), the room's event number and hole (from 0),
+     * when the shot was sent (seconds since the benchmark began), its latency, and when the same
+     * event arrived at the room's other players (the earliest and the latest, ms after the shot was
+     * sent; NaN with one seat). A delay before the server broadcast reaches every seat of the room;
+     * one that only the shooter sees is its own connection's.
+     */
+    public record StrokeTime(String player, long seq, int hole, double sentSeconds, double latencyMs,
+                             double othersFirstMs, double othersLastMs) {
+        /** The CSV header of {@link #csv()}. */
+        public static final String CSV_HEADER = "player,seq,hole,sentSeconds,latencyMs,othersFirstMs,othersLastMs";
+
+        public String csv() {
+            return String.format(java.util.Locale.ROOT, "%s,%d,%d,%.3f,%.3f,%.3f,%.3f", player, seq, hole,
+                    sentSeconds, latencyMs, othersFirstMs, othersLastMs);
         }
     }
 
@@ -56,6 +75,7 @@ public final class LoadBench {
         Map<String, JsonNode> cards = new ConcurrentHashMap<>();
         List<long[]> latencies = java.util.Collections.synchronizedList(new ArrayList<>());
         Map<String, HeadlessPlayer> playing = new ConcurrentHashMap<>();
+        Map<String, Timer> timers = new ConcurrentHashMap<>();
         AtomicInteger connected = new AtomicInteger(), peak = new AtomicInteger(), reconnects = new AtomicInteger();
         CountDownLatch done = new CountDownLatch(rooms * seats);
         // Every room's last player waits until all the others are connected and seated: then every round starts at
@@ -74,6 +94,7 @@ public final class LoadBench {
                         peak.accumulateAndGet(connected.incrementAndGet(), Math::max);
                         if (seat < seats - 1) others.countDown();
                     });
+                    timers.put(name, timer);
                     try {
                         if (seat > 0 && !code.await(120, TimeUnit.SECONDS)) throw new IllegalStateException("no room code");
                         HeadlessPlayer.Options o = new HeadlessPlayer.Options(server, seat == 0 ? course : null, seats, List.of(),
@@ -134,7 +155,33 @@ public final class LoadBench {
         }
         int finished = (int) cards.keySet().stream().map(c -> c.substring(0, c.indexOf('/'))).distinct().count();
         return new Result(rooms * seats, peak.get(), finished, k, Arrays.copyOf(all, k), List.copyOf(failures), cards, seconds,
-                reconnects.get());
+                reconnects.get(), strokeTimes(timers, rooms, seats, start));
+    }
+
+    /** Every timed stroke, with its event's arrival at the room's other players; in the order the shots were sent. */
+    private static List<StrokeTime> strokeTimes(Map<String, Timer> timers, int rooms, int seats, long start) {
+        List<StrokeTime> out = new ArrayList<>();
+        for (int r = 0; r < rooms; r++) {
+            for (int s = 0; s < seats; s++) {
+                Timer t = timers.get("P" + r + "-" + s);
+                if (t == null) continue;
+                for (long[] st : t.strokes()) {
+                    long seq = st[0], sent = st[2];
+                    double first = Double.NaN, last = Double.NaN;
+                    for (int o = 0; o < seats; o++) {
+                        Timer other = o == s ? null : timers.get("P" + r + "-" + o);
+                        long at = other == null ? Timer.NONE : other.arrival(seq);
+                        if (at == Timer.NONE) continue;
+                        double ms = (at - sent) / 1e6;
+                        first = Double.isNaN(first) ? ms : Math.min(first, ms);
+                        last = Double.isNaN(last) ? ms : Math.max(last, ms);
+                    }
+                    out.add(new StrokeTime("P" + r + "-" + s, seq, (int) st[1], (sent - start) / 1e9, st[3] / 1e6, first, last));
+                }
+            }
+        }
+        out.sort(java.util.Comparator.comparingDouble(StrokeTime::sentSeconds));
+        return out;
     }
 
     private static ObjectNode parse(String line) {
@@ -145,11 +192,14 @@ public final class LoadBench {
         }
     }
 
-    /** One player's shot timings: sent at seq n, received as event n + 1 of the same seat. */
+    /** One player's shot timings: sent at seq n, received as event n + 1 of the same seat; and when each event arrived. */
     private static final class Timer implements HeadlessPlayer.Timing {
         private final Runnable onSeated;
         private boolean seated;
+        /** No arrival recorded (System.nanoTime may be negative, so not -1). */
+        static final long NONE = Long.MIN_VALUE;
         private long sentSeq = -1, sentAt;
+        private int sentSeat = -1;
 
         Timer(Runnable onSeated) {
             this.onSeated = onSeated;
@@ -168,22 +218,52 @@ public final class LoadBench {
         private int n;
 
         @Override
-        public synchronized void shotSent(long seq, long nanos) {
+        public synchronized void shotSent(long seq, int seat, long nanos) {
             sentSeq = seq;
+            sentSeat = seat;
             sentAt = nanos;
         }
 
+        /** Every timed stroke: {seq, hole, sent at, latency}. */
+        private final List<long[]> strokes = new ArrayList<>();
+        /** When each event (by its number) arrived at this player; -1 where none did. */
+        private long[] arrivals = none(64);
+
         @Override
-        public synchronized void strokeReceived(long seq, int seat, long nanos) {
-            if (sentSeq >= 0 && seq == sentSeq + 1) {
+        public synchronized void strokeReceived(long seq, int seat, int hole, long nanos) {
+            if (seq >= 0 && seq < 1_000_000) {
+                if (seq >= arrivals.length) {
+                    int old = arrivals.length;
+                    arrivals = Arrays.copyOf(arrivals, (int) Math.max(seq + 1, 2L * old));
+                    Arrays.fill(arrivals, old, arrivals.length, NONE);
+                }
+                if (arrivals[(int) seq] == NONE) arrivals[(int) seq] = nanos;
+            }
+            if (sentSeq >= 0 && seq == sentSeq + 1 && seat == sentSeat) {
                 if (n == lat.length) lat = Arrays.copyOf(lat, n * 2);
                 lat[n++] = nanos - sentAt;
+                strokes.add(new long[]{seq, hole, sentAt, nanos - sentAt});
                 sentSeq = -1;
             }
         }
 
         synchronized long[] latencies() {
             return Arrays.copyOf(lat, n);
+        }
+
+        synchronized List<long[]> strokes() {
+            return List.copyOf(strokes);
+        }
+
+        /** When event {@code seq} arrived, or {@link #NONE}. */
+        synchronized long arrival(long seq) {
+            return seq >= 0 && seq < arrivals.length ? arrivals[(int) seq] : NONE;
+        }
+
+        private static long[] none(int n) {
+            long[] a = new long[n];
+            Arrays.fill(a, NONE);
+            return a;
         }
     }
 

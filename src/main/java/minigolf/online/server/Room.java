@@ -126,11 +126,12 @@ final class Room {
     }
 
     void message(Client c, int seat, ClientMessage m) {
+        long arrived = System.nanoTime();
         actor.execute(() -> {
             if (seat < 0 || seat >= seats.length || seats[seat].client != c) {
                 c.send(messages.error("not-seated", "this connection holds no seat in room " + code));
             } else if (m instanceof ClientMessage.Shot shot) {
-                doShot(c, seat, shot);
+                doShot(c, seat, shot, new StrokeTimes(arrived, System.nanoTime()));
             } else if (m instanceof ClientMessage.Chat chat) {
                 broadcast(messages.chat(seat, chat.text()));
             } else if (m instanceof ClientMessage.Leave) {
@@ -273,7 +274,17 @@ final class Room {
         seatsChanged();
     }
 
-    private void doShot(Client c, int seat, ClientMessage.Shot m) {
+    /**
+     * When a player's shot reached the server and when the room's thread took it up (System.nanoTime);
+     * a stroke that goes out {@link #SLOW_STROKE_MS} or more after its shot arrived is reported on the
+     * server's log with where the time went (docs/online.md, "Benchmarks").
+     */
+    record StrokeTimes(long arrived, long taken) {
+    }
+
+    static final long SLOW_STROKE_MS = 1000;
+
+    private void doShot(Client c, int seat, ClientMessage.Shot m, StrokeTimes times) {
         if (status != Status.PLAYING) {
             c.send(messages.error("not-playing", status == Status.LOBBY ? "the round has not started" : "the round is over"));
             return;
@@ -294,7 +305,7 @@ final class Room {
                     "velocity: %.3f m/s is faster than the course's maxSpeed of %s m/s", speed, max)));
             return;
         }
-        playStroke(seat, Loft.velocity(m.vx(), m.vy(), m.loft(), max), m.waitSeconds());
+        playStroke(seat, Loft.velocity(m.vx(), m.vy(), m.loft(), max), m.waitSeconds(), times);
     }
 
     /**
@@ -302,13 +313,16 @@ final class Room {
      * its wait (where obstacles move it matters: docs/course-format.md, "Moving obstacles"). The
      * server's clock alone decides the moment: a client only says how long to wait.
      */
-    private void playStroke(int seat, double[] v, double waitSeconds) {
+    private void playStroke(int seat, double[] v, double waitSeconds, StrokeTimes times) {
         long startMs = clock.strokeStart(svc.now(), waitSeconds);
-        playStrokeAt(seat, v, waitSeconds, clock.at(startMs), startMs);
+        playStrokeAt(seat, v, waitSeconds, clock.at(startMs), startMs, times);
     }
 
-    /** Plays a stroke hit at course clock {@code at}, the moment {@code startMs} of the room's clock. */
-    private void playStrokeAt(int seat, double[] v, double waitSeconds, double at, long startMs) {
+    /**
+     * Plays a stroke hit at course clock {@code at}, the moment {@code startMs} of the room's clock;
+     * {@code times} of a player's shot (null for a bot's).
+     */
+    private void playStrokeAt(int seat, double[] v, double waitSeconds, double at, long startMs, StrokeTimes times) {
         Game g = round.game();
         int hole = round.holeIndex();
         int finishedBefore = round.holesFinished();
@@ -324,7 +338,8 @@ final class Room {
         seq++;
         quietAtMs = startMs + (long) (1000 * Math.min(MAX_ROLL_WAIT, rollSeconds));
         double after = g.clock();
-        recordEvent(new RoomEvent(seq, hole, seat, record, g.player(seat), waitSeconds, after), finishedBefore);
+        recordEvent(new RoomEvent(seq, hole, seat, record, g.player(seat), waitSeconds, after), finishedBefore, times,
+                System.nanoTime());
         clock = RoomClock.afterStroke(record.clock(), after, startMs, round.holesFinished() > finishedBefore);
     }
 
@@ -335,12 +350,15 @@ final class Room {
         g.pickUp(seat);
         seq++;
         broadcast(messages.notice(seats[seat].name + " picks up on hole " + (hole + 1) + " (away)"));
-        recordEvent(new RoomEvent(seq, hole, seat, null, g.player(seat), 0), finishedBefore);
+        recordEvent(new RoomEvent(seq, hole, seat, null, g.player(seat), 0), finishedBefore, null, 0);
         clock = clock.afterPickUp(svc.now(), round.holesFinished() > finishedBefore);
     }
 
-    /** Stores the event (with any scores it completes) and tells every client once it is stored. */
-    private void recordEvent(RoomEvent event, int finishedBefore) {
+    /**
+     * Stores the event (with any scores it completes) and tells every client once it is stored;
+     * {@code times} of a player's shot and when it was simulated, for the slow-stroke report.
+     */
+    private void recordEvent(RoomEvent event, int finishedBefore, StrokeTimes times, long simulated) {
         RoundSync.advance(round);
         if (round.isOver()) status = Status.FINISHED;
         List<Score> scores = scoresSince(finishedBefore);
@@ -353,10 +371,19 @@ final class Room {
                         broadcast(messages.notice("the server could not store this stroke"));
                     }
                     broadcast(json);
+                    if (times != null) reportIfSlow(event.seq(), times, simulated, System.nanoTime());
                     if (status == Status.FINISHED) broadcast(messages.snapshot());
                     refreshView();
                     updateTurn();
                 }));
+    }
+
+    private void reportIfSlow(long seq, StrokeTimes t, long simulated, long sent) {
+        long ms = (sent - t.arrived()) / 1_000_000;
+        if (ms < SLOW_STROKE_MS) return;
+        svc.log(String.format(java.util.Locale.ROOT, "room %s: stroke %d went out %d ms after its shot arrived "
+                        + "(%d ms waiting for the room's thread, %d ms simulating, %d ms storing and sending)", code, seq, ms,
+                (t.taken() - t.arrived()) / 1_000_000, (simulated - t.taken()) / 1_000_000, (sent - simulated) / 1_000_000));
     }
 
     /** The leaderboard entries of the holes finished since {@code finishedBefore}, and of the round once over. */
@@ -504,10 +531,10 @@ final class Room {
                 Runnable hit;
                 long delay;
                 if (!moving || attempt + 1 >= BOT_PLAN_TRIES) {
-                    hit = () -> playStroke(seat, v, 0);
+                    hit = () -> playStroke(seat, v, 0, null);
                     delay = Math.max(0, quietAtMs - now);
                 } else if (target >= c.base() && hitMs >= now) {
-                    hit = () -> playStrokeAt(seat, v, 0, target, hitMs);
+                    hit = () -> playStrokeAt(seat, v, 0, target, hitMs, null);
                     delay = hitMs - now;
                 } else {
                     planBot(seat, at, attempt + 1);

@@ -20,8 +20,9 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The fault tests of docs/online.md: the server killed with kill -9 in the middle of a round and
  * started again on its database; a headless client killed in the middle of its round and started
- * again on its seat file. Each ends with every score intact: the stored events are exactly the
- * strokes the players saw, each once.
+ * again on its seat file; a client dropped between sending its shot and reading the outcome, beside
+ * another room. Each ends with every score intact: the stored events are exactly the strokes the
+ * players saw, each once.
  */
 class FaultTest {
     @TempDir
@@ -140,6 +141,62 @@ class FaultTest {
                 }
             }
         }
+    }
+
+    @Test
+    void aClientDroppedMidStrokeResumesWithItsStrokeCountedOnceWhileAnotherRoomPlaysOn() throws Exception {
+        try (GameServer server = TestServers.start(TestServers.options(dir.resolve("s.db").toString()), new StringWriter());
+             TestClient ann = TestClient.to(server); TestClient bob = TestClient.to(server);
+             TestClient carol = TestClient.to(server); TestClient dan = TestClient.to(server)) {
+            String code = open(ann, bob), other = open(carol, dan);
+            String bobsToken = bob.mirror.token();
+            ann.putt(0.5, 0); // short: Bob, farther, plays next
+            carol.putt(0.5, 0);
+            bob.awaitMyTurn();
+            long before = bob.mirror.seq();
+            bob.send(new ClientMessage.Shot(before, 0.7, 0.1, 0, 0));
+            // Bob's program dies between sending the shot and reading its outcome: the server has played and stored
+            // it, Bob never takes the stroke in.
+            while (server.store().events(code).size() < before + 1) Thread.sleep(2);
+            bob.socket.abort();
+            dan.putt(0.7, 0.1); // the other room plays on meanwhile
+            try (TestClient back = TestClient.to(server)) {
+                back.send(new ClientMessage.Resume(code, bobsToken));
+                back.await("room");
+                assertEquals(before + 1, back.mirror.seq(), "Bob's stroke was played, once");
+                assertEquals(1, back.mirror.round().game().player(1).total());
+                // Sent again after the crash (a client that did not see its outcome), the shot is stale: nothing twice.
+                back.send(new ClientMessage.Shot(before, 0.7, 0.1, 0, 0));
+                assertEquals("stale", back.await("error").get("code").asText());
+                ann.awaitState(() -> ann.mirror.seq() == before + 1, "Bob's stroke at Ann");
+                assertEquals(minigolf.game.SavedRounds.toJson(ann.mirror.round()), minigolf.game.SavedRounds.toJson(back.mirror.round()),
+                        "Ann and the resumed Bob hold the same round");
+                // The round goes on: the next stroke is numbered on from Bob's.
+                TestClient next = TestClient.whoseTurn(ann, back);
+                assertEquals(before + 2, next.putt(0.6, 0).get("seq").asLong());
+            }
+            assertEquals(List.of(1L, 2L, 3L), seqs(server, code));
+            assertEquals(List.of(1L, 2L), seqs(server, other), "the other room's strokes, each once");
+            carol.awaitState(() -> carol.mirror.seq() == 2, "Dan's stroke at Carol");
+            assertEquals(minigolf.game.SavedRounds.toJson(carol.mirror.round()), minigolf.game.SavedRounds.toJson(dan.mirror.round()));
+        }
+    }
+
+    /** A two-seat room on Flat, started (Ann-style creator, then the joiner). */
+    private static String open(TestClient host, TestClient guest) throws InterruptedException {
+        host.send(new ClientMessage.Create("Host", "flat", 2, List.of(), true, 10));
+        String code = host.await("joined").get("room").asText();
+        guest.send(new ClientMessage.Join(code, "Guest"));
+        guest.await("joined");
+        host.awaitState(() -> "playing".equals(host.mirror.status()), "the start");
+        guest.awaitState(() -> "playing".equals(guest.mirror.status()), "the start");
+        return code;
+    }
+
+    private static List<Long> seqs(GameServer server, String code) throws Exception {
+        List<Long> out = new ArrayList<>();
+        for (String e : server.store().events(code)) out.add(RoomEvent.parse(Json.parse(e), 2).seq());
+        return out;
     }
 
     private static int strokes(RoomView v) {
