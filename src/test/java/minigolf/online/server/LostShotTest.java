@@ -1,7 +1,6 @@
 package minigolf.online.server;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -11,12 +10,9 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
 import minigolf.online.Json;
 import minigolf.online.ProtocolException;
-import minigolf.online.RoomEvent;
 import minigolf.online.client.HeadlessPlayer;
 import minigolf.online.client.OnlineClient;
 import org.junit.jupiter.api.Test;
@@ -43,29 +39,12 @@ class LostShotTest {
             HeadlessPlayer player = new HeadlessPlayer(new HeadlessPlayer.Options(OnlineClient.uri("127.0.0.1:" + proxy.port()),
                     "flat", 1, List.of(), false, null, "Ann", "straight", null, 0), out::add, said::add, null)
                     .resendAfter(Duration.ofSeconds(2));
-            AtomicReference<Throwable> failed = new AtomicReference<>();
-            Thread t = new Thread(() -> {
-                try {
-                    player.run();
-                } catch (Exception | Error e) {
-                    failed.set(e);
-                }
-            }, "lost-shot-player");
-            t.setDaemon(true);
-            t.start();
-            t.join(TimeUnit.SECONDS.toMillis(60));
-            assertFalse(t.isAlive(), "the player is still waiting: " + player.recentMessages() + "; said " + said);
-            assertEquals(null, failed.get());
+            JsonNode card = HeadlessRuns.playToTheEnd(player, out, said);
             assertEquals(1, proxy.lost(), "the first shot was lost on the way");
             assertTrue(shots.get() >= 2, "shots sent: " + shots.get());
             assertTrue(said.stream().anyMatch(l -> l.equals("no answer to the shot at event 0 for 2 s; sending it again")),
                     "said: " + said);
-            JsonNode card = Json.parse(out.get(out.size() - 1));
-            int strokes = card.get("players").get(0).get("total").asInt();
-            String code = card.get("room").asText();
-            List<String> events = server.store().events(code);
-            assertEquals(strokes, events.size(), "stored strokes against the card");
-            for (int i = 0; i < events.size(); i++) assertEquals(i + 1, RoomEvent.parse(Json.parse(events.get(i)), 1).seq());
+            HeadlessRuns.assertEveryStrokeStoredOnce(server, card);
         }
     }
 
