@@ -184,4 +184,39 @@ class CollisionSceneTest {
         }
         assertTrue(contacts > 2_000, contacts + " contacts");
     }
+
+    /**
+     * anyShapeNearPath may only say "no" where no sweep along a path within its margin of the
+     * segment touches anything: random chords among walls, trunks and turned boxes, each swept
+     * moved sideways by up to the margin; and it says "no" where the rectangle test says "yes"
+     * for many diagonal paths (what it is for).
+     */
+    @Test
+    void anyShapeNearPathNeverHidesAContactAndIsTighterThanTheRectangle() {
+        CollisionScene scene = scene(unitBox(30),
+                new Obstacle.Tree(new Vec2(3, 2), 0.15, 1, 0.7),
+                new Obstacle.Wall(new Vec2(-6, -4), new Vec2(-2, -5), 0.05, 0.3, 0.7),
+                new Obstacle.Box(new Vec3(4, -5, -1), new Vec3(4.5, -3, 0.5), 70, 0.7));
+        java.util.Random random = new java.util.Random(8);
+        Hit hit = new Hit();
+        double[] scratch = new double[3];
+        int hits = 0, tighter = 0;
+        for (int k = 0; k < 50_000; k++) {
+            double x0 = -8 + 16 * random.nextDouble(), y0 = -8 + 16 * random.nextDouble();
+            double x1 = x0 + random.nextGaussian() * 0.4, y1 = y0 + random.nextGaussian() * 0.4;
+            double margin = 0.05 * random.nextDouble();
+            boolean near = scene.anyShapeNearPath(x0, y0, x1, y1, margin);
+            double length = Math.hypot(x1 - x0, y1 - y0), side = margin * (2 * random.nextDouble() - 1);
+            double ox = length > 0 ? -(y1 - y0) / length * side : side, oy = length > 0 ? (x1 - x0) / length * side : 0;
+            if (scene.sweep(x0 + ox, y0 + oy, 0.1, x1 + ox, y1 + oy, 0.1, hit, scratch)) {
+                hits++;
+                assertTrue(near, "a hit from (" + x0 + ", " + y0 + ") to (" + x1 + ", " + y1 + "), margin " + margin);
+            }
+            if (!near && scene.anyShapeNear(Math.min(x0, x1) - margin, Math.min(y0, y1) - margin,
+                    Math.max(x0, x1) + margin, Math.max(y0, y1) + margin)) {
+                tighter++;
+            }
+        }
+        assertTrue(hits > 500 && tighter > 100, hits + " hits, " + tighter + " paths clear that the rectangle would not clear");
+    }
 }
