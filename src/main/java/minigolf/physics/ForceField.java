@@ -123,22 +123,6 @@ public final class ForceField {
         out[1] = py;
     }
 
-    /** Whether the push is the same at both points (no push zone's edge that matters lies between). */
-    public boolean samePush(double x0, double y0, double x1, double y1) {
-        double ax = 0, ay = 0, bx = 0, by = 0;
-        for (int k = 0; k < pushShapes.length; k++) {
-            if (inZone(k, x0, y0)) {
-                ax += pushX[k];
-                ay += pushY[k];
-            }
-            if (inZone(k, x1, y1)) {
-                bx += pushX[k];
-                by += pushY[k];
-            }
-        }
-        return ax == bx && ay == by;
-    }
-
     /** Whether push zone k holds the point: Shape.Rect's own test, on the stored box, for a rectangle. */
     private boolean inZone(int k, double x, double y) {
         if (!pushRect[k]) return pushShapes[k].contains(x, y);
