@@ -291,25 +291,8 @@ public final class CollisionScene {
      */
     public boolean anyShapeNear(double minX, double minY, double maxX, double maxY) {
         double r = radius;
-        int i0 = column(minX), i1 = column(maxX), j0 = row(minY), j1 = row(maxY);
-        double x0 = minX - r, x1 = maxX + r, y0 = minY - r, y1 = maxY + r;
-        float[] runBox = runBoxes;
-        for (int j = j0; j <= j1; j++) {
-            for (int i = i0; i <= i1; i++) {
-                int c = j * columns + i;
-                for (int q = cellRuns[c], last = cellRuns[c + 1]; q < last; q++) {
-                    int rb = 6 * q;
-                    if (runBox[rb] > x1 || runBox[rb + 3] < x0 || runBox[rb + 1] > y1 || runBox[rb + 4] < y0) continue;
-                    for (int k = runStart[q], end = runStart[q + 1]; k < end; k++) {
-                        int b = 6 * cellItems[k];
-                        if (boxes[b] <= x1 && boxes[b + 3] >= x0 && boxes[b + 1] <= y1 && boxes[b + 4] >= y0) {
-                            return true;
-                        }
-                    }
-                }
-            }
-        }
-        return false;
+        return listedShapeNear(column(minX), column(maxX), row(minY), row(maxY), minX - r, minY - r, maxX + r, maxY + r,
+                false, 0, 0, 0, 0, 0);
     }
 
     /**
@@ -325,11 +308,21 @@ public final class CollisionScene {
         double reach = margin + radius + 1e-9;
         double loX = Math.min(x0, x1) - reach, hiX = Math.max(x0, x1) + reach;
         double loY = Math.min(y0, y1) - reach, hiY = Math.max(y0, y1) + reach;
-        // The box round the segment: centre, unit axes u (along) and w (across), half-lengths.
+        return listedShapeNear(column(loX + radius), column(hiX - radius), row(loY + radius), row(hiY - radius), loX, loY, hiX, hiY,
+                true, x0, y0, x1, y1, reach);
+    }
+
+    /**
+     * Whether a shape listed in the cells [i0, i1] x [j0, j1] has its box in the rectangle
+     * [loX, hiX] x [loY, hiY] and, with {@code outlines}, its outline within reach of the segment
+     * from (x0, y0) to (x1, y1).
+     */
+    private boolean listedShapeNear(int i0, int i1, int j0, int j1, double loX, double loY, double hiX, double hiY,
+                            boolean outlines, double x0, double y0, double x1, double y1, double reach) {
+        // The box round the segment: centre, unit axis u (along), half-length along it.
         double dx = x1 - x0, dy = y1 - y0, length = Math.sqrt(dx * dx + dy * dy);
         double ux = length > 0 ? dx / length : 1, uy = length > 0 ? dy / length : 0;
         double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1), along = 0.5 * length + reach;
-        int i0 = column(loX + radius), i1 = column(hiX - radius), j0 = row(loY + radius), j1 = row(hiY - radius);
         float[] runBox = runBoxes;
         for (int j = j0; j <= j1; j++) {
             for (int i = i0; i <= i1; i++) {
@@ -341,8 +334,8 @@ public final class CollisionScene {
                         int s = cellItems[k];
                         int b = 6 * s;
                         if (boxes[b] > hiX || boxes[b + 3] < loX || boxes[b + 1] > hiY || boxes[b + 4] < loY) continue;
-                        if (s < triangleCount ? outlineNear(12 * s, mx, my, ux, uy, along, reach)
-                                : circleNear(5 * (s - triangleCount), x0, y0, dx, dy, reach)) {
+                        if (!outlines || (s < triangleCount ? outlineNear(12 * s, mx, my, ux, uy, along, reach)
+                                : circleNear(5 * (s - triangleCount), x0, y0, dx, dy, reach))) {
                             return true;
                         }
                     }

@@ -21,6 +21,14 @@ class CollisionSceneTest {
         return CollisionScene.build(List.of(obstacles), (x, y) -> 0, BOUNDS, R);
     }
 
+    /** A turned box, a trunk, a wall and a turned, sunken box. */
+    private static CollisionScene mixedScene() {
+        return scene(unitBox(30),
+                new Obstacle.Tree(new Vec2(3, 2), 0.15, 1, 0.7),
+                new Obstacle.Wall(new Vec2(-6, -4), new Vec2(-2, -5), 0.05, 0.3, 0.7),
+                new Obstacle.Box(new Vec3(4, -5, -1), new Vec3(4.5, -3, 0.5), 70, 0.7));
+    }
+
     private static Obstacle.Box unitBox(double rotation) {
         return new Obstacle.Box(new Vec3(-0.5, -0.5, 0), new Vec3(0.5, 0.5, 1), rotation, 0.7);
     }
@@ -116,10 +124,7 @@ class CollisionSceneTest {
      */
     @Test
     void anyShapeNearNeverHidesAContact() {
-        CollisionScene scene = scene(unitBox(30),
-                new Obstacle.Tree(new Vec2(3, 2), 0.15, 1, 0.7),
-                new Obstacle.Wall(new Vec2(-6, -4), new Vec2(-2, -5), 0.05, 0.3, 0.7),
-                new Obstacle.Box(new Vec3(4, -5, -1), new Vec3(4.5, -3, 0.5), 70, 0.7));
+        CollisionScene scene = mixedScene();
         java.util.Random random = new java.util.Random(3);
         Hit hit = new Hit();
         double[] scratch = new double[3];
@@ -193,10 +198,7 @@ class CollisionSceneTest {
      */
     @Test
     void anyShapeNearPathNeverHidesAContactAndIsTighterThanTheRectangle() {
-        CollisionScene scene = scene(unitBox(30),
-                new Obstacle.Tree(new Vec2(3, 2), 0.15, 1, 0.7),
-                new Obstacle.Wall(new Vec2(-6, -4), new Vec2(-2, -5), 0.05, 0.3, 0.7),
-                new Obstacle.Box(new Vec3(4, -5, -1), new Vec3(4.5, -3, 0.5), 70, 0.7));
+        CollisionScene scene = mixedScene();
         java.util.Random random = new java.util.Random(8);
         Hit hit = new Hit();
         double[] scratch = new double[3];
