@@ -76,7 +76,7 @@ public final class ObstaclesPass implements RenderPass {
     public void setObstacles(List<Obstacle> list) {
         obstacles = list == null ? List.of() : List.copyOf(list);
         ObstacleMeshes.Built built = ObstacleMeshes.build(lowModels ? twins.drawn(obstacles) : obstacles, ground, this::materialsOf,
-                ObstacleMeshes.CrownStyle.COURSE, style);
+                lowModels ? ObstacleMeshes.CrownStyle.COURSE.light() : ObstacleMeshes.CrownStyle.COURSE, style);
         if (floor > Double.NEGATIVE_INFINITY) {
             float[] v = built.solid().vertices();
             for (int i = 2; i < v.length; i += built.solid().stride()) v[i] = (float) Math.max(v[i], floor);
