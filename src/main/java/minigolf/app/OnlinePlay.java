@@ -17,6 +17,7 @@ import minigolf.game.RoundGame;
 import minigolf.online.ClientMessage;
 import minigolf.online.RoomEvent;
 import minigolf.online.RoundSync;
+import minigolf.online.client.HeadlessPlayer;
 import minigolf.online.client.OnlineClient;
 import minigolf.online.client.RoomMirror;
 
@@ -63,6 +64,14 @@ final class OnlinePlay {
     private RoundGame shown;
     private boolean resynced;
     private long shotSentAt = -1;
+    /** When the shot on its way left (System.nanoTime). */
+    private long shotSentNanos;
+    /**
+     * A shot with no answer at all (no stroke, no refusal) for this long may be played again: it was lost on
+     * its way, and the player would otherwise see its turn and never be able to shoot. The server's event
+     * count keeps a shot that was only slow from being played twice.
+     */
+    private long answerWaitNanos = HeadlessPlayer.RESEND_AFTER.toNanos();
     /** The room's events this client has had (shown, or queued to be shown). */
     private long received = -1;
     private String failure;
@@ -153,6 +162,12 @@ final class OnlinePlay {
             } else if (item instanceof Arrived a) {
                 take(a.message(), a.atMs());
             }
+        }
+        if (client != null && shotSentAt >= 0 && shotSentAt == mirror.seq() && mirror.isMyTurn()
+                && System.nanoTime() - shotSentNanos >= answerWaitNanos) {
+            shotSentAt = -1;
+            say.accept(String.format(java.util.Locale.ROOT, "no answer from the server to the shot for %.0f s: play it again",
+                    answerWaitNanos / 1e9));
         }
         // Whose turns the server passes over (dropped players), on the hole shown.
         List<RoomMirror.SeatInfo> seats = mirror.seats();
@@ -268,6 +283,11 @@ final class OnlinePlay {
                 && shown.holeIndex() == mirror.round().holeIndex() && !shown.isHoleOver();
     }
 
+    /** How long a shot may go unanswered before it may be played again (tests: a short wait). */
+    void answerWait(Duration wait) {
+        answerWaitNanos = wait.toNanos();
+    }
+
     /** This seat may shoot now: its turn on the server, everything before it shown, no shot on its way. */
     boolean canShoot() {
         return client != null && mirror.isMyTurn() && toShow.isEmpty() && shotSentAt != mirror.seq() && shown != null
@@ -280,6 +300,7 @@ final class OnlinePlay {
         double loft = Math.min(Loft.MAX_DEGREES, Loft.degreesOf(vx, vy, vz));
         double ax = ground > 0 ? vx / ground * speed : 0, ay = ground > 0 ? vy / ground * speed : 0;
         shotSentAt = mirror.seq();
+        shotSentNanos = System.nanoTime();
         client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, 0));
     }
 

@@ -1,6 +1,7 @@
 package minigolf.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -15,6 +16,7 @@ import minigolf.online.ClientMessage;
 import minigolf.online.client.OnlineClient;
 import minigolf.online.server.CourseCatalog;
 import minigolf.online.server.GameServer;
+import minigolf.online.server.LossyProxy;
 import minigolf.online.server.ServerOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -85,6 +87,38 @@ class OnlinePlayTest {
             assertNotNull(ann.mirror().seats().get(1));
             assertTrue(ann.mirror().seats().get(1).gone());
             bob.close();
+            ann.close();
+        }
+    }
+
+    /**
+     * The window's side of a shot lost on its way (a relay drops it: no stroke, no refusal comes): before,
+     * the seat kept its turn and could never shoot again. After the answer wait the shot may be played
+     * again, the player is told, and the stroke is played.
+     */
+    @Test
+    void aShotLostOnItsWayMayBePlayedAgainAfterTheWait() throws Exception {
+        Path courses = Path.of(System.getProperty("minigolf.projectDir", "."), "courses");
+        ServerOptions o = ServerOptions.defaults(0, dir.resolve("s.db").toString(), courses).withHost("127.0.0.1");
+        java.util.concurrent.atomic.AtomicInteger shots = new java.util.concurrent.atomic.AtomicInteger();
+        try (GameServer server = GameServer.start(o, CourseCatalog.load(courses, new PrintWriter(new StringWriter())),
+                new PrintWriter(new StringWriter(), true));
+             LossyProxy proxy = new LossyProxy(server.port(), text -> LossyProxy.isType(text, "shot") && shots.getAndIncrement() == 0)) {
+            List<String> said = new ArrayList<>();
+            OnlinePlay ann = new OnlinePlay(new OnlinePlay.Entry(OnlineClient.uri("127.0.0.1:" + proxy.port()), "Ann", "flat", 1,
+                    List.of(), true, null, null), said::add, (room, token) -> { });
+            ann.answerWait(java.time.Duration.ofSeconds(2));
+            until(ann, () -> ann.shown() != null && ann.canShoot(), "Ann's turn");
+            ann.shoot(1, 0, 0);
+            assertFalse(ann.canShoot(), "the shot is on its way");
+            until(ann, ann::canShoot, "the shot may be played again");
+            assertEquals(1, proxy.lost());
+            assertTrue(said.contains("no answer from the server to the shot for 2 s: play it again"), said.toString());
+            assertEquals(0, ann.mirror().seq(), "no stroke was played");
+            ann.shoot(1, 0, 0);
+            until(ann, () -> ann.mirror().seq() == 1, "the stroke");
+            assertEquals(1, ann.mirror().round().game().player(0).strokes(), "one stroke on the server's count");
+            assertEquals(2, shots.get(), "two shots sent, the first lost");
             ann.close();
         }
     }

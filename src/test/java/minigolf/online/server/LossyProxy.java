@@ -20,7 +20,7 @@ import java.util.function.Predicate;
  * message lost in the network. It reads the client's frames (RFC 6455: unextended, masked; the
  * JDK's client negotiates no compression) and passes everything else through byte for byte.
  */
-final class LossyProxy implements AutoCloseable {
+public final class LossyProxy implements AutoCloseable {
     private final ServerSocket listener;
     private final int target;
     private final Predicate<String> lose;
@@ -28,20 +28,29 @@ final class LossyProxy implements AutoCloseable {
     private final List<Socket> sockets = new CopyOnWriteArrayList<>();
 
     /** Relays to {@code targetPort}; a client text message for which {@code lose} says true is dropped. */
-    LossyProxy(int targetPort, Predicate<String> lose) throws IOException {
+    public LossyProxy(int targetPort, Predicate<String> lose) throws IOException {
         this.target = targetPort;
         this.lose = lose;
         listener = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
         daemon(this::accept, "lossy-proxy-accept");
     }
 
-    int port() {
+    public int port() {
         return listener.getLocalPort();
     }
 
     /** How many client messages were lost so far. */
-    int lost() {
+    public int lost() {
         return lost.get();
+    }
+
+    /** Whether {@code text} is a JSON message of this {@code type} (the protocol's {@code "type"} field). */
+    public static boolean isType(String text, String type) {
+        try {
+            return type.equals(minigolf.online.Json.parse(text).path("type").asText());
+        } catch (minigolf.online.ProtocolException e) {
+            return false;
+        }
     }
 
     private void accept() {

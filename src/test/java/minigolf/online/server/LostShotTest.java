@@ -11,8 +11,6 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
-import minigolf.online.Json;
-import minigolf.online.ProtocolException;
 import minigolf.online.client.HeadlessPlayer;
 import minigolf.online.client.OnlineClient;
 import org.junit.jupiter.api.Test;
@@ -34,7 +32,7 @@ class LostShotTest {
     void aShotLostWithNoAnswerIsSentAgainAndTheRoundEnds() throws Exception {
         AtomicInteger shots = new AtomicInteger();
         try (GameServer server = TestServers.start(TestServers.options(dir.resolve("s.db").toString()), new StringWriter());
-             LossyProxy proxy = new LossyProxy(server.port(), text -> isShot(text) && shots.getAndIncrement() == 0)) {
+             LossyProxy proxy = new LossyProxy(server.port(), text -> LossyProxy.isType(text, "shot") && shots.getAndIncrement() == 0)) {
             List<String> out = Collections.synchronizedList(new ArrayList<>()), said = Collections.synchronizedList(new ArrayList<>());
             HeadlessPlayer player = new HeadlessPlayer(new HeadlessPlayer.Options(OnlineClient.uri("127.0.0.1:" + proxy.port()),
                     "flat", 1, List.of(), false, null, "Ann", "straight", null, 0), out::add, said::add, null)
@@ -56,13 +54,5 @@ class LostShotTest {
                 () -> player.resendAfter(Duration.ZERO));
         assertEquals("resend wait must be positive: PT0S", e.getMessage());
         assertEquals(Duration.ofSeconds(30), HeadlessPlayer.RESEND_AFTER, "longer than the slowest answer measured (25.3 s)");
-    }
-
-    private static boolean isShot(String text) {
-        try {
-            return "shot".equals(Json.parse(text).path("type").asText());
-        } catch (ProtocolException e) {
-            return false;
-        }
     }
 }
