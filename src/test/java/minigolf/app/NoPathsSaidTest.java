@@ -7,7 +7,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import minigolf.game.SettingsStore;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -19,10 +18,9 @@ class NoPathsSaidTest {
 
     @Test
     void aSaveThatCannotBeLoadedIsSaidWithoutItsPath() throws Exception {
-        World tee = World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses/holes/01-first-tee.json"));
+        World tee = FirstTeeSession.tee();
         List<String> said = new ArrayList<>();
-        PlaySession play = new PlaySession(tee, null, List.of(), new PlayerFiles(new SettingsStore(dir.resolve("config")), s -> { }),
-                said::add);
+        PlaySession play = FirstTeeSession.saying(tee, dir.resolve("config"), said);
         Path broken = Files.writeString(dir.resolve("broken.json"), "{\"version\": ");
         Path folder = Files.createDirectory(dir.resolve("a-folder.json"));
         for (Path file : List.of(dir.resolve("missing.json"), broken, folder)) {
