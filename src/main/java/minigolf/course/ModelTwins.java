@@ -1,6 +1,11 @@
 package minigolf.course;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import minigolf.mesh.TriangleMesh;
 
 /**
@@ -30,6 +35,42 @@ public final class ModelTwins {
             return ModelFiles.in(courseFolder).load(name);
         } catch (ModelFiles.ModelException e) {
             return null;
+        }
+    }
+
+    /**
+     * The twins of one course folder's models, each file looked for once (the editor rebuilds the
+     * drawn obstacles on every change; reading the .obj files each time would stall it).
+     */
+    public static final class Cache {
+        private final Path courseFolder;
+        /** By model file: its twin, or empty when it has none. */
+        private final Map<String, Optional<TriangleMesh>> found = new HashMap<>();
+
+        /** Twins from {@code courseFolder} (null: the bundled models only). */
+        public Cache(Path courseFolder) {
+            this.courseFolder = courseFolder;
+        }
+
+        /**
+         * The obstacles to draw: each model with a twin becomes the same model (file, place,
+         * rotation, scale, restitution) with the twin's mesh; everything else is passed on as it is.
+         */
+        public List<Obstacle> drawn(List<Obstacle> list) {
+            List<Obstacle> out = new ArrayList<>(list.size());
+            for (Obstacle o : list) {
+                if (o instanceof Obstacle.Model m) {
+                    TriangleMesh twin = found.computeIfAbsent(m.file(), f -> Optional.ofNullable(low(f, courseFolder))).orElse(null);
+                    if (twin != null) o = new Obstacle.Model(m.file(), m.position(), m.rotationDeg(), m.scale(), m.restitution(), twin);
+                }
+                out.add(o);
+            }
+            return out;
+        }
+
+        /** Model files looked for so far (tests). */
+        int filesLookedFor() {
+            return found.size();
         }
     }
 }

@@ -11,8 +11,9 @@ import java.util.HashMap;
 import java.util.Map;
 
 /**
- * A Wavefront model the game ships, {@code /models/NAME.obj} with its {@code /models/NAME.mtl} on the
- * classpath (the tree crown, the flag), parsed once and shared.
+ * A Wavefront model the game ships, {@code /models/NAME.obj} with the materials its {@code mtllib}
+ * names beside it ({@code /models/NAME.mtl} if it names none) on the classpath (the tree crown and
+ * its lighter twin, which shares the crown's materials; the flag), parsed once and shared.
  */
 record ModelResource(TriangleMesh mesh, MaterialLibrary materials) {
     private static final Map<String, ModelResource> LOADED = new HashMap<>();
@@ -23,7 +24,10 @@ record ModelResource(TriangleMesh mesh, MaterialLibrary materials) {
         String obj = "/models/" + name + ".obj";
         try (InputStream in = ModelResource.class.getResourceAsStream(obj)) {
             if (in == null) throw new RenderException("missing resource " + obj, null);
-            m = new ModelResource(ObjParser.parse(in), MaterialLibrary.resource("/models/" + name + ".mtl"));
+            TriangleMesh mesh = ObjParser.parse(in);
+            String library = mesh.materialLibraries().isEmpty() || mesh.materialLibraries().get(0).contains("/")
+                    ? name + ".mtl" : mesh.materialLibraries().get(0);
+            m = new ModelResource(mesh, MaterialLibrary.resource("/models/" + library));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         } catch (ObjException e) {

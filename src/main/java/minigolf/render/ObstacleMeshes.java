@@ -100,9 +100,10 @@ public final class ObstacleMeshes {
 
     /**
      * How a tree's crown is drawn: its size (the crown model is about that wide either side of the
-     * trunk) per trunk height, and the height of its centre above the trunk's top, in crown sizes.
+     * trunk) per trunk height, the height of its centre above the trunk's top, in crown sizes, and
+     * the bundled model drawn ({@code /models/NAME.obj}).
      */
-    public record CrownStyle(double perHeight, double rise) {
+    public record CrownStyle(double perHeight, double rise, String model) {
         /** A course's trees: the crown sits on the trunk, high enough that the player sees the green under it. */
         public static final CrownStyle COURSE = new CrownStyle(0.32, 0.85);
         /**
@@ -110,6 +111,19 @@ public final class ObstacleMeshes {
          * player's eye, a metre or two up, they read as trees and not as bare poles under a lollipop.
          */
         public static final CrownStyle SURROUNDINGS = new CrownStyle(0.42, -0.3);
+
+        /** The broad-leaved crown, tree-crown.obj (240 triangles). */
+        public CrownStyle(double perHeight, double rise) {
+            this(perHeight, rise, "tree-crown");
+        }
+
+        /**
+         * The same with the crown's lighter twin, tree-crown.low.obj (60 triangles, the same three
+         * blobs as plain icosahedra): for software rasterisers, which pay per triangle.
+         */
+        public CrownStyle light() {
+            return new CrownStyle(perHeight, rise, "tree-crown.low");
+        }
 
         /** The crown's size for a trunk this high and wide. */
         public double size(double height, double radius) {
@@ -156,7 +170,7 @@ public final class ObstacleMeshes {
     public static Built build(List<Obstacle> obstacles, HeightProbe ground,
                               Function<Obstacle.Model, MaterialLibrary> modelMaterials, CrownStyle crownStyle, Style style) {
         Writer solid = new Writer(), crowns = new Writer();
-        ModelResource crown = ModelResource.get("tree-crown");
+        ModelResource crown = ModelResource.get(crownStyle.model());
         List<Piece> solidPieces = new java.util.ArrayList<>(), crownPieces = new java.util.ArrayList<>();
         for (Obstacle o : obstacles) {
             int solidStart = solid.vertexCount(), crownStart = crowns.vertexCount();

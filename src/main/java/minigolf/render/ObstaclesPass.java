@@ -3,7 +3,6 @@ package minigolf.render;
 import minigolf.course.HeightProbe;
 import minigolf.course.ModelTwins;
 import minigolf.course.Obstacle;
-import minigolf.mesh.TriangleMesh;
 import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 
@@ -36,8 +35,8 @@ public final class ObstaclesPass implements RenderPass {
     private final double floor;
     /** Whether models are drawn from their lighter twins where they have one (software tier, see {@link ModelTwins}). */
     private final boolean lowModels;
-    /** The twins found so far by model file (empty: none), cleared with the course folder. */
-    private final Map<String, java.util.Optional<TriangleMesh>> twins = new HashMap<>();
+    /** The twins found so far, for the course folder's models. */
+    private ModelTwins.Cache twins = new ModelTwins.Cache(null);
 
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
         this(obstacles, ground, false);
@@ -76,8 +75,8 @@ public final class ObstaclesPass implements RenderPass {
     /** Replaces the drawn obstacles (null or empty: none). */
     public void setObstacles(List<Obstacle> list) {
         obstacles = list == null ? List.of() : List.copyOf(list);
-        ObstacleMeshes.Built built = ObstacleMeshes.build(lowModels ? withTwins(obstacles) : obstacles, ground, this::materialsOf,
-                ObstacleMeshes.CrownStyle.COURSE, style);
+        ObstacleMeshes.Built built = ObstacleMeshes.build(lowModels ? twins.drawn(obstacles) : obstacles, ground, this::materialsOf,
+                lowModels ? ObstacleMeshes.CrownStyle.COURSE.light() : ObstacleMeshes.CrownStyle.COURSE, style);
         if (floor > Double.NEGATIVE_INFINITY) {
             float[] v = built.solid().vertices();
             for (int i = 2; i < v.length; i += built.solid().stride()) v[i] = (float) Math.max(v[i], floor);
@@ -96,7 +95,7 @@ public final class ObstaclesPass implements RenderPass {
     public void setCourseFolder(Path folder) {
         courseFolder = folder;
         materials.clear();
-        twins.clear();
+        twins = new ModelTwins.Cache(folder);
         setObstacles(obstacles);
     }
 
@@ -116,19 +115,6 @@ public final class ObstaclesPass implements RenderPass {
     /** The highest point of anything drawn here, or -infinity when there is nothing. */
     public double top() {
         return top;
-    }
-
-    /** The obstacles with each model's mesh replaced by its lighter twin, where it has one (drawn only: the list kept is the course's). */
-    private List<Obstacle> withTwins(List<Obstacle> list) {
-        List<Obstacle> drawn = new java.util.ArrayList<>(list.size());
-        for (Obstacle o : list) {
-            if (o instanceof Obstacle.Model m) {
-                TriangleMesh low = twins.computeIfAbsent(m.file(), f -> java.util.Optional.ofNullable(ModelTwins.low(f, courseFolder))).orElse(null);
-                if (low != null) o = new Obstacle.Model(m.file(), m.position(), m.rotationDeg(), m.scale(), m.restitution(), low);
-            }
-            drawn.add(o);
-        }
-        return drawn;
     }
 
     private MaterialLibrary materialsOf(Obstacle.Model m) {

@@ -39,7 +39,7 @@ public final class SurroundingsPass implements RenderPass {
 
     /** Round a course with these bounds, whose slab stands at height {@code level} (its skirts' base): Meadowbrook's trees. */
     public SurroundingsPass(Bounds bounds, double level, int treeCount) {
-        this(bounds, level, treeCount, null);
+        this(bounds, level, treeCount, false, null);
     }
 
     /**
@@ -52,17 +52,17 @@ public final class SurroundingsPass implements RenderPass {
 
     /** As above; {@code light}: the props' smallest parts with fewer triangles (the software tier, see {@link SceneryMesh#build}). */
     public SurroundingsPass(Course course, double level, Theme theme, double share, boolean light) {
-        this(course.bounds(), level, treeCount(theme, share), SceneryMesh.build(SceneryPlan.plan(theme.scenery(), course.bounds(),
+        this(course.bounds(), level, treeCount(theme, share), light, SceneryMesh.build(SceneryPlan.plan(theme.scenery(), course.bounds(),
                 course.start().x(), course.start().y(), course.hole().position().x(), course.hole().position().y(), share), theme, level,
                 light));
     }
 
-    private SurroundingsPass(Bounds bounds, double level, int treeCount, SceneryMesh props) {
+    private SurroundingsPass(Bounds bounds, double level, int treeCount, boolean light, SceneryMesh props) {
         this.level = level;
         this.bounds = bounds;
         this.trees = TreePlacement.around(bounds, treeCount);
         this.props = props;
-        layout = build(level, trees);
+        layout = build(level, trees, light);
         ShaderProgram s = ShaderProgram.load("surroundings");
         Mesh m = null;
         try {
@@ -99,10 +99,11 @@ public final class SurroundingsPass implements RenderPass {
     record Layout(MeshData data, List<ObstacleMeshes.Piece> trunks, List<ObstacleMeshes.Piece> crowns) {
     }
 
-    static Layout build(double level, List<Obstacle.Tree> trees) {
+    /** {@code light}: the crowns' lighter twin (the software tier, see {@link ObstacleMeshes.CrownStyle#light}). */
+    static Layout build(double level, List<Obstacle.Tree> trees, boolean light) {
         if (trees.isEmpty()) return null;
         ObstacleMeshes.Built built = ObstacleMeshes.build(List.copyOf(trees), (x, y) -> level, m -> null,
-                ObstacleMeshes.CrownStyle.SURROUNDINGS);
+                light ? ObstacleMeshes.CrownStyle.SURROUNDINGS.light() : ObstacleMeshes.CrownStyle.SURROUNDINGS);
         // The trunks reach 1 m into the ground, as the physics' cylinders do; the meadow is drawn by the
         // sky, behind everything, so they must stop at its level.
         float[] v = built.solid().vertices().clone();

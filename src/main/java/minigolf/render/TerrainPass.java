@@ -236,16 +236,12 @@ public final class TerrainPass implements RenderPass {
      * the skirts if the box reaches past the course's edge: the second draw round the balls' shadows.
      */
     void renderWithin(FrameContext frame, float[] box) {
-        var b = course.bounds();
         int quadRows = rowStarts.length - 1;
-        double dy = b.depth() / quadRows;
-        int j0 = (int) Math.max(0, Math.floor((box[1] - b.minY()) / dy));
-        int j1 = (int) Math.min(quadRows, Math.ceil((box[4] - b.minY()) / dy));
-        boolean edge = box[0] <= b.minX() || box[3] >= b.maxX() || box[1] <= b.minY() || box[4] >= b.maxY();
-        if (j1 <= j0 && !edge) return;
+        CellRange cells = CellRange.of(course.bounds(), columns - 1, quadRows, box, 0);
+        if (!cells.hasRows() && !cells.edge()) return;
         use(frame);
-        if (j1 > j0) mesh.drawRange(rowStarts[j0], rowStarts[j1] - rowStarts[j0]);
-        if (edge) mesh.drawRange(rowStarts[quadRows], indexCount - rowStarts[quadRows]);
+        if (cells.hasRows()) mesh.drawRange(rowStarts[cells.j0()], rowStarts[cells.j1()] - rowStarts[cells.j0()]);
+        if (cells.edge()) mesh.drawRange(rowStarts[quadRows], indexCount - rowStarts[quadRows]);
     }
 
     /**
@@ -335,16 +331,11 @@ public final class TerrainPass implements RenderPass {
             renderWithin(frame, box);
             return;
         }
-        var b = course.bounds();
-        boolean edge = box[0] <= b.minX() || box[3] >= b.maxX() || box[1] <= b.minY() || box[4] >= b.maxY();
         use(frame);
         // The grid's cells that meet the box (one cell more each way): a chunk drawn at full resolution
         // is redrawn there only, from the mesh's own indices (the same triangles), row by row.
-        int nx = columns - 1, ny = rows - 1;
-        int i0 = (int) Math.max(0, Math.floor((box[0] - b.minX()) / b.width() * nx) - 1);
-        int i1 = (int) Math.min(nx, Math.ceil((box[3] - b.minX()) / b.width() * nx) + 1);
-        int j0 = (int) Math.max(0, Math.floor((box[1] - b.minY()) / b.depth() * ny) - 1);
-        int j1 = (int) Math.min(ny, Math.ceil((box[4] - b.minY()) / b.depth() * ny) + 1);
+        int nx = columns - 1;
+        CellRange cells = CellRange.of(course.bounds(), nx, rows - 1, box, 1);
         var chunks = lod.chunks();
         for (int n = 0; n < chunks.size(); n++) {
             TerrainLod.Chunk c = chunks.get(n);
@@ -353,14 +344,14 @@ public final class TerrainPass implements RenderPass {
                 drawChunk(c, lastLevels[n]);
                 continue;
             }
-            int a = Math.max(c.i0, i0), e = Math.min(c.i1, i1);
+            int a = Math.max(c.i0, cells.i0()), e = Math.min(c.i1, cells.i1());
             if (a >= e) continue;
-            for (int j = Math.max(c.j0, j0); j < Math.min(c.j1, j1); j++) {
+            for (int j = Math.max(c.j0, cells.j0()); j < Math.min(c.j1, cells.j1()); j++) {
                 int first = cellStarts[j * nx + a], end = cellStarts[j * nx + e];
                 if (end > first) mesh.drawRange(first, end - first);
             }
         }
-        if (edge) {
+        if (cells.edge()) {
             int skirts = cellStarts[cellStarts.length - 1];
             mesh.drawRange(skirts, indexCount - skirts);
         }

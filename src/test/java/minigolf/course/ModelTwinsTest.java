@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.*;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 import minigolf.mesh.TriangleMesh;
 import org.junit.jupiter.api.Test;
@@ -57,6 +58,34 @@ class ModelTwinsTest {
         assertEquals(1, ModelTwins.low("models/windmill.obj", dir).triangleCount());
         Files.writeString(dir.resolve("models/windmill.low.obj"), "v 0 0 0\nf 1 2 9\n");
         assertNull(ModelTwins.low("models/windmill.obj", dir), "a broken twin is no twin (the model itself is drawn)");
+    }
+
+    /**
+     * The cache hands the renderer the course's obstacles with each model's mesh swapped for its twin
+     * (place, rotation, scale, restitution and file kept), leaves the rest as they are, and reads each
+     * model file once however often the list is rebuilt (the editor rebuilds it on every change).
+     */
+    @Test
+    void theCacheSwapsInTheTwinsAndReadsEachFileOnce() throws Exception {
+        TriangleMesh mill = ModelFiles.in(null).load("models/windmill.obj");
+        TriangleMesh sails = ModelFiles.in(null).load("models/windmill-sails.obj");
+        Obstacle.Model model = new Obstacle.Model("models/windmill.obj", new Vec3(1, 2, 0.5), 90, 0.8, 0.6, mill);
+        Obstacle.Model noTwin = new Obstacle.Model("models/windmill-sails.obj", new Vec3(1, 2, 1.5), 270, 1, 0.5, sails);
+        Obstacle wall = new Obstacle.Wall(new Vec2(0, 0), new Vec2(1, 0), 0.1, 0.2, 0.8);
+        ModelTwins.Cache cache = new ModelTwins.Cache(null);
+        List<Obstacle> drawn = cache.drawn(List.of(wall, model, noTwin, model));
+        assertEquals(4, drawn.size());
+        assertSame(wall, drawn.get(0));
+        assertSame(noTwin, drawn.get(2), "no twin: the model itself");
+        Obstacle.Model low = (Obstacle.Model) drawn.get(1);
+        assertEquals(164, low.mesh().triangleCount());
+        assertEquals(List.of(model.file(), model.position(), model.rotationDeg(), model.scale(), model.restitution()),
+                List.of(low.file(), low.position(), low.rotationDeg(), low.scale(), low.restitution()));
+        assertEquals(2, cache.filesLookedFor(), "each file once: the mill and the sails");
+        List<Obstacle> again = cache.drawn(List.of(model));
+        assertSame(low.mesh(), ((Obstacle.Model) again.get(0)).mesh(), "the same twin, not read again");
+        assertEquals(2, cache.filesLookedFor());
+        assertEquals(10560, model.mesh().triangleCount(), "the course's own obstacle keeps the full model");
     }
 
     private static String key(float[] p, int v) {

@@ -114,6 +114,46 @@ class ObstacleMeshesTest {
         assertTrue(low < maxZ && low > maxZ - 0.2 * size, "the crown sits on the trunk's top: lowest " + low + ", top " + maxZ);
     }
 
+    /**
+     * The software tier's crown (tree-crown.low.obj, 60 triangles) takes the crown's leaf colours
+     * from the library its mtllib names (tree-crown.mtl) and fills about the same space: its box
+     * within 15% of the full crown's on every side, in both styles.
+     */
+    @Test
+    void theLightCrownIsTheSameTreeWithAQuarterOfTheTriangles() {
+        Obstacle.Tree tree = new Obstacle.Tree(new Vec2(0, 0), 0.18, 4.0, 0);
+        for (ObstacleMeshes.CrownStyle style : List.of(ObstacleMeshes.CrownStyle.COURSE, ObstacleMeshes.CrownStyle.SURROUNDINGS)) {
+            MeshData full = ObstacleMeshes.build(List.of(tree), (x, y) -> 0, m -> null, style).decoration();
+            MeshData light = ObstacleMeshes.build(List.of(tree), (x, y) -> 0, m -> null, style.light()).decoration();
+            assertEquals(240, full.triangleCount());
+            assertEquals(60, light.triangleCount());
+            assertEquals("tree-crown.low", style.light().model());
+            double[] a = box(full), b = box(light);
+            double size = style.size(4.0, 0.18);
+            for (int k = 0; k < 6; k++) assertEquals(a[k], b[k], 0.15 * size, "box side " + k + " of " + style);
+            java.util.Set<String> fullColours = colours(full), lightColours = colours(light);
+            assertEquals(java.util.Set.of("0.20 0.42 0.16", "0.30 0.52 0.20"), fullColours, "tree-crown.mtl's leaves");
+            assertEquals(fullColours, lightColours, "the twin reads the crown's library, not grey defaults");
+        }
+    }
+
+    private static double[] box(MeshData d) {
+        double[] b = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (int v = 0; v < d.vertexCount(); v++) {
+            for (int k = 0; k < 3; k++) {
+                b[k] = Math.min(b[k], d.get(v, 0, k));
+                b[k + 3] = Math.max(b[k + 3], d.get(v, 0, k));
+            }
+        }
+        return b;
+    }
+
+    private static java.util.Set<String> colours(MeshData d) {
+        java.util.Set<String> s = new java.util.TreeSet<>();
+        for (int v = 0; v < d.vertexCount(); v++) s.add(String.format(java.util.Locale.ROOT, "%.2f %.2f %.2f", d.get(v, 2, 0), d.get(v, 2, 1), d.get(v, 2, 2)));
+        return s;
+    }
+
     @Test
     void treesRoundTheCourseHangTheirCrownOverTheTrunksUpperHalf() {
         // A 4 m tree on flat ground: the course style leaves the whole trunk bare under the crown (a
