@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.Locale;
 import minigolf.game.Player;
 import minigolf.game.PlayerState;
-import minigolf.game.SettingsStore;
 import minigolf.game.UserSettings;
 import minigolf.physics.World;
 import org.junit.jupiter.api.Test;
@@ -26,9 +25,9 @@ class TurnNewsTest {
 
     @Test
     void aPersonsStrokeNewsNamesTheBotWhoseTurnItIs() throws Exception {
-        World tee = World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses/holes/01-first-tee.json"));
+        World tee = FirstTeeSession.tee();
         List<String> said = new ArrayList<>();
-        PlaySession play = new PlaySession(tee, null, List.of(), new PlayerFiles(new SettingsStore(dir), s -> { }), said::add);
+        PlaySession play = FirstTeeSession.saying(tee, dir, said);
         play.start(List.of(Player.human("Ann"), Player.bot("Bot (Hard)", "hard")), UserSettings.DEFAULTS);
         // A gentle putt towards the hole: it stops short, on the green.
         double dx = tee.hole().position().x() - tee.course().start().x(), dy = tee.hole().position().y() - tee.course().start().y();
@@ -46,9 +45,9 @@ class TurnNewsTest {
 
     @Test
     void aLonePlayersNewsHasNoTurn() throws Exception {
-        World tee = World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses/holes/01-first-tee.json"));
+        World tee = FirstTeeSession.tee();
         List<String> said = new ArrayList<>();
-        PlaySession play = new PlaySession(tee, null, List.of(), new PlayerFiles(new SettingsStore(dir), s -> { }), said::add);
+        PlaySession play = FirstTeeSession.saying(tee, dir, said);
         play.start(List.of(Player.human("Ann")), UserSettings.DEFAULTS);
         play.hit(0.3, 0, 0);
         for (int i = 0; i < 2000 && play.animator() != null; i++) play.advance(0.02, 1, false);

@@ -257,14 +257,16 @@ final class LevelCalibration {
      * ({@link LevelBot.Care}): from which stroke, r to lay up then, the shrink per stroke, 0.5 unless given).
      */
     static Bot bot(String level) {
-        // Optional care: NAME:...@FROM[r][/SHRINK] (r: lays up as the robust bot once careful; shrink 0.5 unless given)
+        // Optional care: NAME:...@FROM[r[N]][/SHRINK] (r: lays up as the robust bot once careful, rN on the first N careful strokes; shrink 0.5 unless given)
         LevelBot.Care care = LevelBot.Care.HALVING_FROM_SIXTH;
         if (level.contains("@")) {
             String c = level.substring(level.indexOf('@') + 1);
             level = level.substring(0, level.indexOf('@'));
-            boolean layUp = c.contains("r");
-            String[] parts = c.replace("r", "").split("/");
-            care = new LevelBot.Care(Integer.parseInt(parts[0]), parts.length > 1 ? Double.parseDouble(parts[1]) : 0.5, layUp);
+            // r: lays up on every careful stroke; rN: on the first N
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("^(\\d+)(r(\\d*))?(/([0-9.]+))?$").matcher(c);
+            if (!m.matches()) throw new IllegalArgumentException("care " + c + ": FROM[r[N]][/SHRINK]");
+            int layUps = m.group(2) == null ? 0 : m.group(3).isEmpty() ? 99 : Integer.parseInt(m.group(3));
+            care = new LevelBot.Care(Integer.parseInt(m.group(1)), m.group(5) != null ? Double.parseDouble(m.group(5)) : 0.5, layUps);
         }
         String[] p = level.split(":");
         if (p.length == 1) return Bots.create(level);

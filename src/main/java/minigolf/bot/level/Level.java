@@ -13,14 +13,15 @@ import minigolf.bot.noise.HumanError;
  * (par 46) a par player should beat {@code medium} and lose to {@code hard} most of the time, {@code hard}
  * under par (not the planner's 21). Tuned on tile seeds 1001, 44706668, 36662537 and 47692372 (the
  * last three were fresh seeds of earlier checks) and the Meadowbrook round (docs/bots.md has the
- * figures and the fresh seeds they were checked on; 12273404, a fresh seed on 28 Nov, is a tuning
- * seed since).
+ * figures and the fresh seeds they were checked on; 12273404 and 99284744, fresh seeds on 28 Nov,
+ * are tuning seeds since).
  *
  * <ul>
  * <li>{@code easy}: the planner's line, struck 7 degrees and 23% of pace off (a casual player); from
- *     its fifth stroke on a hole it takes care: the error halves with every stroke and it lays up as
- *     the robust bot for that error (6 degrees and 20%, careful from the sixth stroke, left one
- *     game in 72 of a fresh seed not holed within 10 strokes).</li>
+ *     its fifth stroke on a hole it takes care: the error halves with every stroke, and on its fifth
+ *     and sixth strokes it lays up as the robust bot for that stroke's error (6 degrees and 20%,
+ *     careful from the sixth stroke, left one game in 72 of a fresh seed not holed within 10
+ *     strokes; laying up on every careful stroke, one in 72 of the next).</li>
  * <li>{@code medium}: the noise-aware robust bot (it lays up where a bold line would likely miss),
  *     2.25 degrees and 7.75% off.</li>
  * <li>{@code hard}: the planner's line, nearly exact (0.05 degrees and 0.25% of pace) on lay-ups
@@ -38,7 +39,7 @@ import minigolf.bot.noise.HumanError;
  */
 public enum Level {
     EASY(new HumanError(Math.toRadians(7), 0.23), new HumanError(Math.toRadians(7), 0.23), false,
-            new LevelBot.Care(4, 0.5, true)),
+            new LevelBot.Care(4, 0.5, 2)),
     MEDIUM(new HumanError(Math.toRadians(2.25), 0.0775), true),
     HARD(new HumanError(Math.toRadians(0.05), 0.0025), new HumanError(Math.toRadians(2.25), 0.0775), false),
     PRO(HumanError.NONE, false);

@@ -29,17 +29,24 @@ import minigolf.physics.ShotResult;
 public final class LevelBot implements Bot {
     /**
      * How a level takes care once its hole goes badly: from stroke {@code from} (0-based, penalties
-     * included) its error is multiplied by {@code shrink} with every stroke, and with {@code layUp}
-     * it plans for that stroke's error as the robust bot does, laying up where its line would likely
-     * miss (a lay-up beside water that only an exact stroke keeps dry sent one game in three times).
+     * included) its error is multiplied by {@code shrink} with every stroke, and on its first
+     * {@code layUps} careful strokes it plans for that stroke's error as the robust bot does, laying
+     * up where its line would likely miss (a lay-up beside water that only an exact stroke keeps dry
+     * sent one game in three times); after them it plays the strategy's line again, nearly exact by
+     * then (a level that kept laying up wandered round a maze to the stroke limit, 0.34 m from the cup).
      */
-    public record Care(int from, double shrink, boolean layUp) {
+    public record Care(int from, double shrink, int layUps) {
         /** From the sixth stroke the error halves per stroke; the line stays the strategy's own. */
-        public static final Care HALVING_FROM_SIXTH = new Care(5, 0.5, false);
+        public static final Care HALVING_FROM_SIXTH = new Care(5, 0.5, 0);
 
         public Care {
-            if (from < 0 || !(shrink > 0 && shrink <= 1)) throw new IllegalArgumentException("care from stroke " + from
-                    + ", shrink " + shrink + " (must be >= 0 and in (0, 1])");
+            if (from < 0 || !(shrink > 0 && shrink <= 1) || layUps < 0) throw new IllegalArgumentException("care from stroke "
+                    + from + ", shrink " + shrink + ", lay-ups " + layUps + " (must be >= 0, in (0, 1], >= 0)");
+        }
+
+        /** Whether the stroke after {@code strokesTaken} strokes is one of the careful lay-ups. */
+        boolean laysUp(int strokesTaken) {
+            return strokesTaken >= from && strokesTaken < from + layUps;
         }
     }
     /** The speed at which the robust strategy sizes its noise model ({@link HumanError#asNoiseModel}), m/s. */
@@ -77,7 +84,7 @@ public final class LevelBot implements Bot {
         this.care = care;
         // Without noise to plan for, the robust bot plays its planner's shot: one planner (and its
         // memory of the hole) before and after the level lays up.
-        this.strategy = robust || care.layUp() ? new RobustBot() : new PlannerBot();
+        this.strategy = robust || care.layUps() > 0 ? new RobustBot() : new PlannerBot();
     }
 
     @Override
@@ -94,7 +101,7 @@ public final class LevelBot implements Bot {
     @Override
     public Shot nextShot(BotRequest request) {
         BotRequest planned = request;
-        boolean layingUp = !robust && care.layUp() && request.strokesTaken() >= care.from();
+        boolean layingUp = !robust && care.laysUp(request.strokesTaken());
         if (robust || layingUp) {
             // The robust bot plans for the level's own error on top of any noise the game adds: the
             // full error, or once careful the error of this stroke (planned for the full one, a

@@ -73,14 +73,14 @@ class LevelBotTest {
     }
 
     /**
-     * Once careful, a level that lays up plays the robust bot's shot for its own (full) error, struck
-     * with its error; before, the planner's line. On the pond the two differ (the bold line skirts the water).
+     * On its careful lay-up strokes a level plays the robust bot's shot for that stroke's error, struck
+     * with it; before and after them, the planner's line. On the pond the two differ (the bold line skirts the water).
      */
     @Test
     void aCarefulLevelLaysUpAsTheRobustBotForItsOwnErrorAndNotBefore() throws Exception {
         World pond = World.load(BENCH.resolve("pond.json"));
         HumanError error = new HumanError(Math.toRadians(6), 0.2);
-        LevelBot.Care care = new LevelBot.Care(1, 1, true);
+        LevelBot.Care care = new LevelBot.Care(1, 1, 1);
         double max = pond.physics().maxSpeed();
         BotRequest first = request(pond, 0, 5), second = request(pond, 1, 5);
         Shot planner = first.simulator().limit(new PlannerBot().nextShot(first));
@@ -92,6 +92,11 @@ class LevelBotTest {
                 new LevelBot("careful", error, error, false, care).nextShot(request(pond, 0, 5)), "before: the planner's line");
         assertEquals(error.play(robust, new SplittableRandom(5 ^ LevelBot.ERROR_SALT), max),
                 new LevelBot("careful", error, error, false, care).nextShot(request(pond, 1, 5)), "careful: the robust bot's");
+        // One careful lay-up only: the stroke after it is the planner's line again.
+        BotRequest third = request(pond, 2, 5);
+        Shot plannerThird = third.simulator().limit(new PlannerBot().nextShot(third));
+        assertEquals(error.play(plannerThird, new SplittableRandom(5 ^ LevelBot.ERROR_SALT), max),
+                new LevelBot("careful", error, error, false, care).nextShot(request(pond, 2, 5)), "after the lay-ups: the planner's line");
     }
 
     @Test
