@@ -22,7 +22,9 @@ import java.util.stream.Stream;
  * java tools/PhysicsAB.java A_LIB B_LIB ROUNDS SHOTS COURSE...
  * e.g. java tools/PhysicsAB.java /tmp/base/build/install/minigolf/lib build/install/minigolf/lib 4 20000 courses/lake.json
  * </pre>
- * Prints one line per course and round, then the ratio B/A of shots per CPU second (range and median).
+ * Prints one line per course and round, then the ratio B/A of shots per CPU second (range and median),
+ * then each build's ratio of every further course to the first (e.g. windmill-push to the lake),
+ * measured round by round: each round times every course with both builds.
  */
 public final class PhysicsAB {
     /** One build: World.load and Simulator.simulate through method handles. */
@@ -93,35 +95,58 @@ public final class PhysicsAB {
         Build b = new Build("B", Path.of(args[1]));
         int rounds = Integer.parseInt(args[2]);
         int n = Integer.parseInt(args[3]);
-        for (int c = 4; c < args.length; c++) {
-            Path course = Path.of(args[c]);
-            Build[] builds = {a, b};
-            Object[] sims = new Object[2];
-            double x = 0, y = 0;
-            double[][] shots = null, warm = null;
+        int courses = args.length - 4;
+        Build[] builds = {a, b};
+        Object[][] sims = new Object[courses][2];
+        double[] xs = new double[courses], ys = new double[courses];
+        double[][][] shots = new double[courses][][];
+        for (int c = 0; c < courses; c++) {
+            Path course = Path.of(args[4 + c]);
+            double[][] warm = null;
             for (int k = 0; k < 2; k++) {
                 Object world = builds[k].load.invoke(course);
-                sims[k] = builds[k].newSimulator.invoke(world, builds[k].settings);
-                x = (double) builds[k].startX.invoke(world);
-                y = (double) builds[k].startY.invoke(world);
+                sims[c][k] = builds[k].newSimulator.invoke(world, builds[k].settings);
+                xs[c] = (double) builds[k].startX.invoke(world);
+                ys[c] = (double) builds[k].startY.invoke(world);
                 double max = (double) builds[k].maxSpeed.invoke(world);
-                shots = shots(1, max, n);
+                shots[c] = shots(1, max, n);
                 warm = shots(2, max, Math.max(2000, n / 2));
             }
-            for (int k = 0; k < 2; k++) for (int w = 0; w < 3; w++) time(builds[k], sims[k], x, y, warm);
-            List<Double> ratios = new ArrayList<>();
-            for (int r = 0; r < rounds; r++) {
+            for (int k = 0; k < 2; k++) for (int w = 0; w < 3; w++) time(builds[k], sims[c][k], xs[c], ys[c], warm);
+        }
+        // Each round times every course with both builds, so the courses' ratios to the first
+        // (each build's own) are measured in the same minute too.
+        double[][][] speed = new double[courses][2][rounds];
+        for (int r = 0; r < rounds; r++) {
+            for (int c = 0; c < courses; c++) {
                 int first = r % 2 == 0 ? 0 : 1;
                 double[][] res = new double[2][];
-                res[first] = time(builds[first], sims[first], x, y, shots);
-                res[1 - first] = time(builds[1 - first], sims[1 - first], x, y, shots);
-                ratios.add(res[1][0] / res[0][0]);
+                res[first] = time(builds[first], sims[c][first], xs[c], ys[c], shots[c]);
+                res[1 - first] = time(builds[1 - first], sims[c][1 - first], xs[c], ys[c], shots[c]);
+                speed[c][0][r] = res[0][0];
+                speed[c][1][r] = res[1][0];
                 System.out.printf(Locale.ROOT, "%s round %d: A %.0f shots/cpu-s, %.0f B/shot, %.1f steps | B %.0f shots/cpu-s, %.0f B/shot, %.1f steps | B/A %.3f%n",
-                        course, r, res[0][0], res[0][1], res[0][2], res[1][0], res[1][1], res[1][2], res[1][0] / res[0][0]);
+                        args[4 + c], r, res[0][0], res[0][1], res[0][2], res[1][0], res[1][1], res[1][2], res[1][0] / res[0][0]);
             }
-            ratios.sort(null);
-            System.out.printf(Locale.ROOT, "%s: B/A %.3f-%.3f, median %.3f%n", course, ratios.get(0), ratios.get(ratios.size() - 1),
-                    ratios.get(ratios.size() / 2));
         }
+        for (int c = 0; c < courses; c++) {
+            double[] ratios = new double[rounds];
+            for (int r = 0; r < rounds; r++) ratios[r] = speed[c][1][r] / speed[c][0][r];
+            System.out.printf(Locale.ROOT, "%s: B/A %s%n", args[4 + c], summary(ratios));
+        }
+        for (int c = 1; c < courses; c++) {
+            for (int k = 0; k < 2; k++) {
+                double[] ratios = new double[rounds];
+                for (int r = 0; r < rounds; r++) ratios[r] = speed[c][k][r] / speed[0][k][r];
+                System.out.printf(Locale.ROOT, "%s / %s, build %s: %s%n", args[4 + c], args[4], builds[k].name, summary(ratios));
+            }
+        }
+    }
+
+    /** "lowest-highest, median m" of the values. */
+    static String summary(double[] values) {
+        double[] v = values.clone();
+        java.util.Arrays.sort(v);
+        return String.format(Locale.ROOT, "%.3f-%.3f, median %.3f", v[0], v[v.length - 1], v[v.length / 2]);
     }
 }
