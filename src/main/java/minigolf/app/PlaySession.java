@@ -173,6 +173,19 @@ final class PlaySession {
         say.accept(teeOff(players.get(0)));
     }
 
+    /**
+     * The news of the stroke {@code seat} just played (hot seat and bots; online, the server decides
+     * the turn), and whose turn it is when the turn passes on:
+     * "Ann: 3.0 m to the hole; Bot (Hard) to play" (the line stays while the bot thinks, and without
+     * the turn it read as the bot's own news).
+     */
+    private String strokeNews(int seat, Integer par) {
+        String news = StrokeNews.of(lastStroke, game.player(seat), game.players().get(seat).name(),
+                game.players().size() > 1, par, world.hole().position().x(), world.hole().position().y());
+        int next = game.isOver() ? -1 : game.currentPlayer();
+        return next >= 0 && next != seat ? news + "; " + Hud.turnLine(game.players().get(next)) : news;
+    }
+
     /** "Ann tees off: drag back from the ball to aim, release to hit"; a bot only tees off (nobody aims for it). */
     static String teeOff(Player first) {
         return first.name() + " tees off" + (first.isBot() ? "." : ": drag back from the ball to aim, release to hit; ESC pauses.");
@@ -296,9 +309,7 @@ final class PlaySession {
                 lastStroke = game.completeShot();
                 animator = null;
                 int seat = lastStroke.player();
-                say.accept(StrokeNews.of(lastStroke, game.player(seat), game.players().get(seat).name(),
-                        game.players().size() > 1, round != null ? round.hole().par() : null,
-                        world.hole().position().x(), world.hole().position().y()));
+                say.accept(strokeNews(seat, round != null ? round.hole().par() : null));
                 if (game.isOver()) {
                     if (round != null) files.recordScores(round, round.finishHole());
                     else if (classicKey != null) files.recordClassic(classicKey, game);

@@ -155,6 +155,7 @@ public final class MovingObstacles {
             this.z1 = z1;
             this.t0 = t0;
             this.t1 = t1;
+            lastEntry = null;
             double best = limit;
             double minX = Math.min(x0, x1), maxX = Math.max(x0, x1), minY = Math.min(y0, y1), maxY = Math.max(y0, y1);
             double minZ = Math.min(z0, z1), maxZ = Math.max(z0, z1);
@@ -190,6 +191,7 @@ public final class MovingObstacles {
                 this.z1 = z;
                 this.t0 = t;
                 this.t1 = t + Math.min(e.motion.period(), best - t);
+                lastEntry = null;
                 if (!(t1 > t0)) continue;
                 entry = e;
                 double f = sweepEntry(1, 0);
@@ -283,6 +285,13 @@ public final class MovingObstacles {
 
         /** The ball's centre at fraction s of the current sweep, in the obstacle's frame, into scratch. */
         private void localPoint(double s) {
+            // A chord starts where the one before ended: that point is kept, not posed again.
+            if (entry == lastEntry && s == lastS) {
+                scratch[0] = lastX;
+                scratch[1] = lastY;
+                scratch[2] = lastZ;
+                return;
+            }
             double time = t0 + s * (t1 - t0);
             double px = x0 + s * (x1 - x0), py = y0 + s * (y1 - y0), pz = z0 + s * (z1 - z0);
             entry.motion.poseAt(time, pose);
@@ -291,7 +300,16 @@ public final class MovingObstacles {
             scratch[0] = pose[0] * dx + pose[3] * dy + pose[6] * dz;
             scratch[1] = pose[1] * dx + pose[4] * dy + pose[7] * dz;
             scratch[2] = pose[2] * dx + pose[5] * dy + pose[8] * dz;
+            lastEntry = entry;
+            lastS = s;
+            lastX = scratch[0];
+            lastY = scratch[1];
+            lastZ = scratch[2];
         }
+
+        /** The last point localPoint gave (of lastEntry, at lastS of the current sweep); forgotten with each new sweep. */
+        private Entry lastEntry;
+        private double lastS, lastX, lastY, lastZ;
     }
 
     /** Chords for [t0, t1]: each turns by at most {@link #MAX_TURN} (one for a slide, which is cut at its corners). */

@@ -9,8 +9,8 @@ import java.util.regex.Pattern;
 
 /**
  * The settings in a player's words: the name a player knows each setting by and what it may be,
- * in the units the game shows (ms, cm, pixels, true/false), so a broken setting reads "The physics
- * step is almost 0 ms; it must be 1 to 33 ms (1/1000 to 1/30 of a second)." where the file's own
+ * in the units the game shows (ms, cm, pixels, true/false), so a broken setting reads "The expert
+ * setting "dt" (the physics step) is almost 0 ms; it must be 1 to 33 ms (1/1000 to 1/30 of a second)." where the file's own
  * line (for the terminal) says "dt: must be 1/1000 to 1/30 s (0.001 to 0.0333), got 4.9E-324".
  * No raw doubles and no file paths.
  */
@@ -21,8 +21,10 @@ final class SettingWords {
 
     private static final String ON_OFF = "true (on) or false (off)";
     private static final Map<String, Words> WORDS = Map.ofEntries(
-            Map.entry("integrator", new Words("The physics method", "euler, rk2 or rk4", 1, "")),
-            Map.entry("dt", new Words("The physics step", "1 to 33 ms (1/1000 to 1/30 of a second)", 1000, " ms")),
+            // Physics is no player's setting (the editor's and the command line's): named as the file has
+            // it, so a player who edited the file finds it, and called expert, since Settings never shows it.
+            Map.entry("integrator", new Words("The expert setting \"integrator\" (the physics method)", "euler, rk2 or rk4", 1, "")),
+            Map.entry("dt", new Words("The expert setting \"dt\" (the physics step)", "1 to 33 ms (1/1000 to 1/30 of a second)", 1000, " ms")),
             Map.entry("vsync", new Words("Vsync", ON_OFF, 1, "")),
             Map.entry("frameLimit", new Words("The frame limit", "a whole number from 0 (no limit) to 1000 frames a second", 1, "")),
             Map.entry("fullscreen", new Words("Full screen", ON_OFF, 1, "")),

@@ -20,6 +20,8 @@ public final class ForceField {
     private final double[] pushX, pushY;
     /** Each push zone's bounding rectangle: minX, minY, maxX, maxY. */
     private final double[] pushBoxes;
+    /** Whether each push zone is a rectangle: then its bounding rectangle is the zone (the same comparisons). */
+    private final boolean[] pushRect;
     // Magnets: centre, radius, strength (> 0 attracts).
     private final double[] magnetX, magnetY, magnetRadius, magnetStrength;
     // The box round every push zone and magnet, for near().
@@ -31,11 +33,13 @@ public final class ForceField {
         pushX = new double[n];
         pushY = new double[n];
         pushBoxes = new double[4 * n];
+        pushRect = new boolean[n];
         double x0 = Double.POSITIVE_INFINITY, y0 = Double.POSITIVE_INFINITY;
         double x1 = Double.NEGATIVE_INFINITY, y1 = Double.NEGATIVE_INFINITY;
         for (int k = 0; k < n; k++) {
             PushZone z = pushZones.get(k);
             pushShapes[k] = z.shape();
+            pushRect[k] = z.shape() instanceof Shape.Rect;
             pushX[k] = z.push().x();
             pushY[k] = z.push().y();
             double[] box = ShapeBoxes.of(z.shape());
@@ -110,7 +114,7 @@ public final class ForceField {
             return;
         }
         for (int k = 0; k < pushShapes.length; k++) {
-            if (pushShapes[k].contains(x, y)) {
+            if (inZone(k, x, y)) {
                 px += pushX[k];
                 py += pushY[k];
             }
@@ -119,20 +123,11 @@ public final class ForceField {
         out[1] = py;
     }
 
-    /** Whether the push is the same at both points (no push zone's edge that matters lies between). */
-    public boolean samePush(double x0, double y0, double x1, double y1) {
-        double ax = 0, ay = 0, bx = 0, by = 0;
-        for (int k = 0; k < pushShapes.length; k++) {
-            if (pushShapes[k].contains(x0, y0)) {
-                ax += pushX[k];
-                ay += pushY[k];
-            }
-            if (pushShapes[k].contains(x1, y1)) {
-                bx += pushX[k];
-                by += pushY[k];
-            }
-        }
-        return ax == bx && ay == by;
+    /** Whether push zone k holds the point: Shape.Rect's own test, on the stored box, for a rectangle. */
+    private boolean inZone(int k, double x, double y) {
+        if (!pushRect[k]) return pushShapes[k].contains(x, y);
+        double[] b = pushBoxes;
+        return x >= b[4 * k] && x <= b[4 * k + 2] && y >= b[4 * k + 1] && y <= b[4 * k + 3];
     }
 
     /** The magnets' pull at (x, y), added to out[0], out[1]. */

@@ -73,12 +73,12 @@ final class PathSweep {
         double bulge = 0.125 * tau * (Math.abs(vx0 - vx1) + Math.abs(vy0 - vy1));
         if (!solids.anyNear(loX - bulge, loY - bulge, hiX + bulge, hiY + bulge)) return false;
         // Every point of the Hermite curve lies within (4/27)(|v0 tau - c| + |v1 tau - c|) of its
-        // chord c, so every chord swept below lies in this rectangle: with no shape near it, no
+        // chord c, so every chord swept below stays that close to c: with no shape near it, no
         // sweep can meet one, and the terrain samples and sweeps of the chords are saved.
         double ex0 = vx0 * tau - (x1 - x0), ey0 = vy0 * tau - (y1 - y0);
         double ex1 = vx1 * tau - (x1 - x0), ey1 = vy1 * tau - (y1 - y0);
         double reach = 4.0 / 27 * (Math.sqrt(ex0 * ex0 + ey0 * ey0) + Math.sqrt(ex1 * ex1 + ey1 * ey1)) * (1 + 1e-9) + 1e-12;
-        if (!solids.anyShapeNear(loX - reach, loY - reach, hiX + reach, hiY + reach)) return false;
+        if (!solids.anyShapeNearPath(x0, y0, x1, y1, reach)) return false;
         // A path that does not turn (the velocity changes only along the chord, as on flat ground)
         // is its chord: one sweep. Sideways, the cubic strays by about |dv x chord| tau / 8.
         double cx = x1 - x0, cy = y1 - y0, chord = Math.sqrt(cx * cx + cy * cy);

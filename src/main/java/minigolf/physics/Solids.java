@@ -51,6 +51,19 @@ final class Solids {
     }
 
     /**
+     * Whether anything may come within {@code margin} of the segment from (x0, y0) to (x1, y1): still
+     * shapes by their outlines ({@link CollisionScene#anyShapeNearPath}), gates and moving obstacles
+     * by the segment's rectangle.
+     */
+    boolean anyShapeNearPath(double x0, double y0, double x1, double y1, double margin) {
+        double minX = Math.min(x0, x1) - margin, maxX = Math.max(x0, x1) + margin;
+        double minY = Math.min(y0, y1) - margin, maxY = Math.max(y0, y1) + margin;
+        return (gates != null && gates.anyNear(minX, minY, maxX, maxY))
+                || (moving != null && moving.anyNear(minX, minY, maxX, maxY))
+                || (scene != null && scene.anyShapeNearPath(x0, y0, x1, y1, margin));
+    }
+
+    /**
      * Sweeps the ball's centre from p0 (course clock t0) to p1 (t1) against everything; the first
      * contact in {@code hit}. A still contact's fraction is the sweep's exact one; a moving
      * obstacle's is already backed off by {@code skin} in its frame ({@link Hit#moving} set).

@@ -224,6 +224,20 @@ final class StepLocator {
     /** Whether (x, y) has the friction zone {@code zone} and the push of the ball's position. */
     private boolean sameRegion(int zone, double x, double y) {
         if (friction.zoneAt(x, y) != zone) return false;
-        return forces == null || !forces.hasPushZones() || forces.samePush(ball.x, ball.y, x, y);
+        if (forces == null || !forces.hasPushZones()) return true;
+        // The push at the ball's position, kept while the ball stays there (a location asks many times).
+        if (ball.x != pushAtX || ball.y != pushAtY) {
+            forces.push(ball.x, ball.y, pushHere);
+            ballPushX = pushHere[0];
+            ballPushY = pushHere[1];
+            pushAtX = ball.x;
+            pushAtY = ball.y;
+        }
+        forces.push(x, y, pushHere);
+        return pushHere[0] == ballPushX && pushHere[1] == ballPushY;
     }
+
+    /** The push at (pushAtX, pushAtY), the ball's position when last asked; a buffer. */
+    private double pushAtX = Double.NaN, pushAtY = Double.NaN, ballPushX, ballPushY;
+    private final double[] pushHere = new double[2];
 }

@@ -1,5 +1,6 @@
 package minigolf.app;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -30,8 +31,9 @@ import static org.lwjgl.glfw.GLFW.GLFW_MOUSE_BUTTON_LEFT;
  * The game window in an online room under Xvfb: Ann hosts a room on Flat from the window, a headless
  * bot client joins with the code, Ann's scripted ace goes to the server, the bot's strokes come back
  * and are animated; the window shows the same round card the other client printed, and its "Play
- * again" (clicked) opens Play online; the seat is remembered for a resume, and the online round
- * saves and loads back as a hot-seat round does.
+ * again" (clicked) opens Play online, after "Watch hole 1 again" has replayed every stroke where the
+ * server ended it; the seat is remembered for a resume, and the online round saves and loads back as
+ * a hot-seat round does.
  */
 @minigolf.render.NeedsDisplay
 class OnlineWindowTest {
@@ -49,15 +51,18 @@ class OnlineWindowTest {
                     null, List.of(new double[]{3.425, 0.2854}), 20, new SettingsStore(config), true, false));
             AtomicReference<String> bobsCard = new AtomicReference<>();
             AtomicReference<Throwable> bobFailed = new AtomicReference<>();
-            boolean[] sawLobby = {false}, sawPlay = {false};
+            boolean[] sawLobby = {false}, sawPlay = {false}, sawReplay = {false};
             int[] finalCardPasses = {0};
             app.onLoopPass((pass, w) -> {
                 sawLobby[0] |= app.screen() == app.screens().lobby();
                 sawPlay[0] |= app.screen() == app.screens().playing();
+                sawReplay[0] |= app.screen() == app.screens().replay();
                 if (app.screen() != app.screens().roundCard() || app.roundGame() == null || !app.roundGame().isOver()) return;
-                // The final card, drawn a few times (a new panel takes its size in its second frame):
-                // a click on its "Play again", as the pointer would make it.
-                if (++finalCardPasses[0] == 5) {
+                // The final card, drawn a few times (a new panel takes its size in its second frame): its "Watch
+                // hole 1 again" (the button's action), back on the card when the replay is over, then a click on
+                // its "Play again", as the pointer would make it.
+                if (++finalCardPasses[0] == 3) app.watchReplay();
+                if (finalCardPasses[0] == 8) {
                     float[] r = app.screens().roundCard().playAgainBounds();
                     app.uiLayer().mouseMove(r[0] + r[2] / 2, r[1] + r[3] / 2);
                     app.uiLayer().mouseButton(GLFW_MOUSE_BUTTON_LEFT, true);
@@ -87,6 +92,9 @@ class OnlineWindowTest {
             assertTrue(finalCardPasses[0] >= 5, "the final card was shown");
             assertEquals(app.screens().online(), app.screen(), "after an online round Play again opens Play online");
             assertEquals(1, round.finishedScores()[0][0], "Ann's scripted putt holes: v = sqrt(2 mu g d) at the hole");
+            assertTrue(sawReplay[0], "the hole was watched again");
+            assertArrayEquals(new int[]{1 + round.finishedScores()[0][1], 0}, app.replayCounts(),
+                    "every stroke of the online hole replayed, none ended elsewhere than the server ended it");
             for (int i = 0; i < 100 && bobsCard.get() == null && bobFailed.get() == null; i++) Thread.sleep(100);
             assertNull(bobFailed.get());
             JsonNode card = Json.parse(bobsCard.get());

@@ -38,9 +38,10 @@ class SettingsNoticeTest {
             System.setErr(stderr);
         }
         // The player reads which setting, its range in the game's units, what the file has (no raw
-        // double), what is used instead and what became of the file; no path, no field name.
+        // double), what is used instead and what became of the file; no path. A physics field is named
+        // as the file has it and called expert: Settings never shows it (it is the editor's and the CLI's).
         assertEquals("Your settings file was not used.\n"
-                + "The physics step is almost 0 ms; it must be 1 to 33 ms (1/1000 to 1/30 of a second).\n"
+                + "The expert setting \"dt\" (the physics step) is almost 0 ms; it must be 1 to 33 ms (1/1000 to 1/30 of a second).\n"
                 + "Every setting is at its default for now.\nYour file is kept: it is renamed settings.broken.json when new"
                 + " settings are saved.", app.notice());
         // The terminal's line names the file, the field and the value as written.

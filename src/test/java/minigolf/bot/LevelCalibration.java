@@ -252,15 +252,25 @@ final class LevelCalibration {
     }
 
     /**
-     * A level by name, or a candidate written NAME:ANGLE_DEGREES:PACE:robust|planner[:ACE_DEGREES:ACE_PACE]
-     * (for tuning; the last two: the error on an attempt at a hole in one, else the same).
+     * A level by name, or a candidate written NAME:ANGLE_DEGREES:PACE:robust|planner[:ACE_DEGREES:ACE_PACE][@FROM[r][/SHRINK]]
+     * (for tuning; ACE_*: the error on an attempt at a hole in one, else the same; after @ the care
+     * ({@link LevelBot.Care}): from which stroke, r to lay up then, the shrink per stroke, 0.5 unless given).
      */
     static Bot bot(String level) {
+        // Optional care: NAME:...@FROM[r][/SHRINK] (r: lays up as the robust bot once careful; shrink 0.5 unless given)
+        LevelBot.Care care = LevelBot.Care.HALVING_FROM_SIXTH;
+        if (level.contains("@")) {
+            String c = level.substring(level.indexOf('@') + 1);
+            level = level.substring(0, level.indexOf('@'));
+            boolean layUp = c.contains("r");
+            String[] parts = c.replace("r", "").split("/");
+            care = new LevelBot.Care(Integer.parseInt(parts[0]), parts.length > 1 ? Double.parseDouble(parts[1]) : 0.5, layUp);
+        }
         String[] p = level.split(":");
         if (p.length == 1) return Bots.create(level);
         HumanError error = new HumanError(Math.toRadians(Double.parseDouble(p[1])), Double.parseDouble(p[2]));
         HumanError ace = p.length > 4 ? new HumanError(Math.toRadians(Double.parseDouble(p[4])), Double.parseDouble(p[5])) : error;
-        return new LevelBot(p[0], error, ace, p[3].equals("robust"));
+        return new LevelBot(p[0], error, ace, p[3].equals("robust"), care);
     }
 
     private static String option(String[] args, String prefix, String fallback) {

@@ -26,10 +26,10 @@ class SettingWordsTest {
     @Test
     void aNumberOutOfRangeNamesTheSettingItsRangeAndTheValueInTheGamesUnits() throws Exception {
         String step = "; it must be 1 to 33 ms (1/1000 to 1/30 of a second).";
-        assertEquals("The physics step is almost 0 ms" + step, forPlayer("{\"dt\": 4.9e-324}"));
-        assertEquals("The physics step is 5000 ms" + step, forPlayer("{\"dt\": 5}"));
-        assertEquals("The physics step is 0.5 ms" + step, forPlayer("{\"dt\": 0.0005}"));
-        assertEquals("The physics step is empty (null)" + step, forPlayer("{\"dt\": null}"));
+        assertEquals("The expert setting \"dt\" (the physics step) is almost 0 ms" + step, forPlayer("{\"dt\": 4.9e-324}"));
+        assertEquals("The expert setting \"dt\" (the physics step) is 5000 ms" + step, forPlayer("{\"dt\": 5}"));
+        assertEquals("The expert setting \"dt\" (the physics step) is 0.5 ms" + step, forPlayer("{\"dt\": 0.0005}"));
+        assertEquals("The expert setting \"dt\" (the physics step) is empty (null)" + step, forPlayer("{\"dt\": null}"));
         String frames = "; it must be a whole number from 0 (no limit) to 1000 frames a second.";
         assertEquals("The frame limit is over a million" + frames, forPlayer("{\"frameLimit\": 99999999999}"));
         assertEquals("The frame limit is 2.5" + frames, forPlayer("{\"frameLimit\": 2.5}"));
@@ -44,7 +44,7 @@ class SettingWordsTest {
 
     @Test
     void choicesSwitchesSizesNamesAndFolders() throws Exception {
-        assertEquals("The physics method is \"verlet\"; it must be euler, rk2 or rk4.", forPlayer("{\"integrator\": \"verlet\"}"));
+        assertEquals("The expert setting \"integrator\" (the physics method) is \"verlet\"; it must be euler, rk2 or rk4.", forPlayer("{\"integrator\": \"verlet\"}"));
         assertEquals("The graphics quality is \"ultra\"; it must be auto, high or low.", forPlayer("{\"graphics\": \"ultra\"}"));
         assertEquals("Vsync is \"yes\"; it must be true (on) or false (off).", forPlayer("{\"vsync\": \"yes\"}"));
         assertEquals("The aim guide is 1; it must be true (on) or false (off).", forPlayer("{\"aimGuide\": 1}"));

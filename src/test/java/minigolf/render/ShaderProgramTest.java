@@ -20,6 +20,29 @@ class ShaderProgramTest {
         if (window != null) window.close();
     }
 
+    /**
+     * Issue 29's soak: a scene built again (every new hole) compiled every program afresh, and the
+     * process grew by tens of kilobytes a hole under llvmpipe. Now a program is compiled once per
+     * context: loading it again hands out the same one, and close() leaves it for the next scene.
+     */
+    @Test
+    void aProgramIsCompiledOncePerContextAndOutlivesClose() {
+        ShaderProgram first = ShaderProgram.load("blit");
+        int kept = ShaderProgram.sharedCount();
+        first.use();
+        int id = org.lwjgl.opengl.GL11.glGetInteger(org.lwjgl.opengl.GL20.GL_CURRENT_PROGRAM);
+        org.lwjgl.opengl.GL20.glUseProgram(0); // a deleted program in use would still count as a program
+        first.close();
+        assertTrue(org.lwjgl.opengl.GL20.glIsProgram(id), "close() keeps a program shared for the context");
+        ShaderProgram again = ShaderProgram.load("blit");
+        assertSame(first, again, "the second scene takes the program the first compiled");
+        assertEquals(kept, ShaderProgram.sharedCount(), "nothing compiled the second time");
+        ShaderProgram variant = ShaderProgram.load("blit", "UNUSED_IN_BLIT 1");
+        assertNotSame(first, variant, "a variant with defines is a program of its own");
+        assertSame(variant, ShaderProgram.load("blit", "UNUSED_IN_BLIT 1"));
+        assertEquals(kept + 1, ShaderProgram.sharedCount());
+    }
+
     static final String VERT = "layout(location = 0) in vec3 aPosition;\nvoid main() { gl_Position = vec4(aPosition, 1.0); }\n";
 
     @Test

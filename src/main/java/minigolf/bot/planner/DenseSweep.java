@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
+import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 
 /**
@@ -40,11 +41,17 @@ final class DenseSweep {
     record Pass(Shot shot, double distance, double speedThere) {
     }
 
+    /** A coarse shot that came to rest on the course, and where: a lay-up {@link AceLayup} may look ahead from. */
+    record Rest(Shot shot, double x, double y) {
+    }
+
     private final Stroke s;
     /** Lay-up targets collected from the coarse sweep's paths (null: none). */
     private final MapTwoStrokes layups;
     private final double[] speeds;
     private final double[] fineSpeeds;
+    /** The coarse sweep's rest points (filled by {@link #holeInOne}). */
+    private final List<Rest> rests = new ArrayList<>();
 
     DenseSweep(Stroke s) {
         this(s, null);
@@ -84,7 +91,7 @@ final class DenseSweep {
             for (double fraction : speeds) {
                 double speed = vMax * fraction;
                 Shot shot = s.sim.limit(Shot.polar(angle, speed));
-                Pass p = pass(shot, layups == null ? null : layups.tracer(shot));
+                Pass p = pass(shot, layups == null ? null : layups.tracer(shot), true);
                 if (p == null) return shot;
                 if (p.distance() < NEAR) near.add(p);
             }
@@ -129,16 +136,22 @@ final class DenseSweep {
         return null;
     }
 
-    /** Simulates a shot; null when it holes out. */
-    private Pass pass(Shot shot) {
-        return pass(shot, null);
+    /** The coarse sweep's shots that came to rest (in sweep order; empty before {@link #holeInOne}). */
+    List<Rest> rests() {
+        return rests;
     }
 
-    private Pass pass(Shot shot, MapTwoStrokes.Runs runs) {
+    /** Simulates a shot; null when it holes out. */
+    private Pass pass(Shot shot) {
+        return pass(shot, null, false);
+    }
+
+    private Pass pass(Shot shot, MapTwoStrokes.Runs runs, boolean keepRest) {
         Approach approach = new Approach(s.holeX, s.holeY, s.px, s.py, shot);
         ShotResult r = s.sim.simulate(s.px, s.py, shot, runs == null ? approach : Stroke.both(approach, runs));
         if (runs != null) runs.end(r);
         if (CountingSimulator.holed(r)) return null;
+        if (keepRest && r.outcome() == Outcome.STOPPED) rests.add(new Rest(shot, r.endX(), r.endY()));
         return new Pass(shot, Math.sqrt(approach.best), Math.hypot(approach.cvx, approach.cvy));
     }
 

@@ -53,6 +53,8 @@ public final class PlannerBot extends SearchBot {
     private CourseMaps maps;
     /** The positions played from this game: no stroke may lead back to one. */
     private final CycleGuard cycles = new CycleGuard();
+    /** Simulations this game's {@link AceLayup} look-aheads have used (the quick plan on putts-only courses). */
+    private long aceLayupSpent;
     /** Shots the look-ahead found holing from a lay-up's rest point: reused when the ball is there. */
     private final List<Solved> solved = new ArrayList<>();
     private World planWorld;
@@ -147,6 +149,7 @@ public final class PlannerBot extends SearchBot {
         chooseSearch(request);
         maps.prepare(world, request.token());
         cycles.visit(world, px, py, request.strokesTaken());
+        if (request.strokesTaken() == 0) aceLayupSpent = 0;
         for (Solved k : solved) {
             // The lay-up came to rest exactly where the look-ahead holed out from: its shot, no new simulation.
             if (k.world() == world && k.x() == px && k.y() == py) return k.shot();
@@ -188,11 +191,13 @@ public final class PlannerBot extends SearchBot {
             Shot shot = new HoleInOne(stroke).holeInOne();
             if (shot != null) return shot;
             MapTwoStrokes mapLayups = fullSearch ? new MapTwoStrokes(stroke, onePuttMap(stroke)) : null;
+            DenseSweep dense = null;
             if (fullSearch ? request.strokesTaken() == 0 : sweepsAllRound(world)) {
                 // Search all round, densely, before settling for two: the full search on the first
                 // stroke (its paths also give the one-putt map's lay-ups their targets), the quick
                 // plan on every stroke to a capture hole (sweepsAllRound).
-                shot = new DenseSweep(stroke, mapLayups).holeInOne();
+                dense = new DenseSweep(stroke, mapLayups);
+                shot = dense.holeInOne();
                 if (shot != null) return shot;
             }
             sim.phase("two strokes");
@@ -214,6 +219,10 @@ public final class PlannerBot extends SearchBot {
             // The sweep looks for two strokes: worth it when the plan sees no lay-up or a one-putt one.
             if (planned == null || planned.strokesLeft() <= 1) {
                 shot = twoStrokes.layupSweep();
+                if (shot != null) return shot;
+            }
+            if (!fullSearch && dense != null) {
+                shot = aceLayup(stroke, dense);
                 if (shot != null) return shot;
             }
             if (fullSearch) {
@@ -238,7 +247,10 @@ public final class PlannerBot extends SearchBot {
             // Far from a capture hole (or no way along the ground): a shot may still get there by
             // cushions, pushes or a teleport, which no ground path sees (the classic tracks).
             sim.phase("direct");
-            Shot shot = new DenseSweep(stroke).holeInOne();
+            DenseSweep dense = new DenseSweep(stroke);
+            Shot shot = dense.holeInOne();
+            if (shot != null) return shot;
+            shot = aceLayup(stroke, dense);
             if (shot != null) return shot;
         }
         if (fullSearch && request.strokesTaken() == 0 && Double.isFinite(pathLength) && pathLength > 1.3 * reach
@@ -257,6 +269,16 @@ public final class PlannerBot extends SearchBot {
         if (layup != null) return layup;
         Shot best = sim.bestShot();
         return best != null ? best : directGuess(world, request.ballX(), request.ballY());
+    }
+
+    /** The quick plan's look-ahead sweeps ({@link AceLayup}), within this game's share of the budget. */
+    private Shot aceLayup(Stroke stroke, DenseSweep dense) {
+        long allowance = (long) (AceLayup.SHARE * stroke.sim.budget()) - aceLayupSpent;
+        if (allowance <= 0) return null;
+        AceLayup search = new AceLayup(stroke, allowance);
+        Shot shot = search.search(dense.rests());
+        aceLayupSpent += search.spent();
+        return shot;
     }
 
     /**

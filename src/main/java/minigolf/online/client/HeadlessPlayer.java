@@ -72,6 +72,13 @@ public final class HeadlessPlayer {
         return this;
     }
 
+    /** Sends a shot again that has had no answer for {@code wait} ({@link #RESEND_AFTER} unless set). */
+    public HeadlessPlayer resendAfter(Duration wait) {
+        if (wait.isNegative() || wait.isZero()) throw new IllegalArgumentException("resend wait must be positive: " + wait);
+        resendNanos = wait.toNanos();
+        return this;
+    }
+
     /** This turn's pause before the shot, in nanoseconds. */
     long thinkNanos() {
         double factor = thinkRandom == null || thinkSpread == 0 ? 1 : 1 + thinkSpread * (2 * thinkRandom.nextDouble() - 1);
@@ -111,6 +118,17 @@ public final class HeadlessPlayer {
     private long retryAt = Long.MIN_VALUE;
     /** How long after a refusal the player tries its shot again (the server's rate limit refills meanwhile). */
     static final long RETRY_NANOS = 1_000_000_000L;
+    /**
+     * A shot with no answer at all (no stroke, no refusal) for this long is sent again: a message lost on its
+     * way (the server drops a message over its rate limit without a reply when it replied to one within the
+     * second) would otherwise leave the seat, and its room, waiting for good. Longer than the slowest answer
+     * measured (25.3 s, 1,000 players at the start of every round: docs/online.md); a shot that was only slow
+     * is refused as stale when sent again, so no stroke is played twice.
+     */
+    public static final Duration RESEND_AFTER = Duration.ofSeconds(30);
+    private long resendNanos = RESEND_AFTER.toNanos();
+    /** When this seat's unanswered shot left (System.nanoTime). */
+    private long shotSentNanos;
 
     public HeadlessPlayer(Options options, Consumer<String> out, Consumer<String> log, Timing timing) {
         this.options = options;
@@ -171,6 +189,15 @@ public final class HeadlessPlayer {
                     continue;
                 }
                 waitMillis = Math.max(1, (shootAt - now) / 1_000_000);
+            } else if (mirror.isMyTurn() && shotAt == mirror.seq()) {
+                long now = System.nanoTime(), resendAt = shotSentNanos + resendNanos;
+                if (now - resendAt >= 0) {
+                    log.accept(String.format(java.util.Locale.ROOT, "no answer to the shot at event %d for %.0f s; sending it again",
+                            shotAt, resendNanos / 1e9));
+                    shotAt = -1;
+                    continue;
+                }
+                waitMillis = Math.max(1, Math.min(waitMillis, (resendAt - now) / 1_000_000));
             }
             Object item = inbox.poll(waitMillis, TimeUnit.MILLISECONDS);
             if (item == null) {
@@ -253,7 +280,8 @@ public final class HeadlessPlayer {
         double speed = Math.sqrt(ground * ground + v[2] * v[2]);
         double loft = Math.min(Loft.MAX_DEGREES, Loft.degreesOf(v[0], v[1], v[2]));
         double ax = ground > 0 ? v[0] / ground * speed : 0, ay = ground > 0 ? v[1] / ground * speed : speed;
-        if (timing != null) timing.shotSent(mirror.seq(), seat, System.nanoTime());
+        shotSentNanos = System.nanoTime();
+        if (timing != null) timing.shotSent(mirror.seq(), seat, shotSentNanos);
         client.send(new ClientMessage.Shot(mirror.seq(), ax, ay, loft, v[3]));
     }
 

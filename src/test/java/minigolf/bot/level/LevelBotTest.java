@@ -14,6 +14,7 @@ import minigolf.bot.CancellationToken;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
 import minigolf.bot.noise.HumanError;
+import minigolf.bot.noise.RobustBot;
 import minigolf.bot.planner.PlannerBot;
 import minigolf.bot.play.Bots;
 import minigolf.bot.play.Playthrough;
@@ -55,13 +56,42 @@ class LevelBotTest {
     }
 
     @Test
-    void theErrorHalvesWithEveryStrokeFromTheSixth() {
+    void theErrorShrinksWithEveryStrokeOnceCareful() {
+        // medium (and hard): halving from the sixth stroke.
+        LevelBot medium = new LevelBot(Level.MEDIUM);
+        HumanError full = Level.MEDIUM.error();
+        for (int s = 0; s < 5; s++) assertEquals(full, medium.errorAfter(s));
+        assertEquals(full.angle() / 2, medium.errorAfter(5).angle(), 1e-15);
+        assertEquals(full.pace() / 4, medium.errorAfter(6).pace(), 1e-15);
+        assertEquals(full.pace() / 32, medium.errorAfter(9).pace(), 1e-15);
+        // easy: its own care.
         LevelBot easy = new LevelBot(Level.EASY);
-        HumanError full = Level.EASY.error();
-        for (int s = 0; s < LevelBot.CAREFUL_FROM; s++) assertEquals(full, easy.errorAfter(s));
-        assertEquals(full.angle() / 2, easy.errorAfter(5).angle(), 1e-15);
-        assertEquals(full.pace() / 4, easy.errorAfter(6).pace(), 1e-15);
-        assertEquals(full.pace() / 32, easy.errorAfter(9).pace(), 1e-15);
+        LevelBot.Care care = Level.EASY.care();
+        for (int s = 0; s < care.from(); s++) assertEquals(Level.EASY.error(), easy.errorAfter(s));
+        assertEquals(Level.EASY.error().angle() * care.shrink(), easy.errorAfter(care.from()).angle(), 1e-15);
+        assertEquals(Level.EASY.error().pace() * Math.pow(care.shrink(), 3), easy.errorAfter(care.from() + 2).pace(), 1e-15);
+    }
+
+    /**
+     * Once careful, a level that lays up plays the robust bot's shot for its own (full) error, struck
+     * with its error; before, the planner's line. On the pond the two differ (the bold line skirts the water).
+     */
+    @Test
+    void aCarefulLevelLaysUpAsTheRobustBotForItsOwnErrorAndNotBefore() throws Exception {
+        World pond = World.load(BENCH.resolve("pond.json"));
+        HumanError error = new HumanError(Math.toRadians(6), 0.2);
+        LevelBot.Care care = new LevelBot.Care(1, 1, true);
+        double max = pond.physics().maxSpeed();
+        BotRequest first = request(pond, 0, 5), second = request(pond, 1, 5);
+        Shot planner = first.simulator().limit(new PlannerBot().nextShot(first));
+        BotRequest noisy = new BotRequest(request(pond, 1, 5).simulator(), second.ballX(), second.ballY(), 1, 5,
+                error.asNoiseModel(LevelBot.PLANNING_SPEED));
+        Shot robust = noisy.simulator().limit(new RobustBot().nextShot(noisy));
+        assertNotEquals(planner, robust, "on the pond the robust bot lays up off the planner's line");
+        assertEquals(error.play(planner, new SplittableRandom(5 ^ LevelBot.ERROR_SALT), max),
+                new LevelBot("careful", error, error, false, care).nextShot(request(pond, 0, 5)), "before: the planner's line");
+        assertEquals(error.play(robust, new SplittableRandom(5 ^ LevelBot.ERROR_SALT), max),
+                new LevelBot("careful", error, error, false, care).nextShot(request(pond, 1, 5)), "careful: the robust bot's");
     }
 
     @Test
