@@ -2,7 +2,7 @@
 // defines, see LitShader), not by uniforms: llvmpipe runs both sides of every branch per pixel, so a
 // switched-off tap still cost as much as a used one.
 //   SHADOW_MAP      sample the sun's depth map of everything that stands still
-//   SHADOW_TAPS n   4 (a 3x3-texel footprint, real GPUs) or 1 (one texel, nearest: software; ShadowMap.setTaps)
+//   SHADOW_TAPS n   4 (a 3x3-texel footprint, real GPUs) or 1 (one bilinear 2x2 tap, software)
 //   BALL_SHADOWS    the balls' analytic soft shadows
 // Needs uSunDirection from lighting.glsl (included first).
 

@@ -16,7 +16,7 @@ import static org.lwjgl.opengl.GL11.glGetString;
  * @param shadowMapSize    texels per side of the sun's shadow map
  * @param waterTargetScale the water's reflection/refraction images relative to the viewport
  * @param shadowsInWater   whether the mirrored and refracted scenes sample the shadow map too
- * @param shadowTaps       depth-compare taps per shadowed pixel: 4 (a 3x3-texel footprint) or 1 (one texel, nearest)
+ * @param shadowTaps       depth-compare taps per shadowed pixel: 4 (a 3x3-texel footprint) or 1 (2x2)
  * @param vertexLit        whether the terrain and the objects are lit per vertex (Gouraud; only shadows per pixel)
  * @param terrainSpacing   the terrain mesh's finest sample spacing in metres (llvmpipe pays per triangle)
  * @param sunlitTerrain    whether terrain cells the shadow map cannot darken are drawn without the shadow tap

@@ -458,12 +458,10 @@ public final class SceneRenderer implements AutoCloseable {
         glDisable(GL_CULL_FACE);
         glEnable(GL_MULTISAMPLE);
         timer.mark("clear");
-        // The obstacles before the terrain: the early depth test then skips the ground they hide (the
-        // terrain's shading is the dearest per pixel on software rasterisers).
-        obstacles.renderInRect(frame, new int[]{0, 0, width, height});
-        timer.mark("obstacles");
         terrain.render(frame);
         timer.mark("terrain");
+        obstacles.renderInRect(frame, new int[]{0, 0, width, height});
+        timer.mark("obstacles");
         elements.render(frame);
         timer.mark("elements");
         objects.render(frame);

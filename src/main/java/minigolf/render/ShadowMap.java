@@ -110,22 +110,13 @@ public final class ShadowMap implements AutoCloseable {
         }
     }
 
-    /**
-     * Depth-compare taps per receiver pixel: 4 (each a bilinear 2x2 compare: a 3x3-texel footprint,
-     * default) or 1 (one texel, nearest: software rasterisers, where a bilinear compare reads and
-     * weighs four texels for every shadowed pixel; a texel is about a centimetre on a course).
-     */
+    /** Depth-compare taps per receiver pixel: 4 (3x3-texel footprint, default) or 1 (2x2). */
     public int taps() {
         return taps;
     }
 
     public void setTaps(int taps) {
         this.taps = taps == 1 ? 1 : 4;
-        int filter = this.taps == 1 ? GL_NEAREST : GL_LINEAR;
-        glBindTexture(GL_TEXTURE_2D, depth);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-        glBindTexture(GL_TEXTURE_2D, 0);
     }
 
     public int size() {
