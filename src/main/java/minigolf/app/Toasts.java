@@ -1,5 +1,7 @@
 package minigolf.app;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.DoubleSupplier;
 import minigolf.ui.Gui;
 import minigolf.ui.GuiCond;
@@ -13,9 +15,11 @@ import minigolf.ui.GuiWindowFlags;
 final class Toasts {
     /** How long a message stays, in seconds. */
     static final double SECONDS = 5;
+    /** Messages said together are shown one a line, the latest this many (one line cut them short). */
+    static final int MAX_LINES = 4;
 
     private final DoubleSupplier clock;
-    private String message;
+    private final List<String> lines = new ArrayList<>();
     private double until;
     private String notice;
     private float[] noticeRect;
@@ -29,15 +33,18 @@ final class Toasts {
 
     void say(String text) {
         double now = clock.getAsDouble();
-        // Said together (a holed stroke and the personal best it set): both stay, side by side.
-        message = message != null && now - (until - SECONDS) < 0.5 ? message + "   \u00b7   " + text : text;
+        // Said together (a holed stroke and the personal best it set): all stay, one a line.
+        boolean together = !lines.isEmpty() && now <= until && now - (until - SECONDS) < 0.5;
+        if (!together) lines.clear();
+        lines.add(text);
+        if (lines.size() > MAX_LINES) lines.remove(0);
         until = now + SECONDS;
     }
 
-    /** The message shown now, or null. */
-    String message() {
-        if (message != null && clock.getAsDouble() > until) message = null;
-        return message;
+    /** The lines of the message shown now (the oldest first), empty when none is. */
+    List<String> messageLines() {
+        if (!lines.isEmpty() && clock.getAsDouble() > until) lines.clear();
+        return List.copyOf(lines);
     }
 
     void setNotice(String text) {
@@ -78,12 +85,12 @@ final class Toasts {
             if (Gui.button("Dismiss")) dismissNotice();
             Gui.end();
         }
-        String m = message();
-        if (m != null) {
+        List<String> m = messageLines();
+        if (!m.isEmpty()) {
             Gui.setNextWindowPos(w * 0.5f, h - 16, GuiCond.Always, 0.5f, 1f);
             Gui.begin("##message", GuiWindowFlags.NoDecoration | GuiWindowFlags.AlwaysAutoResize
                     | GuiWindowFlags.NoInputs | GuiWindowFlags.NoFocusOnAppearing);
-            Gui.text(m);
+            for (String line : m) Gui.text(line);
             Gui.end();
         }
     }
