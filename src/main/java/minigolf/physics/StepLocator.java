@@ -95,7 +95,7 @@ final class StepLocator {
      * @throws NonFiniteMotionException if the path jumps where the hazard begins
      */
     double hazard(double tau, RollingStep.Kind kind, double a1x, double a1y) {
-        double hazard = onCubic(tau, inHazard, CONFIRM);
+        double hazard = hazardOnCubic(tau);
         double inside = Math.min(tau, (hazard + CONFIRM) * tau), before = Math.max(0, (hazard - CONFIRM) * tau);
         trial.run(before, kind, a1x, a1y);
         double safeX = trial.nx, safeY = trial.ny;
@@ -111,7 +111,6 @@ final class StepLocator {
         boolean at(double x, double y);
     }
 
-    private final PointTest inHazard = (x, y) -> hazardAt(x, y) != null;
     /** The friction zone the step being cut at a zone's edge started in. */
     private int startZone;
     private final PointTest pastEdge = (x, y) -> !sameRegion(startZone, x, y);
@@ -120,7 +119,7 @@ final class StepLocator {
      * Where on the cubic through the step's ends with their velocities (the trial holds the whole
      * step; its end passes the test) the test first holds, by bisection: the fraction of the step
      * at the first point found that passes. The bisection stops once the point is within an eighth
-     * of {@code confirm} of the crossing (27 halvings for {@link #CONFIRM} instead of 50): the trial
+     * of {@code confirm} of the crossing (33 halvings for {@link #EDGE_CONFIRM} instead of 50): the trial
      * steps that confirm it lie {@code confirm} either side, so the rest would move the end found
      * by less than an eighth of that (at most 1e-8 m for a hazard).
      */
@@ -132,6 +131,57 @@ final class StepLocator {
         for (int k = 0; k < LOCATE_ITERATIONS && after - before > 0.125 * confirm; k++) {
             double mid = 0.5 * (before + after);
             if (test.at(PathSweep.hermite(mid, x0, mx0, x1, mx1), PathSweep.hermite(mid, y0, my0, y1, my1))) after = mid; else before = mid;
+        }
+        return after;
+    }
+
+    /**
+     * As {@link #onCubic} for water and the bounds (the test: {@link #hazardAt}), to the same
+     * {@link #CONFIRM} / 8, but by false position (the Illinois variant) on the point's clearance,
+     * its height above the water and its depth inside the bounds, which cross zero smoothly where
+     * the ball enters a hazard: 3 to 5 points on the cubic instead of 27 halvings, each a terrain
+     * height (a lake shot that ends in the water asks 35 heights instead of 57). The test still decides each point; where the clearance disagrees with it (a hazard
+     * zone, a deleted cell) the rest is bisection.
+     */
+    private double hazardOnCubic(double tau) {
+        BallState b = ball;
+        double x0 = b.x, y0 = b.y, mx0 = b.vx * tau, my0 = b.vy * tau;
+        double x1 = trial.nx, y1 = trial.ny, mx1 = trial.nvx * tau, my1 = trial.nvy * tau;
+        double before = 0, after = 1;
+        // The clearance at both ends of the bracket (the end's height is the step end's sample).
+        double safe = Math.min(b.h, area.depthInside(x0, y0));
+        double wet = area.contains(x1, y1) ? Math.min(ground.at(x1, y1)[0], area.depthInside(x1, y1)) : area.depthInside(x1, y1);
+        boolean interpolate = safe >= 0 && wet <= 0;
+        int side = 0; // the side the last point fell on: -1 safe, 1 hazard
+        double close = 0.125 * CONFIRM;
+        for (int k = 0; k < LOCATE_ITERATIONS && after - before > close; k++) {
+            double u = interpolate && safe > wet ? before + (after - before) * safe / (safe - wet) : 0.5 * (before + after);
+            // Never at (or within a sixteenth of the tolerance of) an end: each point shrinks the bracket.
+            double keep = 0.5 * close;
+            u = Math.max(before + keep, Math.min(after - keep, u));
+            double px = PathSweep.hermite(u, x0, mx0, x1, mx1), py = PathSweep.hermite(u, y0, my0, y1, my1);
+            boolean hazard;
+            double clearance;
+            if (!area.contains(px, py)) {
+                hazard = true;
+                clearance = area.depthInside(px, py);
+            } else {
+                double h = terrain.height(px, py);
+                hazard = h < 0 || friction.entersHazard(px, py);
+                clearance = Math.min(h, area.depthInside(px, py));
+            }
+            if (hazard) {
+                after = u;
+                wet = clearance;
+                if (side == 1) safe *= 0.5; // Illinois: an end kept twice counts half
+                side = 1;
+            } else {
+                before = u;
+                safe = clearance;
+                if (side == -1) wet *= 0.5;
+                side = -1;
+            }
+            interpolate &= hazard ? clearance <= 0 : clearance >= 0;
         }
         return after;
     }
