@@ -16,18 +16,17 @@ class HazardLocationTest {
     /** Heights asked of the terrain (full samples are not counted). */
     private int heights;
 
-    /** h = c - s x along x, plus a gentle cross slope: smooth, water beyond x = c / s at y = 0. */
+    /** The plane h = c - s x + cross y (TestWorlds.plane), smooth (long steps allowed), counting heights. */
     private Terrain slope(double c, double s, double cross) {
+        Terrain plane = TestWorlds.plane(-s, cross, c);
         return new Terrain() {
             public double height(double x, double y) {
                 heights++;
-                return c - s * x + cross * y;
+                return plane.height(x, y);
             }
 
             public void sample(double x, double y, double[] out) {
-                out[0] = c - s * x + cross * y;
-                out[1] = -s;
-                out[2] = cross;
+                plane.sample(x, y, out);
             }
 
             public boolean isSmooth() {
