@@ -160,9 +160,10 @@ public final class CollisionScene {
      * the plane, a ball radius added: a sweep of the centre along any path that stays within
      * {@code margin} of the segment can only touch such a shape. Tighter than
      * {@link #anyShapeNear} round the segment's rectangle (a diagonal path's rectangle is mostly
-     * empty of it): each shape whose box is near is tested by its outline in the plane (a
-     * triangle's, separating axes against the box round the segment; a cylinder's circle by its
-     * distance). Exact as a "no", with a nanometre to spare for rounding.
+     * empty of it): the shapes near are tested by their outlines in the plane (a run of one
+     * obstacle's triangles by the convex hull of their outlines, separating axes against the box
+     * round the segment; a cylinder's circle by its distance). Exact as a "no", with a nanometre
+     * to spare for rounding.
      */
     public boolean anyShapeNearPath(double x0, double y0, double x1, double y1, double margin) {
         return proximity.anyShapeNearPath(x0, y0, x1, y1, margin);

@@ -1,5 +1,7 @@
 package minigolf.collision;
 
+import java.util.Arrays;
+
 /**
  * Cheap "may anything be touched here?" answers about a scene's still shapes, asked before the
  * sweeps of a path so that a path far from every shape costs no sweep. Each answer is exact as a
@@ -21,6 +23,109 @@ final class PathProximity {
         this.cylinders = cylinders;
         this.boxes = boxes;
         this.triangleCount = triangles.length / 12;
+        int runs = grid.runStart.length - 1;
+        hullStart = new int[runs + 1];
+        double[] hull = new double[64];
+        int used = 0;
+        double[] points = new double[2 * 3 * ShapeGrid.RUN_LENGTH];
+        for (int q = 0; q < runs; q++) {
+            hullStart[q] = used;
+            int first = grid.runStart[q], end = grid.runStart[q + 1];
+            // Runs of one obstacle: all triangles or a single cylinder; the budget keeps memory in
+            // proportion to the shapes (a run past it is tested shape by shape).
+            if (grid.cellItems[first] >= triangleCount || used > MAX_HULL_POINTS) continue;
+            int n = 0;
+            for (int k = first; k < end; k++) {
+                int o = 12 * grid.cellItems[k];
+                for (int v = 0; v < 3; v++) {
+                    points[n++] = triangles[o + 3 * v];
+                    points[n++] = triangles[o + 3 * v + 1];
+                }
+            }
+            if (hull.length < 2 * used + n + 2) hull = Arrays.copyOf(hull, 2 * (2 * used + n + 2));
+            used += convexHull(points, n / 2, hull, 2 * used);
+        }
+        hullStart[runs] = used;
+        hulls = Arrays.copyOf(hull, 2 * used);
+    }
+
+    /** The budget of hull points (x, y each) over all runs (32 MB). */
+    private static final int MAX_HULL_POINTS = 2_000_000;
+    /**
+     * Each run of triangles' outlines seen from above as one convex polygon, counter-clockwise:
+     * run q's points are hulls[2 hullStart[q] .. 2 hullStart[q + 1]) (none for a cylinder's run).
+     * A wall's or a box's 12 triangles all lie in its footprint, so 1 test serves for 12.
+     */
+    private final int[] hullStart;
+    private final double[] hulls;
+
+    /**
+     * Writes the convex hull of the n points (x, y pairs in p) counter-clockwise into out from
+     * offset at, without collinear points (Andrew's monotone chain); returns its number of points.
+     */
+    static int convexHull(double[] p, int n, double[] out, int at) {
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) order[i] = i;
+        Arrays.sort(order, (a, b) -> p[2 * a] != p[2 * b] ? Double.compare(p[2 * a], p[2 * b])
+                : Double.compare(p[2 * a + 1], p[2 * b + 1]));
+        int[] chain = new int[2 * n + 1];
+        int h = 0;
+        for (int r = 0; r < n; r++) {
+            int i = order[r];
+            while (h >= 2 && cross(p, chain[h - 2], chain[h - 1], i) <= 0) h--;
+            chain[h++] = i;
+        }
+        int lower = h + 1;
+        for (int r = n - 2; r >= 0; r--) {
+            int i = order[r];
+            while (h >= lower && cross(p, chain[h - 2], chain[h - 1], i) <= 0) h--;
+            chain[h++] = i;
+        }
+        h--; // the last point is the first again
+        // All the points one: the chain holds it twice.
+        if (h < 1 || (h == 2 && p[2 * chain[0]] == p[2 * chain[1]] && p[2 * chain[0] + 1] == p[2 * chain[1] + 1])) h = 1;
+        for (int k = 0; k < h; k++) {
+            out[at + 2 * k] = p[2 * chain[k]];
+            out[at + 2 * k + 1] = p[2 * chain[k] + 1];
+        }
+        return h;
+    }
+
+    /** The z of (b - a) x (c - a) for points a, b, c of p. */
+    private static double cross(double[] p, int a, int b, int c) {
+        return (p[2 * b] - p[2 * a]) * (p[2 * c + 1] - p[2 * a + 1]) - (p[2 * b + 1] - p[2 * a + 1]) * (p[2 * c] - p[2 * a]);
+    }
+
+    /**
+     * Whether the convex polygon of hull points [from, to) meets the box round the segment (centre
+     * m, unit axis u, half-lengths {@code along} u and {@code across} perpendicular to it): no
+     * separating axis among the box's two and the polygon's edge normals (a polygon of 2 points
+     * is a segment, of 1 a point). A nanometre to spare, so that it says "near" wherever
+     * {@link #outlineNear} would for a triangle inside it.
+     */
+    private boolean hullNear(int from, int to, double mx, double my, double ux, double uy, double along, double across) {
+        double[] h = hulls;
+        double lowU = Double.POSITIVE_INFINITY, highU = Double.NEGATIVE_INFINITY;
+        double lowN = Double.POSITIVE_INFINITY, highN = Double.NEGATIVE_INFINITY;
+        for (int k = from; k < to; k++) {
+            double px = h[2 * k] - mx, py = h[2 * k + 1] - my;
+            double pu = px * ux + py * uy, pn = py * ux - px * uy;
+            lowU = Math.min(lowU, pu);
+            highU = Math.max(highU, pu);
+            lowN = Math.min(lowN, pn);
+            highN = Math.max(highN, pn);
+        }
+        if (lowU > along + 1e-9 || highU < -along - 1e-9 || lowN > across + 1e-9 || highN < -across - 1e-9) return false;
+        for (int k = from; k < to && to - from > 1; k++) {
+            int next = k + 1 < to ? k + 1 : from;
+            double ax = h[2 * k], ay = h[2 * k + 1];
+            // The edge's outward normal (counter-clockwise polygon): every point lies on its inner side.
+            double nx = h[2 * next + 1] - ay, ny = ax - h[2 * next];
+            double half = along * Math.abs(ux * nx + uy * ny) + across * Math.abs(uy * nx - ux * ny);
+            double centre = (mx - ax) * nx + (my - ay) * ny;
+            if (centre > half + 1e-9 * (Math.abs(nx) + Math.abs(ny))) return false;
+        }
+        return true;
     }
 
     /** As {@link CollisionScene#anyShapeNear}. */
@@ -61,6 +166,11 @@ final class PathProximity {
                 for (int q = cellRuns[c], last = cellRuns[c + 1]; q < last; q++) {
                     int rb = 6 * q;
                     if (runBox[rb] > hiX || runBox[rb + 3] < loX || runBox[rb + 1] > hiY || runBox[rb + 4] < loY) continue;
+                    if (outlines && hullStart[q] < hullStart[q + 1]) {
+                        // A run of triangles: their outlines' hull decides for all of them at once.
+                        if (hullNear(hullStart[q], hullStart[q + 1], mx, my, ux, uy, along, reach)) return true;
+                        continue;
+                    }
                     for (int k = runStart[q], end = runStart[q + 1]; k < end; k++) {
                         int s = cellItems[k];
                         int b = 6 * s;
