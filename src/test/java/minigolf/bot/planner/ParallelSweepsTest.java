@@ -1,0 +1,48 @@
+package minigolf.bot.planner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import minigolf.bot.BotProgress;
+import minigolf.bot.CancellationToken;
+import minigolf.bot.TileCourses;
+import minigolf.bot.play.Bots;
+import minigolf.bot.play.PlayConditions;
+import minigolf.bot.play.Playthrough;
+import minigolf.physics.SimulationSettings;
+import minigolf.physics.World;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The full search with its sweeps spread over threads ({@link minigolf.bot.CountingSimulator#spreadOver})
+ * plays the same game as on one: every shot, result and simulation count. On tile 8675309-29 (far
+ * from the hole: the first stroke's grid of landings, the three-stroke screen cut short by its bounds,
+ * then the dense sweep, the one-putt map's sweeps, the putt sweeps) at a budget that lets every
+ * stage start but cuts the brute-force ones short, where a stop in the wrong place would show.
+ */
+class ParallelSweepsTest {
+    private static final World FAR = TileCourses.generate(8675309, 30).get(29);
+
+    private static List<String> game(int threads) {
+        Playthrough.Result r = Playthrough.play(Bots.create("planner-aces"), FAR, SimulationSettings.DEFAULT, 10, 45_000,
+                7, CancellationToken.none(), BotProgress.NONE, PlayConditions.NONE, threads);
+        List<String> lines = new ArrayList<>();
+        for (Playthrough.PlayedShot s : r.shots()) {
+            lines.add(s.shot().vx() + " " + s.shot().vy() + " " + s.shot().vz() + " -> " + s.result().outcome() + " "
+                    + s.result().endX() + " " + s.result().endY() + " after " + s.simulations());
+        }
+        lines.add("holed " + r.holed() + " in " + r.strokes() + ", " + r.simulations() + " simulations");
+        return lines;
+    }
+
+    @Test
+    void theFullSearchPlaysTheSameGameOnOneTwoAndFourThreads() {
+        List<String> one = game(1);
+        long simulations = Long.parseLong(one.get(one.size() - 1).replaceAll(".*, (\\d+) simulations", "$1"));
+        assertTrue(simulations > 30_000, one.toString());
+        assertEquals(one, game(2));
+        assertEquals(one, game(4));
+    }
+}
