@@ -190,6 +190,21 @@ public final class CountingSimulator {
 
         /** The trial's result, handed on in order on the caller's thread once it is counted: true ends the batch. */
         boolean stopsAt(T trial, ShotResult result);
+
+        /** Bare shots (each shot its own trial, no listener), each result to {@code stop}: true ends the batch. */
+        static InOrder<Shot> shots(java.util.function.BiPredicate<Shot, ShotResult> stop) {
+            return new InOrder<>() {
+                @Override
+                public Shot shot(Shot shot) {
+                    return shot;
+                }
+
+                @Override
+                public boolean stopsAt(Shot shot, ShotResult result) {
+                    return stop.test(shot, result);
+                }
+            };
+        }
     }
 
     /**

@@ -110,6 +110,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
         BotArguments.timeLimit(timeLimit);
+        BotArguments.threads("--sweep-threads", sweepThreads);
         List<Double> positions = NoiseArguments.list("--noise-position", noisePositions);
         List<Double> velocities = NoiseArguments.list("--noise-velocity", noiseVelocities);
         int workers = threads != null ? threads : defaultThreads();
@@ -126,7 +127,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 new Manifest.Options(bots, seeds, budget, maxStrokes, positions, velocities, hideFriction), files)
                 .forShard(shard);
         Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers, timeLimit,
-                RunPlan.grid(positions, velocities), hideFriction).spreadSweepsOver(BotArguments.threads("--sweep-threads", sweepThreads));
+                RunPlan.grid(positions, velocities), hideFriction).spreadSweepsOver(sweepThreads);
         Path folder = shard == null ? out : out.resolve(shard.folderName());
         PrintWriter err = spec.commandLine().getErr();
         refuseMixedFolders(shard);

@@ -149,18 +149,7 @@ class ShotBatchTest {
         for (int threads : new int[] {1, 2, 4}) {
             CountingSimulator sim = simulator(50, threads);
             List<Shot> seen = new ArrayList<>();
-            assertThrows(BudgetExhaustedException.class, () -> sim.simulateInOrder(X, Y, shots(), new CountingSimulator.InOrder<>() {
-                @Override
-                public Shot shot(Shot shot) {
-                    return shot;
-                }
-
-                @Override
-                public boolean stopsAt(Shot shot, ShotResult result) {
-                    seen.add(shot);
-                    return false;
-                }
-            }));
+            assertThrows(BudgetExhaustedException.class, () -> sim.simulateInOrder(X, Y, shots(), CountingSimulator.InOrder.shots((shot, r) -> !seen.add(shot))));
             assertEquals(50, sim.count(), threads + " threads");
             assertEquals(shots().subList(0, 50), seen, threads + " threads");
             assertEquals(sequential(50 + 1, 50, -1).best(), sim.bestShot(), threads + " threads");
@@ -173,34 +162,14 @@ class ShotBatchTest {
         CountingSimulator sim = new CountingSimulator(TILE, SimulationSettings.DEFAULT, 1000, token, BotProgress.NONE);
         sim.spreadOver(2);
         token.cancel();
-        assertThrows(BotCancelledException.class, () -> sim.simulateInOrder(X, Y, shots(), new CountingSimulator.InOrder<>() {
-            @Override
-            public Shot shot(Shot shot) {
-                return shot;
-            }
-
-            @Override
-            public boolean stopsAt(Shot shot, ShotResult result) {
-                return false;
-            }
-        }));
+        assertThrows(BotCancelledException.class, () -> sim.simulateInOrder(X, Y, shots(), CountingSimulator.InOrder.shots((shot, r) -> false)));
         assertEquals(0, sim.count());
     }
 
     @Test
     void anEmptyBatchAndBadThreadCounts() {
         CountingSimulator sim = simulator(10, 3);
-        assertNull(sim.simulateInOrder(X, Y, List.<Shot>of(), new CountingSimulator.InOrder<>() {
-            @Override
-            public Shot shot(Shot shot) {
-                return shot;
-            }
-
-            @Override
-            public boolean stopsAt(Shot shot, ShotResult result) {
-                return true;
-            }
-        }));
+        assertNull(sim.simulateInOrder(X, Y, List.<Shot>of(), CountingSimulator.InOrder.shots((shot, r) -> true)));
         assertEquals(0, sim.count());
         assertEquals(3, sim.threads());
         assertEquals(3, sim.variant(TILE, false).threads(), "variants share the setting");

@@ -116,7 +116,7 @@ final class PuttSweep {
                 }
             }
         }
-        return s.sim.simulateInOrder(s.px, s.py, grid, Sweeps.untilHoled());
+        return s.sim.simulateInOrder(s.px, s.py, grid, CountingSimulator.InOrder.shots((shot, r) -> CountingSimulator.holed(r)));
     }
 
     private static boolean sameLine(Pass a, Pass b) {
