@@ -11,6 +11,7 @@ import minigolf.bot.map.CourseGrid;
 import minigolf.bot.map.CourseMaps;
 import minigolf.bot.map.DistanceField;
 import minigolf.bot.search.SpeedGuess;
+import minigolf.course.Hole;
 import minigolf.course.HoleRule;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
@@ -35,7 +36,8 @@ final class Stroke {
     final World world;
     final CourseGrid grid;
     final DistanceField field;
-    final double px, py, holeX, holeY, radius;
+    /** The ball, and the hole this stroke plays for (the nearest on a course with several). */
+    final double px, py, holeX, holeY, radius, captureSpeed;
     final boolean capture;
     final double tolerance;
     final double pathLength;
@@ -64,15 +66,19 @@ final class Stroke {
         this.field = maps.toHole();
         this.px = px;
         this.py = py;
-        this.holeX = world.hole().position().x();
-        this.holeY = world.hole().position().y();
-        this.radius = world.hole().radius();
-        this.capture = world.hole().rule() == HoleRule.CAPTURE;
+        this.path = field.path(px, py);
+        // The hole this stroke plays for: where the field's path ends (the nearest hole along the ground).
+        double[] end = path.isEmpty() ? new double[] {px, py} : path.get(path.size() - 1);
+        Hole target = world.nearestHole(end[0], end[1]);
+        this.holeX = target.position().x();
+        this.holeY = target.position().y();
+        this.radius = target.radius();
+        this.capture = target.rule() == HoleRule.CAPTURE;
+        this.captureSpeed = target.effectiveCaptureSpeed();
         this.tolerance = Math.min(0.2 * radius, 0.03);
         this.gravity = world.physics().gravity();
         double d = field.at(px, py);
         this.pathLength = Double.isFinite(d) ? d : Math.hypot(holeX - px, holeY - py);
-        this.path = field.path(px, py);
     }
 
     /** How far a maximum-speed shot rolls on a plane through the ball and the hole. */
@@ -120,7 +126,7 @@ final class Stroke {
      * speed, then its angle turned (secant) until it crosses with no lateral miss.
      */
     Shot centreCapture(Shot onHole) {
-        double target = 0.5 * world.hole().effectiveCaptureSpeed();
+        double target = 0.5 * captureSpeed;
         double speed = onHole.speed(), angle = Math.atan2(onHole.vy(), onHole.vx());
         // Start from the energy estimate of the extra speed, then Broyden on (speed, angle).
         speed = Math.min(Math.sqrt(speed * speed + target * target), sim.maxSpeed());
