@@ -216,7 +216,13 @@ public final class CountingSimulator {
      * is neither counted nor kept. The trial that ended the batch, or null.
      */
     public <T> T simulateInOrder(double x, double y, List<T> trials, InOrder<T> order) {
-        return new ShotBatch<>(this, x, y, trials, order).run();
+        if (account.threads > 1 && trials.size() > 1) return new ShotBatch<>(this, x, y, trials, order).run();
+        // One thread: the loop itself.
+        for (T trial : trials) {
+            if (!order.mayGoOn()) return null;
+            if (order.stopsAt(trial, simulate(x, y, order.shot(trial), order.listener(trial)))) return trial;
+        }
+        return null;
     }
 
     /** The engine for a batch's helper {@code k} (1, 2, ...): made on the caller's thread, used by one thread at a time. */

@@ -1,7 +1,6 @@
 package minigolf.bot;
 
 import java.util.List;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -37,8 +36,9 @@ final class ShotBatch<T> {
     private final boolean[] done;
     /** The next trial no thread has taken yet. */
     private final AtomicInteger next = new AtomicInteger();
-    /** Set when the caller is through: helpers take no more trials. */
-    private volatile boolean over;
+    /** Guarded by {@code this}: set when the caller is through (helpers take no more trials), and the helpers at work. */
+    private boolean over;
+    private int working;
 
     ShotBatch(CountingSimulator sim, double x, double y, List<T> trials, CountingSimulator.InOrder<T> order) {
         this.sim = sim;
@@ -61,14 +61,15 @@ final class ShotBatch<T> {
     T run() {
         int n = trials.size();
         int helpers = Math.min(sim.threads() - 1, n - 1);
-        CountDownLatch finished = new CountDownLatch(Math.max(helpers, 0));
         for (int k = 1; k <= helpers; k++) {
             Simulator engine = sim.helper(k);
             POOL.execute(() -> {
+                // A helper that starts after the caller is through (a loaded machine) leaves at once.
+                if (!enter()) return;
                 try {
                     work(engine, sim.newWatchdog());
                 } finally {
-                    finished.countDown();
+                    leave();
                 }
             });
         }
@@ -86,14 +87,42 @@ final class ShotBatch<T> {
             }
             return null;
         } finally {
-            over = true;
-            awaitHelpers(finished);
+            finish();
         }
+    }
+
+    private synchronized boolean enter() {
+        if (over) return false;
+        working++;
+        return true;
+    }
+
+    private synchronized void leave() {
+        working--;
+        notifyAll();
+    }
+
+    /** No helper takes another trial; waits for those at work (their listeners and engines are in use). */
+    private synchronized void finish() {
+        over = true;
+        boolean interrupted = false;
+        while (working > 0) {
+            try {
+                wait();
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) Thread.currentThread().interrupt();
+    }
+
+    private synchronized boolean isOver() {
+        return over;
     }
 
     /** A helper: takes the next trial until none is left or the caller is through. */
     private void work(Simulator engine, CountingSimulator.Watchdog watchdog) {
-        while (!over) {
+        while (!isOver()) {
             int j = next.getAndIncrement();
             if (j >= shots.length) return;
             runTrial(j, engine, watchdog);
@@ -140,19 +169,6 @@ final class ShotBatch<T> {
                 wait();
             } catch (InterruptedException e) {
                 // A bot is stopped by its token, which the running shot checks; keep the flag for the caller.
-                interrupted = true;
-            }
-        }
-        if (interrupted) Thread.currentThread().interrupt();
-    }
-
-    private static void awaitHelpers(CountDownLatch finished) {
-        boolean interrupted = false;
-        while (true) {
-            try {
-                finished.await();
-                break;
-            } catch (InterruptedException e) {
                 interrupted = true;
             }
         }
