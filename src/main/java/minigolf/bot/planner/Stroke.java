@@ -2,6 +2,9 @@ package minigolf.bot.planner;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.BiPredicate;
+import java.util.function.BooleanSupplier;
+import java.util.function.Function;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
 import minigolf.bot.map.CourseGrid;
@@ -399,7 +402,55 @@ final class Stroke {
     private Eval evaluate(Shot shot, double tx, double ty, TrajectoryListener extra) {
         Approach approach = new Approach(holeX, holeY, px, py, shot);
         TrajectoryListener listener = extra == null ? approach : both(approach, extra);
-        ShotResult r = probe.simulate(px, py, shot, listener);
+        return evalOf(shot, tx, ty, approach, probe.simulate(px, py, shot, listener));
+    }
+
+    /** One shot of {@link #evaluateInOrder}: the caller's trial, its shot and the listeners of its path. */
+    private record Probe<T>(T trial, Shot shot, Approach approach, TrajectoryListener listener) {
+    }
+
+    /**
+     * {@link #evaluateWith} for each trial in turn (its shot {@code shotOf}, its path also to
+     * {@code extraOf}'s listener, its own), until {@code stopsAt} says so or {@code mayGoOn} says
+     * no before a trial (as a loop's bounds): the same counts, probes and choices as that loop, the
+     * shots spread over the simulator's threads ({@link CountingSimulator#simulateInOrder}). The
+     * trial that ended it, or null.
+     */
+    <T> T evaluateInOrder(List<T> trials, Function<T, Shot> shotOf, Function<T, TrajectoryListener> extraOf,
+                          BooleanSupplier mayGoOn, BiPredicate<T, Eval> stopsAt) {
+        List<Probe<T>> probes = new ArrayList<>(trials.size());
+        for (T t : trials) {
+            Shot shot = shotOf.apply(t);
+            Approach approach = new Approach(holeX, holeY, px, py, shot);
+            TrajectoryListener extra = extraOf.apply(t);
+            probes.add(new Probe<>(t, shot, approach, extra == null ? approach : both(approach, extra)));
+        }
+        Probe<T> last = probe.simulateInOrder(px, py, probes, new CountingSimulator.InOrder<>() {
+            @Override
+            public Shot shot(Probe<T> p) {
+                return p.shot();
+            }
+
+            @Override
+            public TrajectoryListener listener(Probe<T> p) {
+                return p.listener();
+            }
+
+            @Override
+            public boolean mayGoOn() {
+                return mayGoOn.getAsBoolean();
+            }
+
+            @Override
+            public boolean stopsAt(Probe<T> p, ShotResult r) {
+                return stopsAt.test(p.trial(), evalOf(p.shot(), holeX, holeY, p.approach(), r));
+            }
+        });
+        return last == null ? null : last.trial();
+    }
+
+    /** The probe's evaluation from its result and where its path passed the hole; kept among this stroke's probes. */
+    private Eval evalOf(Shot shot, double tx, double ty, Approach approach, ShotResult r) {
         boolean holed = !capture && r.outcome() == Outcome.HOLED;
         boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
         double dirX = capture ? approach.dirX : 0, dirY = capture ? approach.dirY : 0;
