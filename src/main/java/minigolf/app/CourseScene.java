@@ -189,7 +189,9 @@ final class CourseScene implements AutoCloseable {
         t.lerp(followTarget, glide(0.12f, dt));
         camera.setTarget(t);
         if (turnToHole && atRest) {
-            double hx = world.hole().position().x() - x, hy = world.hole().position().y() - y;
+            // The nearest hole: on a course with several (the classic tracks), the one most likely played for.
+            var hole = world.nearestHole(x, y).position();
+            double hx = hole.x() - x, hy = hole.y() - y;
             if (Math.hypot(hx, hy) < 1e-6) {
                 turnToHole = false;
                 return;

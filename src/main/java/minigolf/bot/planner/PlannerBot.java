@@ -273,7 +273,7 @@ public final class PlannerBot extends SearchBot {
 
     /** The quick plan's look-ahead sweeps ({@link AceLayup}), within this game's share of the budget. */
     private Shot aceLayup(Stroke stroke, DenseSweep dense) {
-        long allowance = AceLayup.allowance(stroke.sim.budget(), stroke.sim.remaining(), aceLayupSpent);
+        long allowance = (long) (AceLayup.SHARE * stroke.sim.budget()) - aceLayupSpent;
         if (allowance <= 0) return null;
         AceLayup search = new AceLayup(stroke, allowance);
         Shot shot = search.search(dense.rests());
