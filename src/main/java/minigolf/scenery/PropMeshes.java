@@ -260,8 +260,9 @@ public final class PropMeshes {
         double[] t0 = {x - fx * 0.85, y - fy * 0.85, z + 2.3}, t1 = {x + fx * 0.85, y + fy * 0.85, z + 2.3};
         w.flatQuad(l0, l1, t1, t0, WHITE);
         w.flatQuad(r1, r0, t0, t1, WHITE);
-        w.flatTriangle(l1, r1, t1, c);
-        w.flatTriangle(r0, l0, t0, c);
+        // The gables counter-clockwise seen from outside, as every face (lit and culled by it).
+        w.flatTriangle(r1, l1, t1, c);
+        w.flatTriangle(l0, r0, t0, c);
     }
 
     /** A low, smooth mound: a snow drift (white) or a dune's body (sand, its crest lighter). */
