@@ -43,10 +43,16 @@ out float vCloudAlpha;// how much cloud shows (fades towards the horizon; none b
 out vec3 vGlow;       // the sun's glow and halo, over the clouds
 out vec3 vDir;        // the view direction, for the sun's disc per pixel
 
-vec3 directionAt(vec2 ndc) {
+// From the near plane's point to the far plane's under ndc: both planes' points are linear in ndc, so
+// unnormalised this ray interpolates to each pixel's exact ray.
+vec3 rayAt(vec2 ndc) {
     vec4 nearPoint = uInverseViewProjection * vec4(ndc, -1.0, 1.0);
     vec4 farPoint = uInverseViewProjection * vec4(ndc, 1.0, 1.0);
-    return normalize(farPoint.xyz / farPoint.w - nearPoint.xyz / nearPoint.w);
+    return farPoint.xyz / farPoint.w - nearPoint.xyz / nearPoint.w;
+}
+
+vec3 directionAt(vec2 ndc) {
+    return normalize(rayAt(ndc));
 }
 
 // Clouds on a layer 1 unit up: dir.xy / dir.z, drifting with time; in texture units.
@@ -98,7 +104,13 @@ void main() {
     vCloudUv = uv;
     vCloudColor = vec3(1.0, 0.9, 0.7) * pow(s, 8.0) * 0.25;
     vCloudAlpha = up >= 0.0 ? smoothstep(0.02, 0.25, up) * 0.9 : 0.0;
+#ifdef GROUND_DETAIL
     vDir = dir;
+#else
+    // The software tier's shore is found per pixel from this ray (sky.frag normalises it): the exact ray
+    // puts it where it is whatever the size of the cell drawn (SkyPass cuts the shore's cells smaller).
+    vDir = rayAt(aNdc);
+#endif
 #if !defined(CLOUDS) && !defined(SEA_PIXEL) && !defined(GROUND_DETAIL)
     // Nothing per pixel goes between the gradient and the glow: one colour to interpolate (sky.frag).
     vSky += vGlow;
