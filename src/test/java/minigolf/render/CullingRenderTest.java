@@ -50,6 +50,19 @@ class CullingRenderTest {
         }
     }
 
+    /** A model that is not closed (here one square) keeps every face at the software tier too; a closed one (the windmill's twin) does not. */
+    @Test
+    void modelsThatAreNotClosedKeepTheirFarFaces() {
+        minigolf.mesh.TriangleMesh square = new minigolf.mesh.TriangleMesh(new float[]{0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1},
+                new float[12], new float[8], new int[]{0, 1, 2, 0, 2, 3}, List.of(), List.of());
+        minigolf.mesh.TriangleMesh twin = minigolf.course.ModelTwins.low("models/windmill.obj", null);
+        List<minigolf.course.Obstacle> models = List.of(
+                new minigolf.course.Obstacle.Model("models/square.obj", new minigolf.course.Vec3(0, 0, 0), 0, 1, 0.5, square),
+                new minigolf.course.Obstacle.Model("models/windmill.obj", new minigolf.course.Vec3(2, 0, 0), 0, 1, 0.5, twin));
+        var pieces = ObstacleMeshes.build(models, (x, y) -> 0, m -> MaterialLibrary.empty()).solidPieces();
+        assertEquals(List.of(true, false), pieces.stream().map(ObstacleMeshes.Piece::open).toList());
+    }
+
     private static int[] draw(Offscreen off, SceneRenderer r, OrbitCamera cam, boolean cull, String name) {
         r.cullBackFaces(cull);
         off.bind();
