@@ -62,13 +62,7 @@ final class ShoreSubCells {
                 for (int s = 0; s < SUB; s++) {
                     int g = group[c * SUB * SUB + t * SUB + s];
                     int a = base + t * (SUB + 1) + s, b = a + 1, cc = a + SUB + 1, d = cc + 1;
-                    int k = next[g];
-                    indices[k] = a;
-                    indices[k + 1] = b;
-                    indices[k + 2] = d;
-                    indices[k + 3] = a;
-                    indices[k + 4] = d;
-                    indices[k + 5] = cc;
+                    SkyPass.putCell(indices, next[g], a, b, cc, d);
                     next[g] += 6;
                 }
             }

@@ -194,17 +194,21 @@ public final class SkyPass implements RenderPass {
         for (int j = 0; j < GRID_Y; j++) {
             for (int i = 0; i < GRID_X; i++) {
                 int a = j * (GRID_X + 1) + i, b = a + 1, c = a + GRID_X + 1, d = c + 1;
-                int k = next[group[j * GRID_X + i]];
-                order[k] = a;
-                order[k + 1] = b;
-                order[k + 2] = d;
-                order[k + 3] = a;
-                order[k + 4] = d;
-                order[k + 5] = c;
+                putCell(order, next[group[j * GRID_X + i]], a, b, c, d);
                 next[group[j * GRID_X + i]] += 6;
             }
         }
         return counts;
+    }
+
+    /** A cell's two triangles (a, b, d and a, d, c: a lower left, b lower right, c upper left, d upper right) from out[k]. */
+    static void putCell(int[] out, int k, int a, int b, int c, int d) {
+        out[k] = a;
+        out[k + 1] = b;
+        out[k + 2] = d;
+        out[k + 3] = a;
+        out[k + 4] = d;
+        out[k + 5] = c;
     }
 
     /** Whether the cell with these corners (in order round it) lies on the ground, wholly off the shore's band. */

@@ -74,16 +74,8 @@ class ShoreSubCellsTest {
             float x0 = sub.vertices[a * 2], y0 = sub.vertices[a * 2 + 1], x1 = sub.vertices[d * 2], y1 = sub.vertices[d * 2 + 1];
             for (int s = 0; s <= 8; s++) {
                 for (int t = 0; t <= 8; t++) {
-                    float x = x0 + (x1 - x0) * s / 8, y = y0 + (y1 - y0) * t / 8;
-                    inverse.transform(near.set(x, y, -1, 1));
-                    inverse.transform(far.set(x, y, 1, 1));
-                    float nx = near.x / near.w, ny = near.y / near.w, nz = near.z / near.w;
-                    float dx = far.x / far.w - nx, dy = far.y / far.w - ny, dz = far.z / far.w - nz;
-                    assertTrue(dz < 0, "a plain small cell's point above the horizon at " + view);
-                    float u = (LEVEL - nz) / dz;
-                    float dist = ShoreCells.distanceToRect(nx + dx * u, ny + dy * u, ShoreCellsTest.RECT);
-                    assertFalse(dist >= shore.inner() && dist <= shore.outer(),
-                            "a plain small cell shows the shore at distance " + dist + " (" + view + ")");
+                    ShoreCellsTest.assertOffTheBand(inverse, x0 + (x1 - x0) * s / 8, y0 + (y1 - y0) * t / 8, shore,
+                            "a plain small cell", view);
                 }
             }
         }
