@@ -286,6 +286,7 @@ public final class SkyPass implements RenderPass {
         for (int g = 0; g < programs.length; g++) {
             if (lastSubCounts[g] > 0) {
                 use(programs[g], frame);
+                programs[g].set("uCut", 1f);
                 glDrawElements(GL_TRIANGLES, lastSubCounts[g], GL_UNSIGNED_INT, first * Integer.BYTES);
             }
             first += lastSubCounts[g];
@@ -356,6 +357,7 @@ public final class SkyPass implements RenderPass {
         shader.set("uCloudShade", frame.atmosphere.cloudShade());
         glUniform2f(shader.location("uGridStep"), 2f / GRID_X, 2f / GRID_Y);
         shader.set("uGridPixels", (float) frame.viewportWidth / GRID_X);
+        shader.set("uCut", 0f);
     }
 
     @Override
