@@ -16,6 +16,24 @@ public final class MeshClosure {
     }
 
     public static boolean closed(TriangleMesh mesh) {
+        Set<Long> edges = directedEdges(mesh);
+        if (edges == null) return false;
+        for (long e : edges) {
+            if (!edges.contains(key((int) e, (int) (e >>> 32)))) return false;
+        }
+        return true;
+    }
+
+    /**
+     * Whether neighbouring triangles are wound alike (no edge is used twice in the same direction), closed or
+     * not: a mesh standing open on the ground can be wound alike, and a closed one wound against itself is not.
+     */
+    public static boolean woundAlike(TriangleMesh mesh) {
+        return directedEdges(mesh) != null;
+    }
+
+    /** The edges between welded corners as (from, to) keys; null when one is used twice in the same direction. */
+    private static Set<Long> directedEdges(TriangleMesh mesh) {
         int[] corner = weld(mesh.positions());
         int[] idx = mesh.indices();
         Set<Long> edges = new HashSet<>();
@@ -24,13 +42,10 @@ public final class MeshClosure {
                 int a = corner[idx[t + k]], b = corner[idx[t + (k + 1) % 3]];
                 if (a == b) continue; // a degenerate edge bounds nothing
                 // The same directed edge twice: two triangles wound against each other (or more than two).
-                if (!edges.add(key(a, b))) return false;
+                if (!edges.add(key(a, b))) return null;
             }
         }
-        for (long e : edges) {
-            if (!edges.contains(key((int) e, (int) (e >>> 32)))) return false;
-        }
-        return true;
+        return edges;
     }
 
     private static long key(int from, int to) {
