@@ -40,12 +40,6 @@ public final class SkyPass implements RenderPass {
     private final int ebo = glGenBuffers();
     private final int[] order = new int[GRID_X * GRID_Y * 6];
     private final IntBuffer indices = MemoryUtil.memAllocInt(order.length);
-    /** The shore's band cells cut smaller (software tier by the sea; null elsewhere) and their buffers. */
-    private final ShoreSubCells sub;
-    private final int subVao, subVbo, subEbo;
-    private final FloatBuffer subVertices;
-    private final IntBuffer subIndices;
-    private int[] lastSubCounts = new int[8];
     private final float[] cornerUp = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final float[] cornerSun = new float[(GRID_X + 1) * (GRID_Y + 1)];
     private final Vector4f near = new Vector4f(), far = new Vector4f();
@@ -107,27 +101,6 @@ public final class SkyPass implements RenderPass {
         glEnableVertexAttribArray(0);
         glBindVertexArray(0);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
-        sub = shoreSplit ? new ShoreSubCells(GRID_X * GRID_Y) : null;
-        if (sub != null) {
-            subVao = glGenVertexArrays();
-            subVbo = glGenBuffers();
-            subEbo = glGenBuffers();
-            subVertices = MemoryUtil.memAllocFloat(sub.vertices.length);
-            subIndices = MemoryUtil.memAllocInt(sub.indices.length);
-            glBindVertexArray(subVao);
-            glBindBuffer(GL_ARRAY_BUFFER, subVbo);
-            glBufferData(GL_ARRAY_BUFFER, (long) sub.vertices.length * Float.BYTES, GL_DYNAMIC_DRAW);
-            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, subEbo);
-            glBufferData(GL_ELEMENT_ARRAY_BUFFER, (long) sub.indices.length * Integer.BYTES, GL_DYNAMIC_DRAW);
-            glVertexAttribPointer(0, 2, GL_FLOAT, false, 0, 0L);
-            glEnableVertexAttribArray(0);
-            glBindVertexArray(0);
-            glBindBuffer(GL_ARRAY_BUFFER, 0);
-        } else {
-            subVao = subVbo = subEbo = 0;
-            subVertices = null;
-            subIndices = null;
-        }
     }
 
     private static float ndcX(int i) {
@@ -194,25 +167,21 @@ public final class SkyPass implements RenderPass {
         for (int j = 0; j < GRID_Y; j++) {
             for (int i = 0; i < GRID_X; i++) {
                 int a = j * (GRID_X + 1) + i, b = a + 1, c = a + GRID_X + 1, d = c + 1;
-                putCell(order, next[group[j * GRID_X + i]], a, b, c, d);
+                int k = next[group[j * GRID_X + i]];
+                order[k] = a;
+                order[k + 1] = b;
+                order[k + 2] = d;
+                order[k + 3] = a;
+                order[k + 4] = d;
+                order[k + 5] = c;
                 next[group[j * GRID_X + i]] += 6;
             }
         }
         return counts;
     }
 
-    /** A cell's two triangles (a, b, d and a, d, c: a lower left, b lower right, c upper left, d upper right) from out[k]. */
-    static void putCell(int[] out, int k, int a, int b, int c, int d) {
-        out[k] = a;
-        out[k + 1] = b;
-        out[k + 2] = d;
-        out[k + 3] = a;
-        out[k + 4] = d;
-        out[k + 5] = c;
-    }
-
     /** Whether the cell with these corners (in order round it) lies on the ground, wholly off the shore's band. */
-    static boolean plainGround(Shore shore, float[] groundX, float[] groundY, float[] qx, float[] qy, int... corners) {
+    private static boolean plainGround(Shore shore, float[] groundX, float[] groundY, float[] qx, float[] qy, int... corners) {
         for (int k = 0; k < 4; k++) {
             qx[k] = groundX[corners[k]];
             qy[k] = groundY[corners[k]];
@@ -252,45 +221,16 @@ public final class SkyPass implements RenderPass {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         clouds.bind(0);
-        // The band cells (groups 0 and 2 where there is a shore) are drawn cut smaller, the rest as they are.
-        boolean cut = shore != null && counts[0] + counts[2] > 0;
-        lastSubCounts = cut ? sub.build(frame.inverseViewProjection, shore, order, 0, counts[0], counts[0] + counts[1],
-                counts[2], near, far) : new int[8];
         long first = 0;
         for (int g = 0; g < programs.length; g++) {
-            if (counts[g] > 0 && !(cut && (g == 0 || g == 2))) {
+            if (counts[g] > 0) {
                 use(programs[g], frame);
                 glDrawElements(GL_TRIANGLES, counts[g], GL_UNSIGNED_INT, first * Integer.BYTES);
             }
             first += counts[g];
         }
-        if (cut) drawSubCells(frame);
         glBindVertexArray(0);
         glDepthMask(true);
-    }
-
-    /** The band cells' small cells: per pixel where the band crosses them, from their corners elsewhere. */
-    private void drawSubCells(FrameContext frame) {
-        glBindVertexArray(subVao);
-        subVertices.clear();
-        subVertices.put(sub.vertices, 0, sub.vertexCount() * 2).flip();
-        glBindBuffer(GL_ARRAY_BUFFER, subVbo);
-        glBufferSubData(GL_ARRAY_BUFFER, 0, subVertices);
-        glBindBuffer(GL_ARRAY_BUFFER, 0);
-        int total = 0;
-        for (int c : lastSubCounts) total += c;
-        subIndices.clear();
-        subIndices.put(sub.indices, 0, total).flip();
-        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, subIndices);
-        long first = 0;
-        for (int g = 0; g < programs.length; g++) {
-            if (lastSubCounts[g] > 0) {
-                use(programs[g], frame);
-                programs[g].set("uCut", 1f);
-                glDrawElements(GL_TRIANGLES, lastSubCounts[g], GL_UNSIGNED_INT, first * Integer.BYTES);
-            }
-            first += lastSubCounts[g];
-        }
     }
 
     /**
@@ -314,11 +254,6 @@ public final class SkyPass implements RenderPass {
     /** The indices drawn per cell group in the last frame (see {@link #sortCells}; tests). */
     int[] lastCounts() {
         return lastCounts.clone();
-    }
-
-    /** The indices of the band cells' small cells per group in the last frame (see {@link ShoreSubCells}; tests). */
-    int[] lastSubCounts() {
-        return lastSubCounts.clone();
     }
 
     /**
@@ -357,7 +292,6 @@ public final class SkyPass implements RenderPass {
         shader.set("uCloudShade", frame.atmosphere.cloudShade());
         glUniform2f(shader.location("uGridStep"), 2f / GRID_X, 2f / GRID_Y);
         shader.set("uGridPixels", (float) frame.viewportWidth / GRID_X);
-        shader.set("uCut", 0f);
     }
 
     @Override
@@ -365,13 +299,6 @@ public final class SkyPass implements RenderPass {
         for (ShaderProgram p : programs) if (p != null) p.close();
         clouds.close();
         MemoryUtil.memFree(indices);
-        if (sub != null) {
-            MemoryUtil.memFree(subVertices);
-            MemoryUtil.memFree(subIndices);
-            glDeleteVertexArrays(subVao);
-            glDeleteBuffers(subVbo);
-            glDeleteBuffers(subEbo);
-        }
         glDeleteVertexArrays(vao);
         glDeleteBuffers(vbo);
         glDeleteBuffers(ebo);

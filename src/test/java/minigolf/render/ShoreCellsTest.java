@@ -69,26 +69,24 @@ class ShoreCellsTest {
         String view = "pitch " + pitchDegrees + ", heading " + headingDegrees;
         assertTrue(skipped > 0, "no cell skipped at " + view);
         int first = counts[0] + counts[1] + counts[2] + counts[3];
+        Vector4f near = new Vector4f(), far = new Vector4f();
         for (int k = first; k < first + skipped; k += 6) {
             // The cell's corners a, b, d: its lower-left corner index gives its column and row.
             int a = order[k], i = a % (SkyPass.GRID_X + 1), j = a / (SkyPass.GRID_X + 1);
             for (int s = 0; s <= 8; s++) {
                 for (int t = 0; t <= 8; t++) {
                     float x = 2f * (i + s / 8f) / SkyPass.GRID_X - 1, y = 2f * (j + t / 8f) / SkyPass.GRID_Y - 1;
-                    assertOffTheBand(inverse, x, y, shore, "a skipped cell", view);
+                    inverse.transform(near.set(x, y, -1, 1));
+                    inverse.transform(far.set(x, y, 1, 1));
+                    float nx = near.x / near.w, ny = near.y / near.w, nz = near.z / near.w;
+                    float dx = far.x / far.w - nx, dy = far.y / far.w - ny, dz = far.z / far.w - nz;
+                    assertTrue(dz < 0, "a skipped cell's point above the horizon at " + view);
+                    float u = (level - nz) / dz;
+                    float d = ShoreCells.distanceToRect(nx + dx * u, ny + dy * u, RECT);
+                    assertFalse(d >= shore.inner() && d <= shore.outer(),
+                            "a skipped cell shows the shore at distance " + d + " (" + view + ")");
                 }
             }
         }
-    }
-
-    /** The point of the ground under screen point (x, y) (NDC) lies below the horizon and off the shore's band. */
-    static void assertOffTheBand(Matrix4f inverse, float x, float y, SkyPass.Shore shore, String what, String view) {
-        Vector4f near = inverse.transform(new Vector4f(x, y, -1, 1)), far = inverse.transform(new Vector4f(x, y, 1, 1));
-        float nx = near.x / near.w, ny = near.y / near.w, nz = near.z / near.w;
-        float dx = far.x / far.w - nx, dy = far.y / far.w - ny, dz = far.z / far.w - nz;
-        assertTrue(dz < 0, what + "'s point above the horizon at " + view);
-        float u = (shore.level() - nz) / dz;
-        float d = ShoreCells.distanceToRect(nx + dx * u, ny + dy * u, shore.courseRect());
-        assertFalse(d >= shore.inner() && d <= shore.outer(), what + " shows the shore at distance " + d + " (" + view + ")");
     }
 }
