@@ -23,7 +23,8 @@ final class StrokeFeedback {
                                        minigolf.physics.World world, minigolf.render.CupDrop cupDrop, float[] ballColour) {
         return listener(sounds, firstStroke, e -> {
             if (cupDrop != null && e.type() == StrokeEvent.Type.HOLED) {
-                double hx = world.hole().position().x(), hy = world.hole().position().y();
+                var cupHole = world.nearestHole(e.x(), e.y()).position();
+                double hx = cupHole.x(), hy = cupHole.y();
                 cupDrop.start(e.x(), e.y(), hx, hy, world.terrain().height(hx, hy),
                         minigolf.render.ObjectsPass.visualBallRadius(), ballColour);
             }
@@ -32,7 +33,8 @@ final class StrokeFeedback {
             if (e.type() == StrokeEvent.Type.WATER) {
                 effects.burst(minigolf.render.Particles.Kind.SPLASH, e.x(), e.y(), 0, seed); // the water's surface is h = 0
             } else if (e.type() == StrokeEvent.Type.HOLED) {
-                double hx = world.hole().position().x(), hy = world.hole().position().y();
+                var cupHole = world.nearestHole(e.x(), e.y()).position();
+                double hx = cupHole.x(), hy = cupHole.y();
                 effects.burst(firstStroke ? minigolf.render.Particles.Kind.ACE_CONFETTI : minigolf.render.Particles.Kind.CONFETTI,
                         hx, hy, world.terrain().height(hx, hy), seed);
             }

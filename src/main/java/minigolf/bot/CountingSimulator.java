@@ -17,13 +17,17 @@ import minigolf.physics.World;
  * enforces the budget. It also remembers the best shot seen from the current ball position, which
  * is what a bot returns when its budget runs out.
  *
- * <p>Not thread-safe: one bot run, one thread (the token may be cancelled from any thread).
+ * <p>Not thread-safe: one bot run, one thread (the token may be cancelled from any thread). Only
+ * {@link #simulateInOrder} spreads shots over more threads ({@link #spreadOver}), each with an
+ * engine of its own, and hands their results back on the bot's thread in order.
  */
 public final class CountingSimulator {
     /** Inside one simulated shot, the token is checked every this many steps (a slow shot stays cancellable). */
     static final int STEPS_PER_CHECK = 256;
     /** Progress is reported every this many simulations. */
     public static final int PROGRESS_INTERVAL = 32;
+    /** The most threads a batch may use. */
+    public static final int MAX_THREADS = 256;
 
     /** Scores a shot for {@link #bestShot()}: lower is better. */
     @FunctionalInterface
@@ -51,6 +55,8 @@ public final class CountingSimulator {
         boolean puttsOnly;
         /** The course clock the shots are played at (plus their wait). */
         double clock;
+        /** Threads a batch ({@link #simulateInOrder}) may run its shots on, the caller's included. */
+        int threads = 1;
 
         Account(long budget, CancellationToken token, BotProgress progress) {
             this.budget = budget;
@@ -70,6 +76,8 @@ public final class CountingSimulator {
     private final boolean moving;
     /** The watchdog every shot runs under, reused (a shot allocates nothing for it). */
     private final Watchdog watchdog;
+    /** Engines of this world for a batch's helper threads, one per helper (made on the bot's thread). */
+    private final List<Simulator> helpers = new ArrayList<>();
 
     /**
      * @param budget the most simulations allowed in total ({@code Long.MAX_VALUE}: unlimited)
@@ -143,6 +151,93 @@ public final class CountingSimulator {
 
     public CancellationToken token() {
         return account.token;
+    }
+
+    /**
+     * Lets {@link #simulateInOrder} run up to {@code threads} shots at once (1: one after the other,
+     * on the caller's thread); shared with every {@link #variant}. The results, counts and choices
+     * are the same for any number.
+     */
+    public void spreadOver(int threads) {
+        if (threads < 1 || threads > MAX_THREADS) {
+            throw new IllegalArgumentException("threads must be 1 to " + MAX_THREADS + ", got " + threads);
+        }
+        account.threads = threads;
+    }
+
+    /** The threads {@link #simulateInOrder} may use (see {@link #spreadOver}). */
+    public int threads() {
+        return account.threads;
+    }
+
+    /** What {@link #simulateInOrder} needs to know of a caller's trials (a sweep's shots). */
+    public interface InOrder<T> {
+        /** The trial's shot. */
+        Shot shot(T trial);
+
+        /**
+         * The trial's listener, or null: its own, made before any shot runs, and touching nothing
+         * shared while its shot runs (the shot may run on another thread; it is read afterwards).
+         */
+        default TrajectoryListener listener(T trial) {
+            return null;
+        }
+
+        /** Checked before each trial is counted, as a loop checks its bounds: false ends the batch there. */
+        default boolean mayGoOn() {
+            return true;
+        }
+
+        /** The trial's result, handed on in order on the caller's thread once it is counted: true ends the batch. */
+        boolean stopsAt(T trial, ShotResult result);
+
+        /** Bare shots (each shot its own trial, no listener), each result to {@code stop}: true ends the batch. */
+        static InOrder<Shot> shots(java.util.function.BiPredicate<Shot, ShotResult> stop) {
+            return new InOrder<>() {
+                @Override
+                public Shot shot(Shot shot) {
+                    return shot;
+                }
+
+                @Override
+                public boolean stopsAt(Shot shot, ShotResult result) {
+                    return stop.test(shot, result);
+                }
+            };
+        }
+    }
+
+    /**
+     * The trials' shots from (x, y), exactly as if each were {@link #simulate simulated} in turn
+     * with {@code order.stopsAt} after it, stopping before a trial where {@code order.mayGoOn()}
+     * says no and after one where {@code stopsAt} says yes: the same count, budget, exceptions,
+     * known results and best shot. Up to {@link #threads()} shots run at once (each thread on an
+     * engine of its own, the world shared read-only); a shot simulated past the end of the batch
+     * is neither counted nor kept. The trial that ended the batch, or null.
+     */
+    public <T> T simulateInOrder(double x, double y, List<T> trials, InOrder<T> order) {
+        return new ShotBatch<>(this, x, y, trials, order).run();
+    }
+
+    /** The engine for a batch's helper {@code k} (1, 2, ...): made on the caller's thread, used by one thread at a time. */
+    Simulator helper(int k) {
+        while (helpers.size() < k) helpers.add(new Simulator(world, simulator.settings()));
+        return helpers.get(k - 1);
+    }
+
+    /** The engine this simulator runs shots on (a batch's own thread uses it). */
+    Simulator engine() {
+        return simulator;
+    }
+
+    /** A new watchdog on this game's token (a batch's thread each has one). */
+    Watchdog newWatchdog() {
+        return new Watchdog(account.token);
+    }
+
+    /** Whether a shot is played later than now (where obstacles move and it waits): not kept as one of now's results. */
+    boolean later(Shot shot) {
+        return moving && shot.waitSeconds() != 0;
     }
 
     /** Throws if cancelled; for bots' own long loops. */
@@ -224,23 +319,42 @@ public final class CountingSimulator {
     public ShotResult simulate(double x, double y, Shot shot, TrajectoryListener listener) {
         account.token.throwIfCancelled();
         if (moving && shot.waitSeconds() != 0) return simulateLater(x, y, shot, listener);
-        if (account.used >= account.budget) throw new BudgetExhaustedException(account.budget);
         Shot limited = limit(shot);
-        account.used++;
-        if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
+        charge();
         Watchdog watchdog = this.watchdog;
         // A listener that simulates while its shot runs gets a watchdog of its own.
         if (watchdog.busy) watchdog = new Watchdog(account.token);
+        ShotResult result = run(simulator, watchdog, x, y, limited, listener);
+        remember(x, y, limited, result);
+        return result;
+    }
+
+    /**
+     * Counts one simulation against the budget (reporting progress every so often).
+     *
+     * @throws BudgetExhaustedException if the budget is spent
+     */
+    void charge() {
+        if (account.used >= account.budget) throw new BudgetExhaustedException(account.budget);
+        account.used++;
+        if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
+    }
+
+    /** Plays a shot (already limited) on {@code engine} under {@code watchdog}, at the account's clock plus its wait. */
+    ShotResult run(Simulator engine, Watchdog watchdog, double x, double y, Shot limited, TrajectoryListener listener) {
         watchdog.busy = true;
         watchdog.inner = listener;
         watchdog.steps = 0;
-        ShotResult result;
         try {
-            result = play(simulator, account.clock, x, y, limited, watchdog);
+            return play(engine, account.clock, x, y, limited, watchdog);
         } finally {
             watchdog.inner = null;
             watchdog.busy = false;
         }
+    }
+
+    /** Keeps a result from the stroke's position among the known results and the best shot. */
+    void remember(double x, double y, Shot limited, ShotResult result) {
         // A candidate variant's results are the real world's except where it holes.
         if (primary && (real || result.outcome() != Outcome.HOLED) && x == account.fromX && y == account.fromY) {
             account.results.put(limited, result);
@@ -253,7 +367,6 @@ public final class CountingSimulator {
                 account.bestResult = result;
             }
         }
-        return result;
     }
 
     /**
@@ -261,12 +374,8 @@ public final class CountingSimulator {
      * simulation, but not kept as a candidate of this moment (its result belongs to a later one).
      */
     private ShotResult simulateLater(double x, double y, Shot shot, TrajectoryListener listener) {
-        if (account.used >= account.budget) throw new BudgetExhaustedException(account.budget);
-        account.used++;
-        if (account.used % PROGRESS_INTERVAL == 0) account.progress.update(account.used, account.budget, account.phase);
-        Watchdog watchdog = new Watchdog(account.token);
-        watchdog.inner = listener;
-        return play(simulator, account.clock, x, y, limit(shot), watchdog);
+        charge();
+        return run(simulator, new Watchdog(account.token), x, y, limit(shot), listener);
     }
 
     /**
@@ -331,7 +440,7 @@ public final class CountingSimulator {
      * {@link #STEPS_PER_CHECK} steps, so that a shot that rolls or bounces for a long time of
      * simulated time cannot hold a cancel or the time limit up.
      */
-    private static final class Watchdog implements TrajectoryListener {
+    static final class Watchdog implements TrajectoryListener {
         private final CancellationToken token;
         /** The bot's own listener for the shot running, or null. */
         TrajectoryListener inner;

@@ -41,7 +41,7 @@ final class ClassicElements {
         this.scale = scale;
     }
 
-    /** The elements of the track; {@code avoid} are points no teleport entry may hold (the start, the hole). */
+    /** The elements of the track; {@code avoid} are points no teleport entry may hold (the start, the holes). */
     static ClassicElements of(ClassicTrack track, PixelMap map, ClassicScale scale, double wallTop, List<Vec2> avoid) {
         ClassicElements e = new ClassicElements(track, map, scale);
         e.downhill();

@@ -8,6 +8,7 @@ import minigolf.course.Bounds;
 import minigolf.course.Course;
 import minigolf.course.Hole;
 import minigolf.course.HoleRule;
+import minigolf.course.Limits;
 import minigolf.course.Obstacle;
 import minigolf.course.PhysicsModel;
 import minigolf.course.PhysicsSettings;
@@ -118,15 +119,21 @@ public final class TrackConverter {
         if (blueStart == null && starts > 1) notes.add("start: the first of " + starts + " start tiles (the original draws one)");
         if (blueStart == null && start == null) notes.add("start: none on the map: the middle, as the original");
         if (holes.isEmpty()) throw new TrackFormatException(track.name() + ": the map has no hole");
-        Vec2 hole = holes.get(0);
-        if (holes.size() > 1) notes.add("holes: " + holes.size() + " on the map; only the first is a hole here");
+        if (holes.size() > 1 + Limits.EXTRA_HOLES) {
+            notes.add("holes: " + holes.size() + " on the map; the first " + (1 + Limits.EXTRA_HOLES) + " are holes here");
+            holes = holes.subList(0, 1 + Limits.EXTRA_HOLES);
+        }
 
         double width = scale.width(), height = scale.height();
         PhysicsSettings physics = new PhysicsSettings(ClassicScale.GRAVITY, scale.friction(0.0065), STATIC_FRICTION,
                 scale.maxSpeed(), PhysicsModel.CLASSIC, scale.ballRadius(), PhysicsSettings.DEFAULT_BALL_MASS,
                 PhysicsSettings.DEFAULT_DRAG_COEFFICIENT, PhysicsSettings.DEFAULT_AIR_DENSITY, null, true);
-        Hole cup = new Hole(hole, HOLE_CAPTURE_SHARE * HOLE_PIXELS / 2 * px, HoleRule.CAPTURE,
-                HOLE_CAPTURE_SPEED * scale.maxSpeed());
+        // Every hole ends the stroke, as in the original; the first (row by row) carries the flag.
+        List<Hole> cups = new ArrayList<>();
+        for (Vec2 h : holes) {
+            cups.add(new Hole(h, HOLE_CAPTURE_SHARE * HOLE_PIXELS / 2 * px, HoleRule.CAPTURE,
+                    HOLE_CAPTURE_SPEED * scale.maxSpeed()));
+        }
 
         List<Zone> zones = new ArrayList<>();
         for (Surface s : SURFACES) {
@@ -163,13 +170,16 @@ public final class TrackConverter {
         for (Vec2[] e : new Vec2[][]{{a, b}, {b, c}, {c, d}, {d, a}}) {
             obstacles.add(new Obstacle.Wall(e[0], e[1], 0, top, 0));
         }
-        ClassicElements elements = ClassicElements.of(track, map, scale, top, List.of(first, hole));
+        List<Vec2> avoid = new ArrayList<>(holes);
+        avoid.add(0, first);
+        ClassicElements elements = ClassicElements.of(track, map, scale, top, avoid);
         obstacles.addAll(elements.gates);
         notes.addAll(elements.notes);
         noteUnsupported(map, notes);
         Course course = new Course(Course.FORMAT, track.name(), new TerrainSpec.HeightExpression("0"),
-                new Bounds(0, 0, width, height), physics, first, cup, zones, obstacles)
-                .withElements(elements.pushZones, elements.magnets, elements.teleports);
+                new Bounds(0, 0, width, height), physics, first, cups.get(0), zones, obstacles)
+                .withElements(elements.pushZones, elements.magnets, elements.teleports)
+                .withHoles(cups.get(0), cups.subList(1, cups.size()));
         return new Converted(course, files, List.copyOf(notes));
     }
 

@@ -1,6 +1,7 @@
 package minigolf.cli;
 
 import minigolf.bot.Bot;
+import minigolf.bot.CountingSimulator;
 import minigolf.bot.play.Bots;
 
 /** Bot names given on the command line. */
@@ -17,6 +18,14 @@ final class BotArguments {
             throw new UserError("--time-limit: must be a number of seconds > 0 and at most 1000000, got " + seconds);
         }
         return seconds;
+    }
+
+    /** Checks a thread count for a bot's sweeps ({@code option} names it in the message): 1 to the most a simulator allows. */
+    static int threads(String option, int threads) {
+        if (threads < 1 || threads > CountingSimulator.MAX_THREADS) {
+            throw new UserError(option + ": must be 1 to " + CountingSimulator.MAX_THREADS + ", got " + threads);
+        }
+        return threads;
     }
 
     static Bot bot(String name) {

@@ -63,6 +63,11 @@ final class ExperimentCommand implements Callable<Integer> {
             description = "Worker threads (default: SLURM_CPUS_PER_TASK when set, else one per core).")
     Integer threads;
 
+    @Option(names = "--sweep-threads", paramLabel = "N",
+            description = "Threads each game's bot spreads its sweeps over, besides --threads (default: ${DEFAULT-VALUE}); "
+                    + "the same games for any N.")
+    int sweepThreads = 1;
+
     @Option(names = "--shard", paramLabel = "K/N",
             description = "Run only every N-th run starting at K (K from 0) into DIR/shard-K-of-N/ "
                     + "(default: the Slurm array task or Kubernetes index when set, else every run).")
@@ -105,6 +110,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
         BotArguments.timeLimit(timeLimit);
+        BotArguments.threads("--sweep-threads", sweepThreads);
         List<Double> positions = NoiseArguments.list("--noise-position", noisePositions);
         List<Double> velocities = NoiseArguments.list("--noise-velocity", noiseVelocities);
         int workers = threads != null ? threads : defaultThreads();
@@ -121,7 +127,7 @@ final class ExperimentCommand implements Callable<Integer> {
                 new Manifest.Options(bots, seeds, budget, maxStrokes, positions, velocities, hideFriction), files)
                 .forShard(shard);
         Experiment experiment = new Experiment(courses, bots, seeds, budget, maxStrokes, workers, timeLimit,
-                RunPlan.grid(positions, velocities), hideFriction);
+                RunPlan.grid(positions, velocities), hideFriction).spreadSweepsOver(sweepThreads);
         Path folder = shard == null ? out : out.resolve(shard.folderName());
         PrintWriter err = spec.commandLine().getErr();
         refuseMixedFolders(shard);

@@ -57,17 +57,22 @@ final class SolveCommand implements Callable<Integer> {
             description = "The bot sees every friction value as a prior and learns the truth from its strokes (default: ${DEFAULT-VALUE}).")
     boolean hideFriction;
 
+    @Option(names = "--threads", paramLabel = "N",
+            description = "Threads the bot's sweeps run on (default: ${DEFAULT-VALUE}); the game is the same for any N.")
+    int threads = 1;
+
     @Override
     public Integer call() {
         Bot chosen = BotArguments.bot(bot);
         if (maxStrokes < 1) throw new UserError("--max-strokes: must be at least 1, got " + maxStrokes);
         if (budget < 1) throw new UserError("--budget: must be at least 1, got " + budget);
         BotArguments.timeLimit(timeLimit);
+        BotArguments.threads("--threads", threads);
         NoiseModel noise = NoiseArguments.model(noisePosition, noiseVelocity);
         World world = CourseArgument.load(course);
         PlayConditions conditions = new PlayConditions(noise, hideFriction);
         Playthrough.Result result = Playthrough.play(chosen, world, SimulationSettings.DEFAULT, maxStrokes, budget,
-                seed, CancellationToken.withTimeLimit(timeLimit), BotProgress.NONE, conditions);
+                seed, CancellationToken.withTimeLimit(timeLimit), BotProgress.NONE, conditions, threads);
         spec.commandLine().getOut().println(Json.write(toJson(chosen.name(), world.course().name(), result, conditions)));
         return 0;
     }

@@ -12,22 +12,17 @@ import minigolf.course.Obstacle;
  * (walls, boxes, models) and vertical cylinders (trees, bumpers), in a uniform grid over the course
  * plane. Gates and moving obstacles are left out (they have their own collision code).
  *
- * <p>Broad phase: each shape is listed in every grid cell its bounding box touches; a sweep visits
- * only the cells its own bounding box touches and skips shapes whose 3-D bounding box it misses,
- * so 500 obstacles cost about what 5 do unless the ball is among them. Narrow phase: the exact time
- * of impact of the swept sphere with faces, edges and vertices ({@link SweepTests}), cylinder sides
- * and tops. Immutable: one scene serves every thread.
+ * <p>Broad phase ({@link ShapeGrid}): each shape is listed in every grid cell its bounding box
+ * touches; a sweep visits only the cells its own bounding box touches and skips shapes whose 3-D
+ * bounding box it misses, so 500 obstacles cost about what 5 do unless the ball is among them.
+ * Before sweeping a path the physics may ask whether anything is near it at all
+ * ({@link PathProximity}). Narrow phase: the exact time of impact of the swept sphere with faces,
+ * edges and vertices ({@link SweepTests}), cylinder sides and tops. Immutable: one scene serves
+ * every thread.
  */
 public final class CollisionScene {
     /** Triangles per obstacle tree-top rim: the rim circle is a 32-gon (within 0.5% of the radius). */
     private static final int RIM_SEGMENTS = 32;
-    private static final int MAX_CELLS_PER_AXIS = 512;
-    /** At most this many (cell, shape) entries in the grid (32 MB of ints). */
-    private static final long MAX_CELL_ENTRIES = 8_000_000;
-    /** At most this many runs (28 MB); beyond, the cells grow as for the entries. */
-    private static final int MAX_RUNS = 1_000_000;
-    /** The most entries under one run's box. */
-    static final int RUN_LENGTH = 16;
 
     private final double radius;
     // Triangles: 9 vertex coordinates + unit normal (12 doubles); bounding boxes 6 doubles per shape.
@@ -37,21 +32,9 @@ public final class CollisionScene {
     private final double[] restitution;
     private final int[] obstacleOf;
     private final int triangleCount;
-    // The grid: cell (i, j) lists shapes cellItems[cellStart[c] .. cellStart[c + 1]).
-    private final double originX, originY, cellSize;
-    private final int columns, rows;
-    private final int[] cellStart, cellItems;
-    /**
-     * Each cell's list cut into runs: consecutive entries of one obstacle, at most {@link #RUN_LENGTH}
-     * long, under one box. Cell c's runs are cellRuns[c] .. cellRuns[c + 1]; run q's entries are
-     * cellItems[runStart[q] .. runStart[q + 1]); its box (6 floats, rounded outwards, so it holds
-     * every box in it) lets a sweep skip the run at one test: a windmill model's 11,846 triangles
-     * cost a few tests where a chord passes it.
-     */
-    private final int[] cellRuns, runStart;
-    private final float[] runBoxes;
-    /** Each shape's first grid column and row: a sweep tests a shape only in the first of its cells it visits. */
-    private final int[] firstColumn, firstRow;
+    /** The broad phase: which shapes are listed where. */
+    private final ShapeGrid grid;
+    private final PathProximity proximity;
 
     private CollisionScene(double radius, double[] triangles, double[] cylinders, double[] restitution, int[] obstacleOf,
                            Bounds bounds) {
@@ -64,122 +47,8 @@ public final class CollisionScene {
         int shapes = triangleCount + cylinders.length / 5;
         boxes = new double[6 * shapes];
         for (int s = 0; s < shapes; s++) shapeBox(s, boxes, 6 * s);
-        // The grid covers the bounds and every shape; cells about as large as a shape is, on average.
-        double minX = bounds.minX(), minY = bounds.minY(), maxX = bounds.maxX(), maxY = bounds.maxY();
-        for (int s = 0; s < shapes; s++) {
-            minX = Math.min(minX, boxes[6 * s]);
-            minY = Math.min(minY, boxes[6 * s + 1]);
-            maxX = Math.max(maxX, boxes[6 * s + 3]);
-            maxY = Math.max(maxY, boxes[6 * s + 4]);
-        }
-        double area = (maxX - minX) * (maxY - minY);
-        double size = Math.sqrt(area / Math.max(1, shapes));
-        size = Math.max(size, Math.max(maxX - minX, maxY - minY) / MAX_CELLS_PER_AXIS);
-        size = Math.max(0.05, Math.min(1.0, size));
-        size = Math.max(size, Math.max(maxX - minX, maxY - minY) / MAX_CELLS_PER_AXIS);
-        // A shape is listed in every cell its box touches: thousands of long walls across a course would
-        // fill gigabytes. Past a budget the cells grow, so memory stays in proportion to the shapes.
-        while (cellEntries(shapes, minX, minY, maxX, maxY, size) > MAX_CELL_ENTRIES
-                && size < Math.max(maxX - minX, maxY - minY)) {
-            size *= 2;
-        }
-        int[] counts, items;
-        int columns, rows;
-        while (true) {
-            columns = Math.max(1, (int) Math.ceil((maxX - minX) / size));
-            rows = Math.max(1, (int) Math.ceil((maxY - minY) / size));
-            int cells = columns * rows;
-            counts = new int[cells + 1];
-            items = null;
-            for (int pass = 0; pass < 2; pass++) {
-                int[] fill = pass == 1 ? Arrays.copyOf(counts, cells) : null;
-                if (pass == 1) items = new int[counts[cells]];
-                for (int s = 0; s < shapes; s++) {
-                    int i0 = cell(boxes[6 * s] - radius, minX, size, columns), i1 = cell(boxes[6 * s + 3] + radius, minX, size, columns);
-                    int j0 = cell(boxes[6 * s + 1] - radius, minY, size, rows), j1 = cell(boxes[6 * s + 4] + radius, minY, size, rows);
-                    for (int j = j0; j <= j1; j++) {
-                        for (int i = i0; i <= i1; i++) {
-                            int c = j * columns + i;
-                            if (pass == 0) counts[c + 1]++;
-                            else items[fill[c]++] = s;
-                        }
-                    }
-                }
-                if (pass == 0) {
-                    for (int c = 0; c < cells; c++) counts[c + 1] += counts[c];
-                }
-            }
-            if (runs(counts, items, obstacleOf, cells, null, null) <= MAX_RUNS || size >= Math.max(maxX - minX, maxY - minY)) break;
-            size *= 2;
-        }
-        this.cellSize = size;
-        this.originX = minX;
-        this.originY = minY;
-        this.columns = columns;
-        this.rows = rows;
-        this.cellStart = counts;
-        this.cellItems = items;
-        int cells = columns * rows;
-        cellRuns = new int[cells + 1];
-        int runs = runs(counts, items, obstacleOf, cells, cellRuns, null);
-        runStart = new int[runs + 1];
-        runs(counts, items, obstacleOf, cells, null, runStart);
-        runStart[runs] = items.length;
-        runBoxes = new float[6 * runs];
-        for (int q = 0; q < runs; q++) {
-            for (int k = 0; k < 3; k++) {
-                double low = Double.POSITIVE_INFINITY, high = Double.NEGATIVE_INFINITY;
-                for (int e = runStart[q]; e < runStart[q + 1]; e++) {
-                    low = Math.min(low, boxes[6 * items[e] + k]);
-                    high = Math.max(high, boxes[6 * items[e] + k + 3]);
-                }
-                runBoxes[6 * q + k] = below(low);
-                runBoxes[6 * q + k + 3] = above(high);
-            }
-        }
-        firstColumn = new int[shapes];
-        firstRow = new int[shapes];
-        for (int s = 0; s < shapes; s++) {
-            firstColumn[s] = column(boxes[6 * s] - radius);
-            firstRow[s] = row(boxes[6 * s + 1] - radius);
-        }
-    }
-
-    /**
-     * Cuts each cell's entries into runs (one obstacle's, at most {@link #RUN_LENGTH}) and counts
-     * them; fills each cell's first run into cellRuns and each run's first entry into runStart where
-     * these are given.
-     */
-    private static int runs(int[] cellStart, int[] items, int[] owner, int cells, int[] cellRuns, int[] runStart) {
-        int runs = 0;
-        for (int c = 0; c < cells; c++) {
-            if (cellRuns != null) cellRuns[c] = runs;
-            for (int k = cellStart[c], end = cellStart[c + 1]; k < end; ) {
-                if (runStart != null) runStart[runs] = k;
-                int first = k++;
-                while (k < end && k - first < RUN_LENGTH && owner[items[k]] == owner[items[first]]) k++;
-                runs++;
-            }
-        }
-        if (cellRuns != null) cellRuns[cells] = runs;
-        return runs;
-    }
-
-    /** The largest float at or below x. */
-    private static float below(double x) {
-        float f = (float) x;
-        return f > x ? Math.nextDown(f) : f;
-    }
-
-    /** The smallest float at or above x. */
-    private static float above(double x) {
-        float f = (float) x;
-        return f < x ? Math.nextUp(f) : f;
-    }
-
-    private static int cell(double x, double origin, double size, int count) {
-        int i = (int) Math.floor((x - origin) / size);
-        return i < 0 ? 0 : Math.min(i, count - 1);
+        grid = new ShapeGrid(boxes, obstacleOf, radius, bounds);
+        proximity = new PathProximity(grid, radius, triangles, cylinders, boxes);
     }
 
     /**
@@ -273,14 +142,7 @@ public final class CollisionScene {
 
     /** Whether any shape is listed in the grid cells under the rectangle (a cheap test before a sweep). */
     public boolean anyNear(double minX, double minY, double maxX, double maxY) {
-        // Shapes are listed in every cell within a ball radius of them: the centre's own cells suffice.
-        int i0 = column(minX), i1 = column(maxX);
-        int j0 = row(minY), j1 = row(maxY);
-        for (int j = j0; j <= j1; j++) {
-            int c = j * columns;
-            if (cellStart[c + i1 + 1] > cellStart[c + i0]) return true;
-        }
-        return false;
+        return grid.anyListed(minX, minY, maxX, maxY);
     }
 
     /**
@@ -290,9 +152,7 @@ public final class CollisionScene {
      * curved path's chords, and exact as a "no": it never hides a contact.
      */
     public boolean anyShapeNear(double minX, double minY, double maxX, double maxY) {
-        double r = radius;
-        return listedShapeNear(column(minX), column(maxX), row(minY), row(maxY), minX - r, minY - r, maxX + r, maxY + r,
-                false, 0, 0, 0, 0, 0);
+        return proximity.anyShapeNear(minX, minY, maxX, maxY);
     }
 
     /**
@@ -305,82 +165,7 @@ public final class CollisionScene {
      * distance). Exact as a "no", with a nanometre to spare for rounding.
      */
     public boolean anyShapeNearPath(double x0, double y0, double x1, double y1, double margin) {
-        double reach = margin + radius + 1e-9;
-        double loX = Math.min(x0, x1) - reach, hiX = Math.max(x0, x1) + reach;
-        double loY = Math.min(y0, y1) - reach, hiY = Math.max(y0, y1) + reach;
-        return listedShapeNear(column(loX + radius), column(hiX - radius), row(loY + radius), row(hiY - radius), loX, loY, hiX, hiY,
-                true, x0, y0, x1, y1, reach);
-    }
-
-    /**
-     * Whether a shape listed in the cells [i0, i1] x [j0, j1] has its box in the rectangle
-     * [loX, hiX] x [loY, hiY] and, with {@code outlines}, its outline within reach of the segment
-     * from (x0, y0) to (x1, y1).
-     */
-    private boolean listedShapeNear(int i0, int i1, int j0, int j1, double loX, double loY, double hiX, double hiY,
-                            boolean outlines, double x0, double y0, double x1, double y1, double reach) {
-        // The box round the segment: centre, unit axis u (along), half-length along it.
-        double dx = x1 - x0, dy = y1 - y0, length = Math.sqrt(dx * dx + dy * dy);
-        double ux = length > 0 ? dx / length : 1, uy = length > 0 ? dy / length : 0;
-        double mx = 0.5 * (x0 + x1), my = 0.5 * (y0 + y1), along = 0.5 * length + reach;
-        float[] runBox = runBoxes;
-        for (int j = j0; j <= j1; j++) {
-            for (int i = i0; i <= i1; i++) {
-                int c = j * columns + i;
-                for (int q = cellRuns[c], last = cellRuns[c + 1]; q < last; q++) {
-                    int rb = 6 * q;
-                    if (runBox[rb] > hiX || runBox[rb + 3] < loX || runBox[rb + 1] > hiY || runBox[rb + 4] < loY) continue;
-                    for (int k = runStart[q], end = runStart[q + 1]; k < end; k++) {
-                        int s = cellItems[k];
-                        int b = 6 * s;
-                        if (boxes[b] > hiX || boxes[b + 3] < loX || boxes[b + 1] > hiY || boxes[b + 4] < loY) continue;
-                        if (!outlines || (s < triangleCount ? outlineNear(12 * s, mx, my, ux, uy, along, reach)
-                                : circleNear(5 * (s - triangleCount), x0, y0, dx, dy, reach))) {
-                            return true;
-                        }
-                    }
-                }
-            }
-        }
-        return false;
-    }
-
-    /**
-     * Whether the triangle at offset o, seen from above, meets the box with centre m, unit axis u,
-     * half-lengths {@code along} u and {@code across} perpendicular to it: no separating axis among
-     * the box's two and the outline's three edge normals (a triangle seen edge-on is a segment:
-     * its normals coincide; a zero edge separates nothing).
-     */
-    private boolean outlineNear(int o, double mx, double my, double ux, double uy, double along, double across) {
-        double[] t = triangles;
-        double ax = t[o] - mx, ay = t[o + 1] - my, bx = t[o + 3] - mx, by = t[o + 4] - my, cx = t[o + 6] - mx, cy = t[o + 7] - my;
-        if (separates(ux, uy, ax, ay, bx, by, cx, cy, along)) return false;
-        if (separates(-uy, ux, ax, ay, bx, by, cx, cy, across)) return false;
-        for (int e = 0; e < 3; e++) {
-            double ex = e == 0 ? bx - ax : e == 1 ? cx - bx : ax - cx, ey = e == 0 ? by - ay : e == 1 ? cy - by : ay - cy;
-            double nx = -ey, ny = ex;
-            double half = along * Math.abs(ux * nx + uy * ny) + across * Math.abs(-uy * nx + ux * ny);
-            if (separates(nx, ny, ax, ay, bx, by, cx, cy, half)) return false;
-        }
-        return true;
-    }
-
-    /** Whether the axis n separates the three points (relative to the box's centre) from [-half, half]. */
-    private static boolean separates(double nx, double ny, double ax, double ay, double bx, double by, double cx, double cy,
-                                     double half) {
-        double p = nx * ax + ny * ay, q = nx * bx + ny * by, r = nx * cx + ny * cy;
-        double slack = 1e-12 * (Math.abs(p) + Math.abs(q) + Math.abs(r) + half);
-        return Math.min(p, Math.min(q, r)) > half + slack || Math.max(p, Math.max(q, r)) < -half - slack;
-    }
-
-    /** Whether cylinder at offset o comes within reach of the segment from (x0, y0) along (dx, dy), in the plane. */
-    private boolean circleNear(int o, double x0, double y0, double dx, double dy, double reach) {
-        double px = cylinders[o] - x0, py = cylinders[o + 1] - y0;
-        double d2 = dx * dx + dy * dy;
-        double f = d2 > 0 ? Math.max(0, Math.min(1, (px * dx + py * dy) / d2)) : 0;
-        double ex = px - f * dx, ey = py - f * dy;
-        double limit = cylinders[o + 2] + reach;
-        return ex * ex + ey * ey <= limit * limit * (1 + 1e-12);
+        return proximity.anyShapeNearPath(x0, y0, x1, y1, margin);
     }
 
     /**
@@ -389,13 +174,7 @@ public final class CollisionScene {
      * For tests: the broad phase keeps this small whatever the number of shapes.
      */
     int candidates(double x0, double y0, double x1, double y1) {
-        int i0 = column(Math.min(x0, x1)), i1 = column(Math.max(x0, x1));
-        int j0 = row(Math.min(y0, y1)), j1 = row(Math.max(y0, y1));
-        int n = 0;
-        for (int j = j0; j <= j1; j++) {
-            for (int i = i0; i <= i1; i++) n += cellStart[j * columns + i + 1] - cellStart[j * columns + i];
-        }
-        return n;
+        return grid.entries(Math.min(x0, x1), Math.min(y0, y1), Math.max(x0, x1), Math.max(y0, y1));
     }
 
     /**
@@ -408,9 +187,13 @@ public final class CollisionScene {
         double minX = Math.min(x0, x1) - r, maxX = Math.max(x0, x1) + r;
         double minY = Math.min(y0, y1) - r, maxY = Math.max(y0, y1) + r;
         double minZ = Math.min(z0, z1) - r, maxZ = Math.max(z0, z1) + r;
-        int i0 = column(minX + r), i1 = column(maxX - r), j0 = row(minY + r), j1 = row(maxY - r);
+        ShapeGrid g = grid;
+        int i0 = g.column(minX + r), i1 = g.column(maxX - r), j0 = g.row(minY + r), j1 = g.row(maxY - r);
         double best = Double.POSITIVE_INFINITY;
-        float[] runBox = runBoxes;
+        int columns = g.columns;
+        int[] cellRuns = g.cellRuns, runStart = g.runStart, cellItems = g.cellItems, firstColumn = g.firstColumn,
+                firstRow = g.firstRow;
+        float[] runBox = g.runBoxes;
         for (int j = j0; j <= j1; j++) {
             for (int i = i0; i <= i1; i++) {
                 int c = j * columns + i;
@@ -651,34 +434,5 @@ public final class CollisionScene {
             out[at + 4] = cylinders[o + 1] + r;
             out[at + 5] = cylinders[o + 4];
         }
-    }
-
-    /** How many (cell, shape) entries a grid of this cell size would hold, as the constructor fills it. */
-    private long cellEntries(int shapes, double minX, double minY, double maxX, double maxY, double size) {
-        long columns = Math.max(1, (long) Math.ceil((maxX - minX) / size));
-        long rows = Math.max(1, (long) Math.ceil((maxY - minY) / size));
-        long entries = 0;
-        for (int s = 0; s < shapes; s++) {
-            long i0 = clamp((long) Math.floor((boxes[6 * s] - radius - minX) / size), columns);
-            long i1 = clamp((long) Math.floor((boxes[6 * s + 3] + radius - minX) / size), columns);
-            long j0 = clamp((long) Math.floor((boxes[6 * s + 1] - radius - minY) / size), rows);
-            long j1 = clamp((long) Math.floor((boxes[6 * s + 4] + radius - minY) / size), rows);
-            entries += (i1 - i0 + 1) * (j1 - j0 + 1);
-        }
-        return entries;
-    }
-
-    private static long clamp(long i, long count) {
-        return i < 0 ? 0 : Math.min(i, count - 1);
-    }
-
-    private int column(double x) {
-        int i = (int) Math.floor((x - originX) / cellSize);
-        return i < 0 ? 0 : Math.min(i, columns - 1);
-    }
-
-    private int row(double y) {
-        int j = (int) Math.floor((y - originY) / cellSize);
-        return j < 0 ? 0 : Math.min(j, rows - 1);
     }
 }

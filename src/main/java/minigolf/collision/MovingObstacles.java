@@ -28,7 +28,34 @@ public final class MovingObstacles {
     private final Entry[] entries;
     private final double radius;
 
-    private record Entry(int index, Motion motion, CollisionScene body, double[] reach, double restitution) {
+    /**
+     * One moving obstacle; {@code axis} for one that turns (rotates or swings): the pivot, the unit
+     * axis and the farthest its body (grown by the ball's radius) comes from the axis,
+     * {cx, cy, cz, kx, ky, kz, radius}; null for a slide.
+     */
+    private record Entry(int index, Motion motion, CollisionScene body, double[] reach, double[] axis, double restitution) {
+        /**
+         * Whether the ball's centre on the segment p0-p1 stays farther from the turning axis than
+         * the body ever reaches: then no pose can touch it (a blade turning above the ground never
+         * comes down to a ball beside the door it guards, though its box of reach is over it).
+         * The distance from a line changes no faster than along the segment, so its least is
+         * at least the nearer end's less half the segment's length.
+         */
+        boolean outOfReach(double x0, double y0, double z0, double x1, double y1, double z1) {
+            if (axis == null) return false;
+            double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
+            double half = 0.5 * Math.sqrt(dx * dx + dy * dy + dz * dz);
+            return Math.min(fromAxis(x0, y0, z0), fromAxis(x1, y1, z1)) - half > axis[6];
+        }
+
+        /** The distance of (x, y, z) from the turning axis. */
+        private double fromAxis(double x, double y, double z) {
+            double[] a = axis;
+            double px = x - a[0], py = y - a[1], pz = z - a[2];
+            double along = px * a[3] + py * a[4] + pz * a[5];
+            double rx = px - along * a[3], ry = py - along * a[4], rz = pz - along * a[5];
+            return Math.sqrt(rx * rx + ry * ry + rz * rz);
+        }
     }
 
     /** The box round every entry's reach in the plane (minX, minY, maxX, maxY): most questions end there. */
@@ -53,9 +80,47 @@ public final class MovingObstacles {
             if (!(obstacles.get(k) instanceof Obstacle.Moving m)) continue;
             CollisionScene body = CollisionScene.build(List.of(m.body()), ground, bounds, ballRadius);
             // The scene numbers its one obstacle 0; contacts are reported with the course's index.
-            list.add(new Entry(k, m.motion(), body, reach(body.extent(), m.motion(), ballRadius), m.restitution()));
+            list.add(new Entry(k, m.motion(), body, reach(body.extent(), m.motion(), ballRadius),
+                    axis(body.extent(), m.motion(), ballRadius), m.restitution()));
         }
         return list.isEmpty() ? null : new MovingObstacles(list.toArray(new Entry[0]), ballRadius);
+    }
+
+    /**
+     * For a body that turns about an axis: {cx, cy, cz, kx, ky, kz, radius}, the pivot, the unit
+     * axis and the farthest the body comes from the axis, grown by the ball's radius and a hair
+     * for rounding; null for a slide.
+     */
+    private static double[] axis(double[] e, Motion motion, double r) {
+        double[] t = turning(e, motion);
+        if (t == null) return null;
+        return new double[] {t[0], t[1], t[2], t[3], t[4], t[5], t[6] + r + 1e-9 * (1 + t[6])};
+    }
+
+    /**
+     * Turning about an axis k through the pivot c, a point keeps its position s along the axis and
+     * its distance rho from it; s is linear and rho convex over the body's box, so both take their
+     * extremes at its corners: {cx, cy, cz, kx, ky, kz, the largest rho, the least s, the largest s}
+     * (k a unit vector); null for a slide.
+     */
+    private static double[] turning(double[] e, Motion motion) {
+        if (motion instanceof Motion.Slide) return null;
+        var pivot = motion instanceof Motion.Rotate rt ? rt.pivot() : ((Motion.Swing) motion).pivot();
+        var axis = motion instanceof Motion.Rotate rt ? rt.axis() : ((Motion.Swing) motion).axis();
+        double norm = Math.sqrt(axis.x() * axis.x() + axis.y() * axis.y() + axis.z() * axis.z());
+        double kx = axis.x() / norm, ky = axis.y() / norm, kz = axis.z() / norm;
+        double along0 = Double.POSITIVE_INFINITY, along1 = Double.NEGATIVE_INFINITY, far = 0;
+        for (int corner = 0; corner < 8; corner++) {
+            double dx = ((corner & 1) == 0 ? e[0] : e[3]) - pivot.x();
+            double dy = ((corner & 2) == 0 ? e[1] : e[4]) - pivot.y();
+            double dz = ((corner & 4) == 0 ? e[2] : e[5]) - pivot.z();
+            double along = dx * kx + dy * ky + dz * kz;
+            double px = dx - along * kx, py = dy - along * ky, pz = dz - along * kz;
+            along0 = Math.min(along0, along);
+            along1 = Math.max(along1, along);
+            far = Math.max(far, Math.sqrt(px * px + py * py + pz * pz));
+        }
+        return new double[] {pivot.x(), pivot.y(), pivot.z(), kx, ky, kz, far, along0, along1};
     }
 
     /** Everywhere the body can be over a period, grown by the ball's radius: {minX, minY, minZ, maxX, maxY, maxZ}. */
@@ -78,32 +143,17 @@ public final class MovingObstacles {
             }
             return box;
         }
-        // Turning about an axis k through the pivot c, a point keeps its position s along the axis
-        // and its distance rho from it: coordinate j stays within c_j + s k_j +- rho sqrt(1 - k_j^2)
-        // (a blade turning about x keeps its own x extent). s is linear and rho convex over the
-        // body's box, so both take their extremes at its corners.
-        var pivot = motion instanceof Motion.Rotate rt ? rt.pivot() : ((Motion.Swing) motion).pivot();
-        var axis = motion instanceof Motion.Rotate rt ? rt.axis() : ((Motion.Swing) motion).axis();
-        double[] c = {pivot.x(), pivot.y(), pivot.z()};
-        double norm = Math.sqrt(axis.x() * axis.x() + axis.y() * axis.y() + axis.z() * axis.z());
-        double[] k = {axis.x() / norm, axis.y() / norm, axis.z() / norm};
-        double along0 = Double.POSITIVE_INFINITY, along1 = Double.NEGATIVE_INFINITY, far = 0;
-        for (int corner = 0; corner < 8; corner++) {
-            double dx = ((corner & 1) == 0 ? e[0] : e[3]) - c[0];
-            double dy = ((corner & 2) == 0 ? e[1] : e[4]) - c[1];
-            double dz = ((corner & 4) == 0 ? e[2] : e[5]) - c[2];
-            double along = dx * k[0] + dy * k[1] + dz * k[2];
-            double px = dx - along * k[0], py = dy - along * k[1], pz = dz - along * k[2];
-            along0 = Math.min(along0, along);
-            along1 = Math.max(along1, along);
-            far = Math.max(far, Math.sqrt(px * px + py * py + pz * pz));
-        }
+        // Coordinate j stays within c_j + s k_j +- rho sqrt(1 - k_j^2) (a blade turning about x
+        // keeps its own x extent).
+        double[] t = turning(e, motion);
+        double far = t[6], along0 = t[7], along1 = t[8];
         for (int j = 0; j < 3; j++) {
-            double spread = far * Math.sqrt(Math.max(0, 1 - k[j] * k[j]));
+            double kj = t[3 + j];
+            double spread = far * Math.sqrt(Math.max(0, 1 - kj * kj));
             // Rounding: the box may only grow.
             double slack = 1e-9 * (1 + far + Math.abs(along0) + Math.abs(along1));
-            box[j] = c[j] + Math.min(along0 * k[j], along1 * k[j]) - spread - r - slack;
-            box[j + 3] = c[j] + Math.max(along0 * k[j], along1 * k[j]) + spread + r + slack;
+            box[j] = t[j] + Math.min(along0 * kj, along1 * kj) - spread - r - slack;
+            box[j + 3] = t[j] + Math.max(along0 * kj, along1 * kj) + spread + r + slack;
         }
         return box;
     }
@@ -117,6 +167,21 @@ public final class MovingObstacles {
         if (reachAll[0] > maxX || reachAll[2] < minX || reachAll[1] > maxY || reachAll[3] < minY) return false;
         for (Entry e : entries) {
             if (e.reach[0] <= maxX && e.reach[3] >= minX && e.reach[1] <= maxY && e.reach[4] >= minY) return true;
+        }
+        return false;
+    }
+
+    /**
+     * Whether some moving obstacle may touch the ball's centre somewhere on the segment p0-p1 at
+     * some moment: the segment meets its box of reach and, for one that turns, comes within its
+     * reach of the axis. Sweeps and still contacts look no further where this is false.
+     */
+    boolean mayReach(double x0, double y0, double z0, double x1, double y1, double z1) {
+        for (Entry e : entries) {
+            double[] b = e.reach;
+            if (b[0] > Math.max(x0, x1) || b[3] < Math.min(x0, x1) || b[1] > Math.max(y0, y1) || b[4] < Math.min(y0, y1)
+                    || b[2] > Math.max(z0, z1) || b[5] < Math.min(z0, z1)) continue;
+            if (!e.outOfReach(x0, y0, z0, x1, y1, z1)) return true;
         }
         return false;
     }
@@ -162,6 +227,7 @@ public final class MovingObstacles {
             for (Entry e : entries) {
                 double[] b = e.reach;
                 if (b[0] > maxX || b[3] < minX || b[1] > maxY || b[4] < minY || b[2] > maxZ || b[5] < minZ) continue;
+                if (e.outOfReach(x0, y0, z0, x1, y1, z1)) continue;
                 entry = e;
                 double f = sweepEntry(best, skin);
                 if (f < best) {
@@ -183,6 +249,7 @@ public final class MovingObstacles {
             for (Entry e : entries) {
                 double[] b = e.reach;
                 if (b[0] > x || b[3] < x || b[1] > y || b[4] < y || b[2] > z || b[5] < z) continue;
+                if (e.outOfReach(x, y, z, x, y, z)) continue;
                 this.x0 = x;
                 this.y0 = y;
                 this.z0 = z;

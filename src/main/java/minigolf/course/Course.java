@@ -1,5 +1,7 @@
 package minigolf.course;
 
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import minigolf.theme.Themes;
 
@@ -7,10 +9,13 @@ import minigolf.theme.Themes;
  * A course as read from (and written to) a course file. Plain data: the physics engine builds
  * its own fast representation from it (minigolf.physics.World). {@code world} names the themed
  * world it is set in (minigolf.theme.Themes; scenery, light and materials only, never physics).
+ * {@code extraHoles} are further holes (the classic tracks have up to ten): the ball dropping into
+ * any hole ends the stroke and the course, as in the original; {@code hole} is the one the flag,
+ * the camera and the bots' first aim use.
  */
 public record Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
                      Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, List<PushZone> pushZones,
-                     List<Magnet> magnets, List<Teleport> teleports, String world) {
+                     List<Magnet> magnets, List<Teleport> teleports, String world, List<Hole> extraHoles) {
     public static final int FORMAT = 1;
 
     public Course {
@@ -19,7 +24,16 @@ public record Course(int format, String name, TerrainSpec terrain, Bounds bounds
         pushZones = List.copyOf(pushZones);
         magnets = List.copyOf(magnets);
         teleports = List.copyOf(teleports);
+        extraHoles = extraHoles == null ? List.of() : List.copyOf(extraHoles);
         if (world == null) world = Themes.DEFAULT_ID;
+    }
+
+    /** A course with one hole. */
+    public Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
+                  Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, List<PushZone> pushZones,
+                  List<Magnet> magnets, List<Teleport> teleports, String world) {
+        this(format, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones, magnets, teleports, world,
+                List.of());
     }
 
     /** A course in the default world. */
@@ -50,23 +64,37 @@ public record Course(int format, String name, TerrainSpec terrain, Bounds bounds
 
     public Course withPhysics(PhysicsSettings newPhysics) {
         return new Course(format, name, terrain, bounds, newPhysics, start, hole, zones, obstacles, pushZones, magnets,
-                teleports, world);
+                teleports, world, extraHoles);
     }
 
     public Course withObstacles(List<Obstacle> newObstacles) {
         return new Course(format, name, terrain, bounds, physics, start, hole, zones, newObstacles, pushZones, magnets,
-                teleports, world);
+                teleports, world, extraHoles);
     }
 
     public Course withWorld(String newWorld) {
         return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones, magnets,
-                teleports, newWorld);
+                teleports, newWorld, extraHoles);
     }
 
     /** The same course with other push zones, magnets and teleports. */
     public Course withElements(List<PushZone> newPushZones, List<Magnet> newMagnets, List<Teleport> newTeleports) {
         return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, newPushZones, newMagnets,
-                newTeleports, world);
+                newTeleports, world, extraHoles);
+    }
+
+    /** The same course with these holes: {@code main} where the flag stands, {@code extra} the others. */
+    public Course withHoles(Hole main, List<Hole> extra) {
+        return new Course(format, name, terrain, bounds, physics, start, main, zones, obstacles, pushZones, magnets,
+                teleports, world, extra);
+    }
+
+    /** Every hole: the main one first, then the extra holes in order. */
+    public List<Hole> holes() {
+        List<Hole> all = new ArrayList<>(1 + extraHoles.size());
+        all.add(hole);
+        all.addAll(extraHoles);
+        return Collections.unmodifiableList(all);
     }
 
     /** Whether any obstacle moves (its motion is a function of the course clock). */

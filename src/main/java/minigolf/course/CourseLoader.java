@@ -19,6 +19,7 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;
 
@@ -36,8 +37,8 @@ import java.util.function.Function;
  */
 public final class CourseLoader {
     static final List<String> TOP_FIELDS = List.of(
-            "format", "name", "world", "terrain", "bounds", "physics", "start", "hole", "zones", "obstacles", "pushZones",
-            "magnets", "teleports");
+            "format", "name", "world", "terrain", "bounds", "physics", "start", "hole", "extraHoles", "zones", "obstacles",
+            "pushZones", "magnets", "teleports");
     static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
     static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction",
             "deletedCells");
@@ -248,6 +249,7 @@ public final class CourseLoader {
             PhysicsSettings physics = physics(required(o, "", "physics"), "physics");
             Vec2 start = vec(required(o, "", "start"), "start");
             Hole hole = hole(required(o, "", "hole"), "hole");
+            List<Hole> extraHoles = extraHoles(o.get("extraHoles"), "extraHoles");
             List<Zone> zones = obstacleReader.zones(o.get("zones"), "zones");
             List<Obstacle> obstacles = obstacleReader.obstacles(o.get("obstacles"), "obstacles");
             ElementReader elements = new ElementReader(source, obstacleReader);
@@ -255,7 +257,7 @@ public final class CourseLoader {
             List<Magnet> magnets = elements.magnets(o.get("magnets"), "magnets");
             List<Teleport> teleports = elements.teleports(o.get("teleports"), "teleports");
             return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones,
-                    magnets, teleports, world);
+                    magnets, teleports, world, extraHoles);
         }
 
         // ---- terrain ----
@@ -330,6 +332,17 @@ public final class CourseLoader {
                 capture = positive(number(o.get("captureSpeed"), cp), cp);
             }
             return new Hole(position, radius, rule, capture);
+        }
+
+        List<Hole> extraHoles(JsonNode n, String path) throws CourseException {
+            if (n == null) return List.of();
+            if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+            if (n.size() > Limits.EXTRA_HOLES) {
+                throw error(path, "too many holes: " + n.size() + " (the limit is " + Limits.EXTRA_HOLES + ")");
+            }
+            List<Hole> holes = new ArrayList<>(n.size());
+            for (int i = 0; i < n.size(); i++) holes.add(hole(n.get(i), path + "[" + i + "]"));
+            return holes;
         }
 
         // ---- zones, obstacles ----

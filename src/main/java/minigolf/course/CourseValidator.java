@@ -18,6 +18,9 @@ public final class CourseValidator {
         checkInBounds(course, sourceName);
         checkDry(course.start(), "start", probe, sourceName);
         checkDry(course.hole().position(), "hole.position", probe, sourceName);
+        for (int i = 0; i < course.extraHoles().size(); i++) {
+            checkDry(course.extraHoles().get(i).position(), extraHolePath(i), probe, sourceName);
+        }
         for (int i = 0; i < course.teleports().size(); i++) {
             List<Teleport.Exit> exits = course.teleports().get(i).exits();
             for (int k = 0; k < exits.size(); k++) {
@@ -65,6 +68,13 @@ public final class CourseValidator {
             checkNotDeleted(course.start(), "start", g, sourceName);
             checkNotDeleted(course.hole().position(), "hole.position", g, sourceName);
         }
+        for (int i = 0; i < course.extraHoles().size(); i++) {
+            Vec2 p = course.extraHoles().get(i).position();
+            checkInBounds(p, extraHolePath(i), course.bounds(), sourceName);
+            if (course.terrain() instanceof TerrainSpec.HeightGrid g && g.deleted() != null) {
+                checkNotDeleted(p, extraHolePath(i), g, sourceName);
+            }
+        }
         checkTeleports(course, sourceName);
         checkNoHazard(course.start(), "start", course, sourceName);
     }
@@ -89,6 +99,13 @@ public final class CourseValidator {
         }
         checkOutsideEntries(course.start(), "start", teleports, sourceName);
         checkOutsideEntries(course.hole().position(), "hole.position", teleports, sourceName);
+        for (int i = 0; i < course.extraHoles().size(); i++) {
+            checkOutsideEntries(course.extraHoles().get(i).position(), extraHolePath(i), teleports, sourceName);
+        }
+    }
+
+    private static String extraHolePath(int i) {
+        return "extraHoles[" + i + "].position";
     }
 
     private static void checkOutsideEntries(Vec2 p, String path, List<Teleport> teleports, String sourceName)

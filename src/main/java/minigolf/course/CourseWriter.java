@@ -59,15 +59,19 @@ public final class CourseWriter {
         sb.append("  \"start\": ");
         vec(sb, require(course.start(), "start"), "start");
         sb.append(",\n");
-        Hole h = require(course.hole(), "hole");
-        sb.append("  \"hole\": { \"position\": ");
-        vec(sb, require(h.position(), "hole.position"), "hole.position");
-        sb.append(", \"radius\": ").append(num(h.radius(), "hole.radius"))
-                .append(", \"rule\": ").append(quote(require(h.rule(), "hole.rule").jsonName()));
-        if (h.captureSpeed() != null) {
-            sb.append(", \"captureSpeed\": ").append(num(h.captureSpeed(), "hole.captureSpeed"));
+        sb.append("  \"hole\": ");
+        hole(sb, require(course.hole(), "hole"), "hole");
+        sb.append(",\n");
+        List<Hole> extra = course.extraHoles();
+        if (!extra.isEmpty()) {
+            sb.append("  \"extraHoles\": [\n");
+            for (int i = 0; i < extra.size(); i++) {
+                sb.append("    ");
+                hole(sb, require(extra.get(i), "extraHoles[" + i + "]"), "extraHoles[" + i + "]");
+                sb.append(i + 1 < extra.size() ? ",\n" : "\n");
+            }
+            sb.append("  ],\n");
         }
-        sb.append(" },\n");
         List<Zone> zones = course.zones();
         if (zones.isEmpty()) {
             sb.append("  \"zones\": [],\n");
@@ -288,6 +292,18 @@ public final class CourseWriter {
     static void vec3(StringBuilder sb, Vec3 v, String path) {
         sb.append('[').append(num(v.x(), path)).append(", ").append(num(v.y(), path)).append(", ")
                 .append(num(v.z(), path)).append(']');
+    }
+
+    /** A hole as one JSON object: position, radius, rule and (when set) capture speed. */
+    private static void hole(StringBuilder sb, Hole h, String path) {
+        sb.append("{ \"position\": ");
+        vec(sb, require(h.position(), path + ".position"), path + ".position");
+        sb.append(", \"radius\": ").append(num(h.radius(), path + ".radius"))
+                .append(", \"rule\": ").append(quote(require(h.rule(), path + ".rule").jsonName()));
+        if (h.captureSpeed() != null) {
+            sb.append(", \"captureSpeed\": ").append(num(h.captureSpeed(), path + ".captureSpeed"));
+        }
+        sb.append(" }");
     }
 
     static void vec(StringBuilder sb, Vec2 v, String path) {

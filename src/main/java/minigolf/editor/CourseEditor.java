@@ -54,6 +54,7 @@ public final class CourseEditor {
         EditableCourse ec = new EditableCourse(grid, c.bounds(), c.zones(), c.obstacles(), c.pushZones(), c.magnets(),
                 c.teleports(), new EditableCourse.Properties(c.name(), c.start(), c.hole(), c.physics()));
         ec.world = c.world();
+        ec.extraHoles = c.extraHoles();
         CourseEditor e = new CourseEditor(ec, file);
         // A sampled expression course is not yet a file: it counts as unsaved.
         if (!(c.terrain() instanceof TerrainSpec.HeightGrid)) e.file = null;

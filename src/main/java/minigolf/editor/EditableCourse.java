@@ -36,6 +36,8 @@ public final class EditableCourse {
     final List<Teleport> teleports = new ArrayList<>();
     /** The themed world the course is set in (kept as loaded; the editor does not change it). */
     String world = minigolf.theme.Themes.DEFAULT_ID;
+    /** The holes beside the main one (kept as loaded: the editor places only the main hole). */
+    List<Hole> extraHoles = List.of();
 
     /** The course's fields that are not per node or per obstacle. */
     public record Properties(String name, Vec2 start, Hole hole, PhysicsSettings physics) {
@@ -103,7 +105,7 @@ public final class EditableCourse {
     public Course toCourse() {
         Properties p = properties;
         return new Course(Course.FORMAT, p.name(), grid(), bounds, p.physics(), p.start(), p.hole(), zones, obstacles,
-                pushZones, magnets, teleports, world);
+                pushZones, magnets, teleports, world, extraHoles);
     }
 
     public int columns() {

@@ -48,6 +48,12 @@ public final class BotCatalog {
      * at whatever it had found; sized to the time, its search ends and it plays its choice.
      */
     public static final long FULL_SEARCH_BUDGET_PER_STROKE = Math.round(TIME_LIMIT_PER_STROKE * FULL_SEARCH_SIMULATIONS_PER_SECOND);
+    /**
+     * Threads a bot's sweeps run on while it thinks ({@link CountingSimulator#spreadOver}): the
+     * cores but one (left to drawing the game), at most 4, so 1 on a 2-core machine. The shot is
+     * the same for any number; only the wait is shorter.
+     */
+    public static final int THINK_THREADS = Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors() - 1));
     private static final Map<String, Supplier<ShotPlanner>> PLANNERS = new LinkedHashMap<>();
 
     /** The opponent a new bot seat starts with. */
@@ -152,6 +158,7 @@ public final class BotCatalog {
                 // Hidden friction: the bot simulates the prior, re-fitted to its own strokes (counted in its budget).
                 World seen = conditions.hideFriction() ? FrictionPrior.scaled(world, 1) : world;
                 CountingSimulator sim = new CountingSimulator(seen, settings, budget, token, progress);
+                sim.spreadOver(THINK_THREADS);
                 CountingSimulator botSim = conditions.hideFriction() ? estimated(sim, conditions) : sim;
                 botSim.setClock(conditions.clock());
                 Bot player = TimedBot.forWorld(bot, seen);

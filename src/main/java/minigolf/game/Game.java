@@ -244,13 +244,13 @@ public final class Game {
         for (int i = 0; i < states.size(); i++) {
             if (states.get(i).isPlaying() && !(skipPassedOver && passedOver[i]) && states.get(i).total() == 0) return i;
         }
-        double hx = world.hole().position().x(), hy = world.hole().position().y();
         int best = -1;
         double bestDistance = -1;
         for (int i = 0; i < states.size(); i++) {
             PlayerState s = states.get(i);
             if (!s.isPlaying() || (skipPassedOver && passedOver[i])) continue;
-            double d = Math.hypot(s.x() - hx, s.y() - hy);
+            var hole = world.nearestHole(s.x(), s.y()).position();
+            double d = Math.hypot(s.x() - hole.x(), s.y() - hole.y());
             boolean farther = d > bestDistance + TIE_DISTANCE;
             boolean tie = !farther && d >= bestDistance - TIE_DISTANCE;
             if (best < 0 || farther || (tie && s.total() < states.get(best).total())) {

@@ -51,6 +51,10 @@ final class EnergyGuard {
     private double forceWork(double x, double y) {
         if (forces == null) return 0;
         BallState b = ball;
+        if (!forces.hasMagnets()) {
+            // The force at the step's start is its push alone.
+            return b.pfx * (x - b.px) + b.pfy * (y - b.py);
+        }
         forces.push(b.px, b.py, push);
         return push[0] * (x - b.px) + push[1] * (y - b.py) + forces.magnetPotential(b.px, b.py) - forces.magnetPotential(x, y);
     }

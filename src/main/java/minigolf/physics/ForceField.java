@@ -81,6 +81,11 @@ public final class ForceField {
         return pushShapes.length > 0;
     }
 
+    /** Whether there is a magnet (else the force anywhere is the push there). */
+    public boolean hasMagnets() {
+        return magnetX.length > 0;
+    }
+
     /** Whether any push zone or magnet reaches into the rectangle. */
     public boolean near(double x0, double y0, double x1, double y1) {
         return x0 <= maxX && x1 >= minX && y0 <= maxY && y1 >= minY;

@@ -11,13 +11,15 @@ package minigolf.physics;
  *   downhill  V^2 (c^2 / (2g (mu - s)) - q^2 / (2g (mu + s)))
  *   across    V^2 sin(psi) (c / (g (2mu - s)) + q / (g (2mu + s)))
  *   time      V (c / (g (mu - s)) + q / (g (mu + s)))
+ *   path      V^2 (c^2 / (2g (mu - s)) + q c / (g mu) + q^2 / (2g (mu + s)))
  * </pre>
+ * (the path's length: the integral of V dt = -V^2 dT / (g s T)).
  * (on level ground: straight on, V^2 / (2 mu g) in V / (mu g)). The heading near the stop goes like
  * (t_stop - t)^(1/(k-1)), which a step-by-step integrator follows only in tiny steps.
  */
 final class PlaneStop {
-    /** The displacement to the stop (m) and the time it takes (s), from the last {@link #solve}. */
-    double dx, dy, time;
+    /** The displacement to the stop (m), the time it takes (s) and the length of its path (m), from the last {@link #solve}. */
+    double dx, dy, time, path;
 
     /**
      * Solves for a ball at velocity (vx, vy), not zero, on the plane of gradient (gx, gy) with
@@ -39,5 +41,6 @@ final class PlaneStop {
         dx = down * ux + across * px;
         dy = down * uy + across * py;
         time = speed * (c / (g * (mu - s)) + q / (g * (mu + s)));
+        path = speedSquared * (c * c / (2 * g * (mu - s)) + q * c / (g * mu) + q * q / (2 * g * (mu + s)));
     }
 }

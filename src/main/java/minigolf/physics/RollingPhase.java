@@ -290,7 +290,11 @@ final class RollingPhase {
             double ex = b.vx * length, ey = b.vy * length;
             double minX = b.x + Math.min(0, ex) - bend, maxX = b.x + Math.max(0, ex) + bend;
             double minY = b.y + Math.min(0, ey) - bend, maxY = b.y + Math.max(0, ey) + bend;
-            if (!elementNear(minX, minY, maxX, maxY) && !(captureRule && hole.near(minX, minY, maxX, maxY))) return length;
+            if (!elementNear(minX, minY, maxX, maxY) && !(captureRule && hole.near(minX, minY, maxX, maxY))) {
+                // No push zone's edge or magnet within reach: the force is the start's all over it.
+                rolling.uniformForce = forces != null;
+                return length;
+            }
             double shorter = 2 * dt;
             while (2 * shorter < length * (1 - 1e-9)) shorter *= 2;
             if (!(shorter < length * (1 - 1e-9)) || !control.isLong(shorter)) return dt;
@@ -372,11 +376,16 @@ final class RollingPhase {
     /** Completes a step of length tau of the given kind, with events, and commits it. */
     private void finishStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         try {
-            if (zoned && kind == RollingStep.Kind.INTEGRATOR) tau = locate.zoneEdge(tau, a1x, a1y);
+            // A long step has kept clear of every zone's edge (clearOfHazards): only a step of at
+            // most dt may end in another zone.
+            if (zoned && kind == RollingStep.Kind.INTEGRATOR && !(controlled && control.isLong(tau))) {
+                tau = locate.zoneEdge(tau, a1x, a1y);
+            }
             commitStep(tau, kind, a1x, a1y, speed0);
         } finally {
             rolling.frozenMuK = Double.NaN;
             rolling.pushFrozen = false;
+            rolling.uniformForce = false;
         }
     }
 

@@ -40,6 +40,15 @@ final class RollingStep {
     boolean pushFrozen;
     double frozenPushX, frozenPushY;
     /**
+     * While set, a long step's stages take the start's force (fx, fy) instead of asking the push
+     * zones and magnets at each point: the caller found that force the same all over the step's
+     * reach (inside one push zone or clear of them all, no magnet near); a stage that strays out of
+     * that reach vetoes the step anyway (RollingPhase.clearOfHazards).
+     */
+    boolean uniformForce;
+    /** Whether the long step being integrated takes the start's force ({@link #uniformForce}). */
+    private boolean stagesUniform;
+    /**
      * While leaning, the ball rolls along an obstacle whose horizontal normal (pointing away from
      * it) is (leanX, leanY): the obstacle takes the part of the acceleration that pushes into it.
      */
@@ -81,6 +90,7 @@ final class RollingStep {
     void reset() {
         frozenMuK = Double.NaN;
         pushFrozen = false;
+        uniformForce = false;
         leaning = false;
     }
 
@@ -180,6 +190,7 @@ final class RollingStep {
      */
     void advanceLong(double tau, double a1x, double a1y) {
         double h = tau;
+        stagesUniform = uniformForce;
         double p2x = x + h * A21 * vx, p2y = y + h * A21 * vy;
         double v2x = vx + h * A21 * a1x, v2y = vy + h * A21 * a1y;
         accelerationAt(p2x, p2y, v2x, v2y);
@@ -223,6 +234,7 @@ final class RollingStep {
         nvx = vx + h * (B1 * a1x + B3 * a3x + B4 * a4x + B5 * a5x + B6 * a6x);
         nvy = vy + h * (B1 * a1y + B3 * a3y + B4 * a4y + B5 * a5y + B6 * a6y);
         accelerationAt(nx, ny, nvx, nvy);
+        stagesUniform = false;
         keepStage(5, nx, ny);
         if (cache != null) cache.keep(nx, ny, sample[0], sample[1], sample[2]);
         lowest = Math.min(lowest, sample[0]);
@@ -366,6 +378,11 @@ final class RollingStep {
 
     /** The force of the push zones (or the frozen push) and the magnets at (px, py) into force[0..1]. */
     private void forceAt(double px, double py) {
+        if (stagesUniform) {
+            force[0] = fx;
+            force[1] = fy;
+            return;
+        }
         if (pushFrozen) {
             force[0] = frozenPushX;
             force[1] = frozenPushY;

@@ -138,8 +138,9 @@ final class StepControl {
             }
             if (edges != null && previous == Double.POSITIVE_INFINITY && edges.leavesRegion(rolling.nx, rolling.ny)) {
                 // Across a zone's edge the estimate sees the jump, not the step's error: the step
-                // is cut at the edge (StepLocator.zoneEdge), with the start's friction and push.
-                allowed = h;
+                // is cut at the edge (StepLocator.zoneEdge), with the start's friction and push;
+                // it says nothing against the length allowed before.
+                allowed = Math.max(h, start);
                 if (pause > 0) pause--;
                 return h;
             }

@@ -181,7 +181,8 @@ final class StepLocator {
      * started (frozen in {@link RollingStep#frozenMuK} and {@link RollingStep#pushFrozen} until the
      * step is committed); the next step starts with the new ones. The edge is found on the step's
      * cubic and confirmed as a hazard is (fifty trial steps of bisection cost 13% of a shot on
-     * `windmill-push`); where that fails, by bisection on trial steps.
+     * `windmill-push`); where that fails (one crossing in five there), within a wider bracket
+     * round it, and only then on the whole step.
      */
     double zoneEdge(double tau, double a1x, double a1y) {
         int zone = friction.zoneAt(ball.x, ball.y);
@@ -199,16 +200,37 @@ final class StepLocator {
         // the edge is found on.
         trial.run(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
         double edge = onCubic(tau, pastEdge, EDGE_CONFIRM);
-        // Found on the step's cubic, confirmed by trial steps a hair either side ({@link #EDGE_CONFIRM});
-        // where that fails, by bisection on trial steps.
-        double before = Math.max(0, (edge - EDGE_CONFIRM) * tau), past = Math.min(tau, (edge + EDGE_CONFIRM) * tau);
-        trial.run(before, RollingStep.Kind.INTEGRATOR, a1x, a1y);
-        if (sameRegion(zone, trial.nx, trial.ny)) {
+        // Found on the step's cubic, confirmed by trial steps a hair either side; where the cubic
+        // strays from the trial steps by more than that hair (its own interpolation error), by
+        // trial steps EDGE_BRACKET either side, and bisection between them; where even that fails,
+        // by bisection on trial steps from the whole step. Each ends within EDGE_CONFIRM of the
+        // step past the edge.
+        for (int pass = 0; pass < 2; pass++) {
+            double hair = pass == 0 ? EDGE_CONFIRM : EDGE_BRACKET;
+            double before = Math.max(0, (edge - hair) * tau), past = Math.min(tau, (edge + hair) * tau);
+            trial.run(before, RollingStep.Kind.INTEGRATOR, a1x, a1y);
+            if (!sameRegion(zone, trial.nx, trial.ny)) continue;
             trial.run(past, RollingStep.Kind.INTEGRATOR, a1x, a1y);
-            if (!sameRegion(zone, trial.nx, trial.ny)) return past;
+            if (!sameRegion(zone, trial.nx, trial.ny)) return pass == 0 ? past : edgeBetween(zone, before, past, tau, a1x, a1y);
         }
-        double inside = 0, beyond = tau;
-        for (int k = 0; k < LOCATE_ITERATIONS; k++) {
+        return edgeBetween(zone, 0, tau, tau, a1x, a1y);
+    }
+
+    /**
+     * As {@link #EDGE_CONFIRM}, for the bracket tried where the hair's fails: the cubic's
+     * interpolation error (micrometres at most) against a step's travel (a ball at 0.01 m/s in a
+     * step of dt moves 1.7e-4 m, so 1e-5 of it is 1.7e-9 m: less than the error only where the
+     * cubic is off by more, and then the whole step is bisected).
+     */
+    static final double EDGE_BRACKET = 1e-5;
+
+    /**
+     * The step's length just past the zone's edge between trial steps {@code inside} (in the
+     * region) and {@code beyond} (not), by bisection on trial steps down to EDGE_CONFIRM of the
+     * whole step tau: the first trial step found past the edge.
+     */
+    private double edgeBetween(int zone, double inside, double beyond, double tau, double a1x, double a1y) {
+        for (int k = 0; k < LOCATE_ITERATIONS && beyond - inside > EDGE_CONFIRM * tau; k++) {
             double mid = 0.5 * (inside + beyond);
             trial.run(mid, RollingStep.Kind.INTEGRATOR, a1x, a1y);
             if (sameRegion(zone, trial.nx, trial.ny)) inside = mid; else beyond = mid;

@@ -117,7 +117,17 @@ final class StoppingTail {
         }
         // Braking at least g (mu_k - steepest), the ball's path is no longer than this.
         double r = REACH_FACTOR * speed * speed / (2 * gravity * (mu - steepest)) + RollingPhase.PATH_MARGIN;
-        double minX = b.x - r, maxX = b.x + r, minY = b.y - r, maxY = b.y + r;
+        // Nor, with the same margins, than the plane's path to its end: it stays inside the ellipse
+        // with the start and the end as foci and that length as its string, whose box is far
+        // tighter where the ball heads down the fall line (on a push zone with mu_k - s small, r
+        // reaches metres). The reach is the box of both.
+        double string = REACH_FACTOR * plane.path + RollingPhase.PATH_MARGIN + estimate;
+        double semi = 0.5 * string, focal = 0.5 * length;
+        double minor = Math.max(0, semi * semi - focal * focal);
+        double ux = length > 0 ? dx / length : 0, uy = length > 0 ? dy / length : 0;
+        double halfX = Math.sqrt(minor + focal * focal * ux * ux), halfY = Math.sqrt(minor + focal * focal * uy * uy);
+        double minX = Math.max(b.x - r, b.x + 0.5 * dx - halfX), maxX = Math.min(b.x + r, b.x + 0.5 * dx + halfX);
+        double minY = Math.max(b.y - r, b.y + 0.5 * dy - halfY), maxY = Math.min(b.y + r, b.y + 0.5 * dy + halfY);
         if (!locate.inPlay(minX, minY) || !locate.inPlay(maxX, maxY) || reach.near(minX, minY, maxX, maxY)) return false;
         // Water: the path keeps above the lowest sample by more than the slope can drop it.
         if (lowest - steepest * r <= 0 || locate.hazardAtEnd(ex, ey) != null) return false;

@@ -129,7 +129,7 @@ public final class Stroke {
         PathSweep paths = new PathSweep(scene, terrain, ballRadius, ball);
         this.paths = paths;
         Leaning lean = scene == null ? null : new Leaning(scene, terrain, steps, ballRadius, gravity, complete);
-        HoleRules hole = new HoleRules(ball, reports, terrain, world.hole());
+        HoleRules hole = new HoleRules(ball, reports, terrain, world.holes());
         ObstacleContact contact = new ObstacleContact(ball, reports, paths.hit, rest, lean, hopSpeed, physics.maxSpeed(),
                 gravity);
         this.steps = steps;

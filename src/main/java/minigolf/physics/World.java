@@ -1,6 +1,7 @@
 package minigolf.physics;
 
 import java.nio.file.Path;
+import java.util.List;
 import minigolf.collision.CollisionScene;
 import minigolf.course.Bounds;
 import minigolf.course.Course;
@@ -19,6 +20,7 @@ import minigolf.terrain.Terrains;
  */
 public final class World {
     private final Course course;
+    private final List<Hole> holes;
     private final Terrain terrain;
     private final FrictionField friction;
     private final CollisionScene obstacles;
@@ -33,6 +35,7 @@ public final class World {
 
     public World(Course course, Terrain terrain) {
         this.course = course;
+        this.holes = course.holes();
         this.terrain = terrain;
         this.friction = new FrictionField(course.physics(), course.zones(), course.terrain());
         this.playArea = new PlayArea(course);
@@ -118,6 +121,21 @@ public final class World {
 
     public Hole hole() {
         return course.hole();
+    }
+
+    /** Every hole of the course, the main one first (any of them ends the stroke). */
+    public List<Hole> holes() {
+        return holes;
+    }
+
+    /** The hole whose centre is nearest (x, y): the one a holed ball dropped into. */
+    public Hole nearestHole(double x, double y) {
+        Hole best = holes.get(0);
+        for (Hole h : holes) {
+            if (Math.hypot(x - h.position().x(), y - h.position().y())
+                    < Math.hypot(x - best.position().x(), y - best.position().y())) best = h;
+        }
+        return best;
     }
 
     public PhysicsSettings physics() {

@@ -10,7 +10,7 @@ import java.util.List;
 
 import static org.lwjgl.opengl.GL11.*;
 
-/** The hole (cup and flag), the balls and the aiming arrow. */
+/** The hole (cup and flag), the other holes (cups), the balls and the aiming arrow. */
 public final class ObjectsPass implements RenderPass {
     /** A golf ball's radius in metres. */
     public static final double BALL_RADIUS = 0.02135;
@@ -29,6 +29,9 @@ public final class ObjectsPass implements RenderPass {
     private ShaderProgram program;
     private final Mesh cupRim;
     private final Mesh cup;
+    /** The course's extra holes (the classic tracks'): a rim and a cup each, no flag; their centres in extraX, extraY. */
+    private final Mesh[] extraRims, extraCups;
+    private final double[] extraX, extraY;
     /** The flagstick (models/flag.obj: pole, gold ball, waving cloth), placed at the hole. */
     private final Mesh flag;
     /** Confetti and splashes (Particles), rebuilt each frame while they last; null when none. */
@@ -64,6 +67,20 @@ public final class ObjectsPass implements RenderPass {
         int cupSegments = vertexLit ? 24 : 48;
         cupRim = new Mesh(Shapes.drapedDisc(hx, hy, r * 1.15, cupSegments, 3, terrain::height, 0.003, 0.92f, 0.92f, 0.88f));
         cup = new Mesh(Shapes.drapedDisc(hx, hy, r, cupSegments, 3, terrain::height, 0.005, 0.03f, 0.04f, 0.03f));
+        int extra = course.extraHoles().size();
+        extraRims = new Mesh[extra];
+        extraCups = new Mesh[extra];
+        extraX = new double[extra];
+        extraY = new double[extra];
+        for (int i = 0; i < extra; i++) {
+            var h = course.extraHoles().get(i);
+            extraX[i] = h.position().x();
+            extraY[i] = h.position().y();
+            extraRims[i] = new Mesh(Shapes.drapedDisc(extraX[i], extraY[i], h.radius() * 1.15, cupSegments, 3, terrain::height,
+                    0.003, 0.92f, 0.92f, 0.88f));
+            extraCups[i] = new Mesh(Shapes.drapedDisc(extraX[i], extraY[i], h.radius(), cupSegments, 3, terrain::height,
+                    0.005, 0.03f, 0.04f, 0.03f));
+        }
         // The cloth flies sideways to the line from the start to the hole, so the opening view sees it broadside.
         flag = new Mesh(ModelResource.get("flag").placed(hx, hy, ground - FLAG_FOOT_DEPTH,
                 clothHeading(course.start().x(), course.start().y(), hx, hy), 1));
@@ -205,6 +222,10 @@ public final class ObjectsPass implements RenderPass {
         begin(frame);
         draw(cupRim, model.identity(), 0.15f, 16f);
         draw(cup, model.identity(), 0.0f, 8f);
+        for (int i = 0; i < extraCups.length; i++) {
+            draw(extraRims[i], model.identity(), 0.15f, 16f);
+            draw(extraCups[i], model.identity(), 0.0f, 8f);
+        }
         program.set("uFlagPole", (float) holeX, (float) holeY);
         draw(flag, model.identity(), 0.3f, 32f);
         if (arrow != null) draw(arrow, model.identity(), 0.2f, 16f);
@@ -244,6 +265,12 @@ public final class ObjectsPass implements RenderPass {
         model.translation((float) holeX, (float) holeY, 0).scale(s, s, 1).translate((float) -holeX, (float) -holeY, 0);
         draw(cupRim, model, 0.0f, 8f);
         draw(cup, model, 0.0f, 8f);
+        for (int i = 0; i < extraCups.length; i++) {
+            float x = (float) extraX[i], y = (float) extraY[i];
+            model.translation(x, y, 0).scale(s, s, 1).translate(-x, -y, 0);
+            draw(extraRims[i], model, 0.0f, 8f);
+            draw(extraCups[i], model, 0.0f, 8f);
+        }
         drawBalls(mapBall, Math.max((float) visualBallRadius(), markerRadius));
         glEnable(GL_DEPTH_TEST);
     }
@@ -299,6 +326,10 @@ public final class ObjectsPass implements RenderPass {
     public void close() {
         cupRim.close();
         cup.close();
+        for (int i = 0; i < extraCups.length; i++) {
+            extraRims[i].close();
+            extraCups[i].close();
+        }
         flag.close();
         ball.close();
         mapBall.close();

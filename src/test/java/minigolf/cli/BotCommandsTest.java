@@ -51,6 +51,30 @@ class BotCommandsTest {
         assertEquals(json.get("simulations").asLong(), sum);
     }
 
+    /** The game without its wall time: what must not depend on the thread count. */
+    private static JsonNode withoutTime(CliRun r) throws IOException {
+        assertEquals(0, r.code(), r.err());
+        com.fasterxml.jackson.databind.node.ObjectNode json = (com.fasterxml.jackson.databind.node.ObjectNode) new ObjectMapper().readTree(r.out());
+        json.remove("wallMs");
+        return json;
+    }
+
+    @Test
+    void solveSpreadsTheSweepsOverThreadsAndPlaysTheSameGame(@TempDir Path dir) throws IOException {
+        // planner-aces sweeps all round (the dense sweep, the one-putt map's sweep) on this two-putt course.
+        String course = BENCH.resolve("two-putt.json").toString();
+        JsonNode one = withoutTime(run("solve", course, "--bot", "planner-aces", "--seed", "4"));
+        JsonNode three = withoutTime(run("solve", course, "--bot", "planner-aces", "--seed", "4", "--threads", "3"));
+        assertEquals(one, three);
+        assertTrue(one.get("simulations").asLong() > 360, one.toString());
+        CliRun zero = run("solve", course, "--threads", "0");
+        assertEquals(2, zero.code());
+        assertEquals("minigolf: --threads: must be 1 to 256, got 0", zero.err().trim());
+        CliRun many = run("experiment", "--suite", BENCH.toString(), "--out", dir.toString(), "--sweep-threads", "257");
+        assertEquals(2, many.code());
+        assertEquals("minigolf: --sweep-threads: must be 1 to 256, got 257", many.err().trim());
+    }
+
     @Test
     void solveWithoutASolutionInTheBudgetReportsNotHoled() throws IOException {
         CliRun r = run("solve", BENCH.resolve("lake-bowl.json").toString(), "--bot", "newton", "--budget", "3",

@@ -18,8 +18,8 @@ import org.junit.jupiter.api.Test;
  */
 class LongStepAmongElementsTest {
     private static final double G = 9.81;
-    /** Steps of the stripes shot: 67 when the control halved steps across each edge, 49 now. */
-    private static final int STRIPE_STEPS = 55;
+    /** Steps of the stripes shot: 67 when the control halved steps across each edge, 44 when the step after a cut restarted from its length, 35 now. */
+    private static final int STRIPE_STEPS = 38;
 
     @Test
     void aBallRollingAlongAWallAFewCentimetresAwayTakesLongStepsAndStopsAtTheClosedForm() {
@@ -72,6 +72,8 @@ class LongStepAmongElementsTest {
         // along x it loses 2 g (0.1 d + 0.05 * 1.5) of v^2 and stops after d = 3.837 m, past them.
         // A step whose trial ends in another zone is cut at the edge (StepLocator.zoneEdge) at
         // once; before, the error control halved it first (the estimate sees the jump in friction).
+        // The cut says nothing against the step's error: the next may be as long as the one before
+        // (44 steps when it restarted from the cut's length, 35 now).
         String stripe = "{\"shape\": {\"type\": \"rect\", \"min\": [%s, -1], \"max\": [%s, 1]}, \"kineticFriction\": 0.15, \"staticFriction\": 0.3}";
         World w = ElementWorlds.flat("\"zones\": [" + String.format(stripe, -3, -2.5) + ", " + String.format(stripe, -2, -1.5)
                 + ", " + String.format(stripe, -1, -0.5) + "]");

@@ -46,6 +46,21 @@ class SceneRenderTest {
         assertTrue(px.g(lx, ly) > px.r(lx, ly) && px.g(lx, ly) > px.b(lx, ly), "grass is not green: " + px.describe(lx, ly));
     }
 
+    /** An extra hole (a course may have several) is drawn as a cup: dark where the same spot is grass without it. */
+    @Test
+    void anExtraHoleIsDrawnAsACup() {
+        Course one = TestCourses.flat();
+        Course two = one.withHoles(one.hole(), java.util.List.of(
+                new minigolf.course.Hole(new minigolf.course.Vec2(-1, 2), 0.25, minigolf.course.HoleRule.REST, null)));
+        OrbitCamera cam = OrbitCamera.topDown(one, TestCourses.FLAT, new Vector3f(0, 0, 0.1f), (float) W / H);
+        float[] at = cam.project(new Vector3f(-1, 2, 0.1f), W, H);
+        int x = Math.round(at[0]), y = Math.round(at[1]);
+        Pixels without = Pixels.read(shot("one-hole-top.png", one, TestCourses.FLAT, cam));
+        Pixels with = Pixels.read(shot("extra-hole-top.png", two, TestCourses.FLAT, cam));
+        assertTrue(without.g(x, y) > 80, "grass without the extra hole: " + without.describe(x, y));
+        assertTrue(with.r(x, y) + with.g(x, y) + with.b(x, y) < 100, "a dark cup at the extra hole: " + with.describe(x, y));
+    }
+
     @Test
     void flatCourseShowsNoWater() {
         Course course = TestCourses.flat();

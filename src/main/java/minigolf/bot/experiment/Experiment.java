@@ -44,6 +44,8 @@ public final class Experiment {
     /** Wall-time limit per game in seconds (NaN: none). */
     private final double timeLimit;
     private final boolean hideFriction;
+    /** Threads each game's bot spreads its sweeps over (the same games for any number). */
+    private int sweepThreads = 1;
 
     public Experiment(List<SuiteCourse> courses, List<String> bots, int seeds, long budget, int maxStrokes, int threads) {
         this(courses, bots, seeds, budget, maxStrokes, threads, Double.NaN);
@@ -65,6 +67,13 @@ public final class Experiment {
         this.maxStrokes = maxStrokes;
         this.threads = threads;
         this.timeLimit = timeLimitSeconds;
+    }
+
+    /** Lets each game's bot spread its sweeps over {@code threads} threads (besides the runs' own threads). */
+    public Experiment spreadSweepsOver(int threads) {
+        if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, got " + threads);
+        this.sweepThreads = threads;
+        return this;
     }
 
     public RunPlan plan() {
@@ -126,7 +135,7 @@ public final class Experiment {
         if (bot == null) throw new IllegalArgumentException("unknown bot " + run.bot());
         return Playthrough.play(bot, worlds.get(run.course()), SimulationSettings.DEFAULT, maxStrokes,
                 budget, run.seed(), Double.isNaN(timeLimit) ? CancellationToken.none() : CancellationToken.withTimeLimit(timeLimit),
-                BotProgress.NONE, new PlayConditions(run.noise(), hideFriction));
+                BotProgress.NONE, new PlayConditions(run.noise(), hideFriction), sweepThreads);
     }
 
     private static RunRecord record(RunPlan.Run run, Playthrough.Result result) {

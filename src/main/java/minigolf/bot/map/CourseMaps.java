@@ -4,7 +4,7 @@ import minigolf.bot.CancellationToken;
 import minigolf.physics.World;
 
 /**
- * The grid and the distance field to the hole of one world, built on first use and kept while a
+ * The grid and the distance field to the nearest hole of one world, built on first use and kept while a
  * bot plays that world (they depend on the course only, not on the ball).
  */
 public final class CourseMaps {
@@ -25,7 +25,13 @@ public final class CourseMaps {
     public void prepare(World w, CancellationToken token) {
         if (w == world) return;
         grid = CourseGrid.of(w, token);
-        toHole = new DistanceField(grid, w.hole().position().x(), w.hole().position().y(), token, frictionAware);
+        var holes = w.holes();
+        double[] xs = new double[holes.size()], ys = new double[holes.size()];
+        for (int i = 0; i < xs.length; i++) {
+            xs[i] = holes.get(i).position().x();
+            ys[i] = holes.get(i).position().y();
+        }
+        toHole = new DistanceField(grid, xs, ys, token, frictionAware);
         world = w;
     }
 

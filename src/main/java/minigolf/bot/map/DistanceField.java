@@ -6,7 +6,7 @@ import java.util.List;
 import minigolf.bot.CancellationToken;
 
 /**
- * Shortest distance over free cells from every cell to the hole (Dijkstra, 8 neighbours, no
+ * Shortest distance over free cells from every cell to the nearest of its targets, the holes (Dijkstra, 8 neighbours, no
  * corner cutting, never through a one-way gate against its way): how far a rest point really is
  * from the hole when water or walls lie between.
  * Cells close to water (not obstacles: those only bounce the ball) cost more (up to {@code 1 + NEAR_WATER_COST} times within {@code SAFE_CLEARANCE}),
@@ -21,10 +21,15 @@ public final class DistanceField {
     /** The one-way gates (null: none): a step against one is barred. */
     private final GateCrossings gates;
     private final double[] distance;
-    private final double targetX, targetY;
+    /** The targets (a course's holes): any of them ends a path. */
+    private final double[] targetX, targetY;
 
     public DistanceField(CourseGrid grid, double targetX, double targetY, CancellationToken token) {
         this(grid, targetX, targetY, token, false);
+    }
+
+    public DistanceField(CourseGrid grid, double targetX, double targetY, CancellationToken token, boolean frictionAware) {
+        this(grid, new double[] {targetX}, new double[] {targetY}, token, frictionAware);
     }
 
     /**
@@ -33,10 +38,11 @@ public final class DistanceField {
      * metres of the easiest ground. A winding grass path through dirt is then shorter than the
      * straight line across the dirt; on a course of one friction nothing changes.
      */
-    public DistanceField(CourseGrid grid, double targetX, double targetY, CancellationToken token, boolean frictionAware) {
+    public DistanceField(CourseGrid grid, double[] targetX, double[] targetY, CancellationToken token, boolean frictionAware) {
+        if (targetX.length == 0 || targetX.length != targetY.length) throw new IllegalArgumentException("no targets");
         this.grid = grid;
-        this.targetX = targetX;
-        this.targetY = targetY;
+        this.targetX = targetX.clone();
+        this.targetY = targetY.clone();
         int n = grid.cols() * grid.rows();
         double[] weight = frictionAware ? frictionWeights(grid) : null;
         // Push zones make a step cheaper along the push and dearer against it; a teleport's entry is as
@@ -47,10 +53,16 @@ public final class DistanceField {
         double floor = push == null ? 0 : lowestFriction(grid) * grid.world().physics().gravity();
         distance = new double[n];
         Arrays.fill(distance, Double.POSITIVE_INFINITY);
-        int start = grid.indexOf(targetX, targetY);
         IndexHeap heap = new IndexHeap(n);
-        distance[start] = Math.hypot(grid.centreX(grid.col(targetX)) - targetX, grid.centreY(grid.row(targetY)) - targetY);
-        heap.push(start, distance[start]);
+        for (int t = 0; t < this.targetX.length; t++) {
+            double tx = this.targetX[t], ty = this.targetY[t];
+            int start = grid.indexOf(tx, ty);
+            double d = Math.hypot(grid.centreX(grid.col(tx)) - tx, grid.centreY(grid.row(ty)) - ty);
+            if (d < distance[start]) {
+                distance[start] = d;
+                heap.push(start, d);
+            }
+        }
         int settled = 0;
         while (!heap.isEmpty()) {
             int i = heap.pop();
@@ -172,9 +184,13 @@ public final class DistanceField {
      */
     public double at(double x, double y) {
         if (CourseGrid.isBlocked(grid.world(), x, y)) return Double.POSITIVE_INFINITY;
-        double direct = Math.hypot(x - targetX, y - targetY);
         int c0 = grid.col(x), r0 = grid.row(y);
-        if (c0 == grid.col(targetX) && r0 == grid.row(targetY)) return direct;
+        double direct = Double.POSITIVE_INFINITY;
+        for (int t = 0; t < targetX.length; t++) {
+            double d = Math.hypot(x - targetX[t], y - targetY[t]);
+            if (c0 == grid.col(targetX[t]) && r0 == grid.row(targetY[t])) return d;
+            direct = Math.min(direct, d);
+        }
         double best = Double.POSITIVE_INFINITY;
         for (int r = r0 - 1; r <= r0 + 1; r++) {
             for (int c = c0 - 1; c <= c0 + 1; c++) {
@@ -192,16 +208,15 @@ public final class DistanceField {
     }
 
     /**
-     * The shortest path from (x, y) to the target as cell centres (first the start cell, last the
-     * target's cell), by steepest descent of the field; empty when (x, y) is cut off.
+     * The shortest path from (x, y) to the nearest target as cell centres (first the start cell, last
+     * the target's cell), by steepest descent of the field; empty when (x, y) is cut off.
      */
     public List<double[]> path(double x, double y) {
         List<double[]> points = new ArrayList<>();
         int i = grid.indexOf(x, y);
         if (!Double.isFinite(distance[i])) return points;
-        int goal = grid.indexOf(targetX, targetY);
         points.add(new double[] {x, y});
-        for (int guard = 0; i != goal && guard < distance.length; guard++) {
+        for (int guard = 0; target(i) < 0 && guard < distance.length; guard++) {
             int c = i % grid.cols(), r = i / grid.cols();
             int next = i;
             for (int dr = -1; dr <= 1; dr++) {
@@ -218,7 +233,23 @@ public final class DistanceField {
             i = next;
             points.add(new double[] {grid.centreX(i % grid.cols()), grid.centreY(i / grid.cols())});
         }
-        points.add(new double[] {targetX, targetY});
+        int t = target(i);
+        if (t < 0) t = nearestTarget(grid.centreX(i % grid.cols()), grid.centreY(i / grid.cols()));
+        points.add(new double[] {targetX[t], targetY[t]});
         return points;
+    }
+
+    /** The target whose cell is {@code index}, or -1. */
+    private int target(int index) {
+        for (int t = 0; t < targetX.length; t++) if (grid.indexOf(targetX[t], targetY[t]) == index) return t;
+        return -1;
+    }
+
+    private int nearestTarget(double x, double y) {
+        int best = 0;
+        for (int t = 1; t < targetX.length; t++) {
+            if (Math.hypot(x - targetX[t], y - targetY[t]) < Math.hypot(x - targetX[best], y - targetY[best])) best = t;
+        }
+        return best;
     }
 }

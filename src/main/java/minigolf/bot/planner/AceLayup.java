@@ -13,8 +13,9 @@ import minigolf.bot.Shot;
  * of their own; the first that holes out is kept for the next stroke ({@link Solved}).
  *
  * <p>A look-ahead sweep costs what the stroke's own sweep costs (about 500 simulations on flat
- * ground, 1,300 with pushes): a game spends at most {@link #SHARE} of its budget on them, so
- * the later strokes keep their own sweeps.
+ * ground, 1,300 with pushes): a game spends at most {@link #SHARE} of its budget on them, and
+ * only out of its first half ({@link #allowance}), so the later strokes keep their own sweeps. With
+ * the share alone, games that spent the whole 20,000 rose from 16 to 26 of the 177 sample tracks.
  */
 final class AceLayup {
     static final int TRIES = 3;
@@ -25,6 +26,16 @@ final class AceLayup {
     /** What this game's look-aheads may still spend. */
     private final long allowance;
     private long spent;
+
+    /**
+     * What the look-aheads may spend now: the rest of the game's share, but never so much that
+     * less than half the budget would be left (0 once half is spent).
+     */
+    static long allowance(long budget, long remaining, long spentSoFar) {
+        long share = (long) (SHARE * budget) - spentSoFar;
+        long aboveHalf = remaining - budget / 2;
+        return Math.max(0, Math.min(share, aboveHalf));
+    }
 
     AceLayup(Stroke s, long allowance) {
         this.s = s;

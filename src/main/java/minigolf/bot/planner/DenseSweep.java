@@ -6,6 +6,7 @@ import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
+import minigolf.physics.TrajectoryListener;
 
 /**
  * A serious hole-in-one search on the first stroke, before the planner settles for two (the
@@ -83,42 +84,48 @@ final class DenseSweep {
         if (!affordable()) return null;
         s.sim.phase("dense sweep");
         double vMax = s.sim.maxSpeed();
-        List<Pass> near = new ArrayList<>();
         int directions = (int) Math.round(2 * Math.PI / COARSE_STEP);
         double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
+        List<Trial> coarse = new ArrayList<>();
         for (int i = 0; i < directions; i++) {
             double angle = holeAngle + i * COARSE_STEP;
             for (double fraction : speeds) {
-                double speed = vMax * fraction;
-                Shot shot = s.sim.limit(Shot.polar(angle, speed));
-                Pass p = pass(shot, layups == null ? null : layups.tracer(shot), true);
-                if (p == null) return shot;
-                if (p.distance() < NEAR) near.add(p);
+                Shot shot = s.sim.limit(Shot.polar(angle, vMax * fraction));
+                coarse.add(trial(shot, layups == null ? null : layups.tracer(shot), null));
             }
         }
+        List<Pass> near = new ArrayList<>();
+        Trial holed = sweep(coarse, true, p -> {
+            if (p.distance() < NEAR) near.add(p);
+        });
+        if (holed != null) return holed.shot();
         if (layups != null) layups.swept();
         near.sort((a, b) -> Double.compare(a.distance(), b.distance()));
         s.sim.phase("dense fine");
-        List<Pass> fine = new ArrayList<>();
+        List<Trial> fan = new ArrayList<>();
         List<Pass> refined = new ArrayList<>();
         for (Pass c : near) {
             if (refined.size() >= PASSES) break;
             // One fan per pass: a neighbour of a refined pass (within the fan) is the same line.
             if (refined.stream().anyMatch(r -> sameLine(r.shot(), c.shot()))) continue;
             refined.add(c);
+            Pass centre = null;
             for (int k = -FINE_HALF; k <= FINE_HALF; k++) {
                 for (double f : fineSpeeds) {
                     if (k == 0 && f == 1) {
-                        fine.add(c);
+                        // Already simulated: it joins the fine passes just before the fan's next shot.
+                        centre = c;
                         continue;
                     }
                     Shot shot = s.sim.limit(Shot.polar(angle(c.shot()) + k * FINE_STEP, c.shot().speed() * f));
-                    Pass p = pass(shot);
-                    if (p == null) return shot;
-                    fine.add(p);
+                    fan.add(trial(shot, null, centre));
+                    centre = null;
                 }
             }
         }
+        List<Pass> fine = new ArrayList<>();
+        holed = sweep(fan, false, fine::add);
+        if (holed != null) return holed.shot();
         fine.sort((a, b) -> Double.compare(a.distance(), b.distance()));
         s.sim.phase("dense refine");
         int starts = 0;
@@ -141,18 +148,44 @@ final class DenseSweep {
         return rests;
     }
 
-    /** Simulates a shot; null when it holes out. */
-    private Pass pass(Shot shot) {
-        return pass(shot, null, false);
+    /**
+     * One shot of a sweep: where its path passes the hole, the lay-ups on it (null: none), and a
+     * fan's centre (null: none), a pass already simulated that is listed just before this shot's.
+     */
+    private record Trial(Shot shot, Approach approach, MapTwoStrokes.Runs runs, Pass centreBefore) {
     }
 
-    private Pass pass(Shot shot, MapTwoStrokes.Runs runs, boolean keepRest) {
-        Approach approach = new Approach(s.holeX, s.holeY, s.px, s.py, shot);
-        ShotResult r = s.sim.simulate(s.px, s.py, shot, runs == null ? approach : Stroke.both(approach, runs));
-        if (runs != null) runs.end(r);
-        if (CountingSimulator.holed(r)) return null;
-        if (keepRest && r.outcome() == Outcome.STOPPED) rests.add(new Rest(shot, r.endX(), r.endY()));
-        return new Pass(shot, Math.sqrt(approach.best), Math.hypot(approach.cvx, approach.cvy));
+    private Trial trial(Shot shot, MapTwoStrokes.Runs runs, Pass centreBefore) {
+        return new Trial(shot, new Approach(s.holeX, s.holeY, s.px, s.py, shot), runs, centreBefore);
+    }
+
+    /**
+     * Simulates the trials in order, each pass (and a fan's centre before it) to {@code passes}; the
+     * trial that holes out (which ends the sweep), or null. With {@code keepRest} the rest points are kept.
+     */
+    private Trial sweep(List<Trial> trials, boolean keepRest, java.util.function.Consumer<Pass> passes) {
+        return s.sim.simulateInOrder(s.px, s.py, trials, new CountingSimulator.InOrder<>() {
+            @Override
+            public Shot shot(Trial t) {
+                return t.shot();
+            }
+
+            @Override
+            public TrajectoryListener listener(Trial t) {
+                return t.runs() == null ? t.approach() : Stroke.both(t.approach(), t.runs());
+            }
+
+            @Override
+            public boolean stopsAt(Trial t, ShotResult r) {
+                if (t.runs() != null) t.runs().end(r);
+                if (CountingSimulator.holed(r)) return true;
+                if (keepRest && r.outcome() == Outcome.STOPPED) rests.add(new Rest(t.shot(), r.endX(), r.endY()));
+                if (t.centreBefore() != null) passes.accept(t.centreBefore());
+                Approach a = t.approach();
+                passes.accept(new Pass(t.shot(), Math.sqrt(a.best), Math.hypot(a.cvx, a.cvy)));
+                return false;
+            }
+        });
     }
 
     /** The shot slowed so the ball has no speed left where it passed nearest: v0² - v² (work on the way kept). */

@@ -81,16 +81,17 @@ final class MapTwoStrokes {
             double vMax = s.sim.maxSpeed() * (1 - 1e-9);
             int directions = (int) Math.round(2 * Math.PI / STEP);
             double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
+            List<Runs> sweep = new ArrayList<>();
             for (int i = 0; i < directions; i++) {
                 double angle = holeAngle + (i % 2 == 0 ? 1 : -1) * ((i + 1) / 2) * STEP;
-                for (double f : speeds) {
-                    Shot shot = s.sim.limit(Shot.polar(angle, f * vMax));
-                    Runs runs = new Runs(shot);
-                    Eval e = s.evaluateWith(shot, runs);
-                    if (e.holed()) return shot;
-                    runs.end(e.result());
-                }
+                for (double f : speeds) sweep.add(new Runs(s.sim.limit(Shot.polar(angle, f * vMax))));
             }
+            Runs holed = s.evaluateInOrder(sweep, Runs::shot, runs -> runs, () -> true, (runs, e) -> {
+                if (e.holed()) return true;
+                runs.end(e.result());
+                return false;
+            });
+            if (holed != null) return holed.shot();
         }
         targets.sort((a, b) -> Double.compare(a.score(), b.score()));
         exact.sort((a, b) -> Double.compare(a.score(), b.score()));
@@ -172,6 +173,17 @@ final class MapTwoStrokes {
         private int hits;
         /** The current run: its points' path lengths, positions, speeds² needed, cushions. */
         private final List<double[]> run = new ArrayList<>();
+        /**
+         * The lay-ups found along the path so far: kept here while the shot runs (perhaps on another
+         * thread, see {@link minigolf.bot.CountingSimulator#simulateInOrder}) and added to the targets
+         * at {@link #end}, in the shots' order.
+         */
+        private final List<Target> found = new ArrayList<>();
+
+        /** The shot whose path this traces. */
+        Shot shot() {
+            return shot;
+        }
 
         Runs(Shot shot) {
             this.shot = shot;
@@ -212,6 +224,8 @@ final class MapTwoStrokes {
          */
         void end(minigolf.physics.ShotResult r) {
             close();
+            targets.addAll(found);
+            found.clear();
             if (r.outcome() != minigolf.physics.Outcome.STOPPED) return;
             double x = r.endX(), y = r.endY();
             if (!map.marked(x, y) || s.grid.hazardClearance(x, y) < StrokePlan.REST_CLEARANCE
@@ -236,7 +250,7 @@ final class MapTwoStrokes {
             double forgiving = Math.min(end - start, LONG_RUN) + 0.05 * map.markedAround(m[1], m[2]);
             double score = map.cost(m[1], m[2]) - 4 * forgiving + 0.5 * m[4];
             double angle = Math.atan2(shot.vy(), shot.vx());
-            targets.add(new Target(s.sim.limit(Shot.polar(angle, speed)), m[1], m[2], score));
+            found.add(new Target(s.sim.limit(Shot.polar(angle, speed)), m[1], m[2], score));
         }
     }
 }

@@ -273,7 +273,7 @@ public final class PlannerBot extends SearchBot {
 
     /** The quick plan's look-ahead sweeps ({@link AceLayup}), within this game's share of the budget. */
     private Shot aceLayup(Stroke stroke, DenseSweep dense) {
-        long allowance = (long) (AceLayup.SHARE * stroke.sim.budget()) - aceLayupSpent;
+        long allowance = AceLayup.allowance(stroke.sim.budget(), stroke.sim.remaining(), aceLayupSpent);
         if (allowance <= 0) return null;
         AceLayup search = new AceLayup(stroke, allowance);
         Shot shot = search.search(dense.rests());
@@ -332,10 +332,12 @@ public final class PlannerBot extends SearchBot {
         if (world.hole().rule() == HoleRule.REST) return sim;
         if (probeSource != world) {
             Course c = world.course();
+            List<Hole> rest = new ArrayList<>();
+            for (Hole h : c.extraHoles()) rest.add(new Hole(h.position(), h.radius(), HoleRule.REST, null));
             Hole h = c.hole();
             Course probe = new Course(c.format(), c.name(), c.terrain(), c.bounds(), c.physics(), c.start(),
                     new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones(), c.obstacles(), c.pushZones(),
-                    c.magnets(), c.teleports());
+                    c.magnets(), c.teleports(), c.world(), rest);
             probeWorld = new World(probe, world.terrain());
             probeSource = world;
         }

@@ -50,24 +50,45 @@ final class PuttSweep {
         this.speeds = Flatness.isFlat(s.world) ? FLAT_SPEEDS : HILL_SPEEDS;
     }
 
+    /** One coarse shot and its listeners: where it passes nearest the hole, the lay-ups on its path. */
+    private record Coarse(Shot shot, Nearest nearest, MapTwoStrokes.Runs runs) {
+    }
+
     /** A putt that holes out from the stroke's ball, or null. */
     Shot holeInOne() {
         double vMax = s.sim.maxSpeed() * (1 - 1e-9);
         double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
         int directions = (int) Math.round(2 * Math.PI / STEP);
-        List<Pass> near = new ArrayList<>();
+        List<Coarse> coarse = new ArrayList<>();
         for (int i = 0; i < directions; i++) {
             double angle = holeAngle + i * STEP;
             for (double f : speeds) {
                 Shot shot = s.sim.limit(Shot.polar(angle, f * vMax));
-                Nearest n = new Nearest(shot);
-                MapTwoStrokes.Runs runs = layups == null ? null : layups.tracer(shot);
-                ShotResult r = s.sim.simulate(s.px, s.py, shot, runs == null ? n : Stroke.both(n, runs));
-                if (CountingSimulator.holed(r)) return shot;
-                if (runs != null) runs.end(r);
-                if (n.best < NEAR * NEAR) near.add(new Pass(shot, Math.sqrt(n.best), Math.sqrt(Math.max(n.needThere, 0))));
+                coarse.add(new Coarse(shot, new Nearest(shot), layups == null ? null : layups.tracer(shot)));
             }
         }
+        List<Pass> near = new ArrayList<>();
+        Coarse holed = s.sim.simulateInOrder(s.px, s.py, coarse, new CountingSimulator.InOrder<>() {
+            @Override
+            public Shot shot(Coarse c) {
+                return c.shot();
+            }
+
+            @Override
+            public TrajectoryListener listener(Coarse c) {
+                return c.runs() == null ? c.nearest() : Stroke.both(c.nearest(), c.runs());
+            }
+
+            @Override
+            public boolean stopsAt(Coarse c, ShotResult r) {
+                if (CountingSimulator.holed(r)) return true;
+                if (c.runs() != null) c.runs().end(r);
+                Nearest n = c.nearest();
+                if (n.best < NEAR * NEAR) near.add(new Pass(c.shot(), Math.sqrt(n.best), Math.sqrt(Math.max(n.needThere, 0))));
+                return false;
+            }
+        });
+        if (holed != null) return holed.shot();
         if (layups != null) layups.swept();
         near.sort((a, b) -> Double.compare(a.distance(), b.distance()));
         List<Pass> refined = new ArrayList<>();
@@ -75,8 +96,8 @@ final class PuttSweep {
             if (refined.size() >= PASSES) break;
             if (refined.stream().anyMatch(q -> sameLine(q, p))) continue;
             refined.add(p);
-            Shot holed = localGrid(p);
-            if (holed != null) return holed;
+            Shot holedHere = localGrid(p);
+            if (holedHere != null) return holedHere;
         }
         return null;
     }
@@ -84,18 +105,18 @@ final class PuttSweep {
     /** The grid round the shot that stops where the pass was nearest, the middle first. */
     private Shot localGrid(Pass p) {
         double angle = Math.atan2(p.shot().vy(), p.shot().vx());
+        List<Shot> grid = new ArrayList<>();
         for (int ring = 0; ring <= Math.max(FINE_HALF, SPEED_HALF); ring++) {
             for (int i = -Math.min(ring, FINE_HALF); i <= Math.min(ring, FINE_HALF); i++) {
                 for (int j = -Math.min(ring, SPEED_HALF); j <= Math.min(ring, SPEED_HALF); j++) {
                     if (Math.max(Math.abs(i), Math.abs(j)) != ring) continue;
                     double v = p.stopSpeed() * (1 + j * SPEED_STEP);
                     if (v <= 0.01) continue;
-                    Shot shot = s.sim.limit(Shot.polar(angle + i * FINE_STEP, v));
-                    if (CountingSimulator.holed(s.sim.simulate(s.px, s.py, shot))) return shot;
+                    grid.add(s.sim.limit(Shot.polar(angle + i * FINE_STEP, v)));
                 }
             }
         }
-        return null;
+        return s.sim.simulateInOrder(s.px, s.py, grid, CountingSimulator.InOrder.shots((shot, r) -> CountingSimulator.holed(r)));
     }
 
     private static boolean sameLine(Pass a, Pass b) {

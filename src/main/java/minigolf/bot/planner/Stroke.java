@@ -2,12 +2,16 @@ package minigolf.bot.planner;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.BiPredicate;
+import java.util.function.BooleanSupplier;
+import java.util.function.Function;
 import minigolf.bot.CountingSimulator;
 import minigolf.bot.Shot;
 import minigolf.bot.map.CourseGrid;
 import minigolf.bot.map.CourseMaps;
 import minigolf.bot.map.DistanceField;
 import minigolf.bot.search.SpeedGuess;
+import minigolf.course.Hole;
 import minigolf.course.HoleRule;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
@@ -32,7 +36,8 @@ final class Stroke {
     final World world;
     final CourseGrid grid;
     final DistanceField field;
-    final double px, py, holeX, holeY, radius;
+    /** The ball, and the hole this stroke plays for (the nearest on a course with several). */
+    final double px, py, holeX, holeY, radius, captureSpeed;
     final boolean capture;
     final double tolerance;
     final double pathLength;
@@ -61,15 +66,19 @@ final class Stroke {
         this.field = maps.toHole();
         this.px = px;
         this.py = py;
-        this.holeX = world.hole().position().x();
-        this.holeY = world.hole().position().y();
-        this.radius = world.hole().radius();
-        this.capture = world.hole().rule() == HoleRule.CAPTURE;
+        this.path = field.path(px, py);
+        // The hole this stroke plays for: where the field's path ends (the nearest hole along the ground).
+        double[] end = path.isEmpty() ? new double[] {px, py} : path.get(path.size() - 1);
+        Hole target = world.nearestHole(end[0], end[1]);
+        this.holeX = target.position().x();
+        this.holeY = target.position().y();
+        this.radius = target.radius();
+        this.capture = target.rule() == HoleRule.CAPTURE;
+        this.captureSpeed = target.effectiveCaptureSpeed();
         this.tolerance = Math.min(0.2 * radius, 0.03);
         this.gravity = world.physics().gravity();
         double d = field.at(px, py);
         this.pathLength = Double.isFinite(d) ? d : Math.hypot(holeX - px, holeY - py);
-        this.path = field.path(px, py);
     }
 
     /** How far a maximum-speed shot rolls on a plane through the ball and the hole. */
@@ -117,7 +126,7 @@ final class Stroke {
      * speed, then its angle turned (secant) until it crosses with no lateral miss.
      */
     Shot centreCapture(Shot onHole) {
-        double target = 0.5 * world.hole().effectiveCaptureSpeed();
+        double target = 0.5 * captureSpeed;
         double speed = onHole.speed(), angle = Math.atan2(onHole.vy(), onHole.vx());
         // Start from the energy estimate of the extra speed, then Broyden on (speed, angle).
         speed = Math.min(Math.sqrt(speed * speed + target * target), sim.maxSpeed());
@@ -393,7 +402,55 @@ final class Stroke {
     private Eval evaluate(Shot shot, double tx, double ty, TrajectoryListener extra) {
         Approach approach = new Approach(holeX, holeY, px, py, shot);
         TrajectoryListener listener = extra == null ? approach : both(approach, extra);
-        ShotResult r = probe.simulate(px, py, shot, listener);
+        return evalOf(shot, tx, ty, approach, probe.simulate(px, py, shot, listener));
+    }
+
+    /** One shot of {@link #evaluateInOrder}: the caller's trial, its shot and the listeners of its path. */
+    private record Probe<T>(T trial, Shot shot, Approach approach, TrajectoryListener listener) {
+    }
+
+    /**
+     * {@link #evaluateWith} for each trial in turn (its shot {@code shotOf}, its path also to
+     * {@code extraOf}'s listener, its own), until {@code stopsAt} says so or {@code mayGoOn} says
+     * no before a trial (as a loop's bounds): the same counts, probes and choices as that loop, the
+     * shots spread over the simulator's threads ({@link CountingSimulator#simulateInOrder}). The
+     * trial that ended it, or null.
+     */
+    <T> T evaluateInOrder(List<T> trials, Function<T, Shot> shotOf, Function<T, TrajectoryListener> extraOf,
+                          BooleanSupplier mayGoOn, BiPredicate<T, Eval> stopsAt) {
+        List<Probe<T>> probes = new ArrayList<>(trials.size());
+        for (T t : trials) {
+            Shot shot = shotOf.apply(t);
+            Approach approach = new Approach(holeX, holeY, px, py, shot);
+            TrajectoryListener extra = extraOf.apply(t);
+            probes.add(new Probe<>(t, shot, approach, extra == null ? approach : both(approach, extra)));
+        }
+        Probe<T> last = probe.simulateInOrder(px, py, probes, new CountingSimulator.InOrder<>() {
+            @Override
+            public Shot shot(Probe<T> p) {
+                return p.shot();
+            }
+
+            @Override
+            public TrajectoryListener listener(Probe<T> p) {
+                return p.listener();
+            }
+
+            @Override
+            public boolean mayGoOn() {
+                return mayGoOn.getAsBoolean();
+            }
+
+            @Override
+            public boolean stopsAt(Probe<T> p, ShotResult r) {
+                return stopsAt.test(p.trial(), evalOf(p.shot(), holeX, holeY, p.approach(), r));
+            }
+        });
+        return last == null ? null : last.trial();
+    }
+
+    /** The probe's evaluation from its result and where its path passed the hole; kept among this stroke's probes. */
+    private Eval evalOf(Shot shot, double tx, double ty, Approach approach, ShotResult r) {
         boolean holed = !capture && r.outcome() == Outcome.HOLED;
         boolean penalty = r.outcome().isPenalty() || r.outcome() == Outcome.TIMEOUT;
         double dirX = capture ? approach.dirX : 0, dirY = capture ? approach.dirY : 0;

@@ -34,7 +34,6 @@ public final class StrokePlan {
     private final int cols, rows;
     private final double minX, minY;
     private final int[] strokes;
-    private final double holeX, holeY;
 
     public StrokePlan(World world, CourseGrid fine, CancellationToken token) {
         this.world = world;
@@ -45,8 +44,6 @@ public final class StrokePlan {
         this.minY = world.bounds().minY();
         this.cols = Math.max(1, (int) Math.floor(world.bounds().width() / cell));
         this.rows = Math.max(1, (int) Math.floor(world.bounds().depth() / cell));
-        this.holeX = world.hole().position().x();
-        this.holeY = world.hole().position().y();
         strokes = new int[cols * rows];
         Arrays.fill(strokes, Integer.MAX_VALUE);
         List<Integer> frontier = new ArrayList<>();
@@ -58,9 +55,13 @@ public final class StrokePlan {
             }
         }
         for (int i : candidates) {
-            if (putt(x(i), y(i), holeX, holeY)) {
-                strokes[i] = 1;
-                frontier.add(i);
+            // One putt from here: to any hole (a course may have several).
+            for (var h : world.holes()) {
+                if (putt(x(i), y(i), h.position().x(), h.position().y())) {
+                    strokes[i] = 1;
+                    frontier.add(i);
+                    break;
+                }
             }
         }
         for (int level = 2; !frontier.isEmpty() && level < 50; level++) {

@@ -93,19 +93,24 @@ final class ThreeStrokes {
             Stroke next = new Stroke(s.solved, s.sim, s.probe, s.maps, l.x(), l.y(), s.plan);
             MapTwoStrokes layups = new MapTwoStrokes(next, map);
             double holeAngle = Math.atan2(s.holeY - l.y(), s.holeX - l.x());
+            List<MapTwoStrokes.Runs> screen = new ArrayList<>();
             for (int i = 0; i < directions; i++) {
-                for (double f : speeds) {
-                    if (!inBounds()) return lookAhead(ranked);
-                    Shot shot = s.sim.limit(Shot.polar(holeAngle + i * SCREEN_STEP, f * vMax));
-                    MapTwoStrokes.Runs runs = layups.tracer(shot);
-                    Eval e = next.evaluateWith(shot, runs);
-                    if (e.holed()) {
-                        s.solved.add(new Solved(s.world, l.x(), l.y(), shot));
-                        return l.shot();
-                    }
-                    runs.end(e.result());
-                }
+                for (double f : speeds) screen.add(layups.tracer(s.sim.limit(Shot.polar(holeAngle + i * SCREEN_STEP, f * vMax))));
             }
+            boolean[] cut = {false};
+            MapTwoStrokes.Runs holed = next.evaluateInOrder(screen, MapTwoStrokes.Runs::shot, runs -> runs, () -> {
+                cut[0] = !inBounds();
+                return !cut[0];
+            }, (runs, e) -> {
+                if (e.holed()) return true;
+                runs.end(e.result());
+                return false;
+            });
+            if (holed != null) {
+                s.solved.add(new Solved(s.world, l.x(), l.y(), holed.shot()));
+                return l.shot();
+            }
+            if (cut[0]) return lookAhead(ranked);
             layups.swept();
             screened++;
             double score = layups.bestScore();

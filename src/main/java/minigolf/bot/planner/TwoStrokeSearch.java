@@ -98,18 +98,34 @@ final class TwoStrokeSearch {
         cells.add(key(s.px, s.py));
         double vMax = s.sim.maxSpeed();
         double holeAngle = Math.atan2(s.holeY - s.py, s.holeX - s.px);
+        List<Shot> grid = new ArrayList<>();
         for (int d = 0; d < DIRECTIONS; d++) {
             double angle = holeAngle + d * 2 * Math.PI / DIRECTIONS;
-            for (int k = SPEEDS; k >= SLOWEST; k--) {
-                if (!inBounds()) return null;
-                Shot shot = s.sim.limit(Shot.polar(angle, vMax * k / SPEEDS));
-                ShotResult r = s.sim.simulate(s.px, s.py, shot);
-                if (r.outcome() == Outcome.HOLED) return shot;
-                if (r.outcome() != Outcome.STOPPED) continue;
-                if (!cells.add(key(r.endX(), r.endY()))) continue;
-                landings.add(new Landing(shot, r.endX(), r.endY(), promise(r.endX(), r.endY())));
-            }
+            for (int k = SPEEDS; k >= SLOWEST; k--) grid.add(s.sim.limit(Shot.polar(angle, vMax * k / SPEEDS)));
         }
+        boolean[] cut = {false};
+        Shot holed = s.sim.simulateInOrder(s.px, s.py, grid, new CountingSimulator.InOrder<>() {
+            @Override
+            public Shot shot(Shot shot) {
+                return shot;
+            }
+
+            @Override
+            public boolean mayGoOn() {
+                cut[0] = !inBounds();
+                return !cut[0];
+            }
+
+            @Override
+            public boolean stopsAt(Shot shot, ShotResult r) {
+                if (r.outcome() == Outcome.HOLED) return true;
+                if (r.outcome() == Outcome.STOPPED && cells.add(key(r.endX(), r.endY()))) {
+                    landings.add(new Landing(shot, r.endX(), r.endY(), promise(r.endX(), r.endY())));
+                }
+                return false;
+            }
+        });
+        if (holed != null || cut[0]) return holed;
         landings.sort((a, b) -> Double.compare(a.promise(), b.promise()));
         swept = true;
         return null;

@@ -20,7 +20,8 @@ import minigolf.terrain.Terrain;
  * against an obstacle settles against it and rolls along it ({@link ReferenceLean}). A shot that
  * exceeds {@value #MAX_STEPS} accepted steps or {@value #MAX_CONTACTS} obstacle contacts (a ball
  * wedged in a corner between obstacles) is returned not covered. Several times the engine's work
- * per shot. Not thread-safe; one per thread.
+ * per shot. Not thread-safe; one per thread. It knows the course's main hole only (a course's
+ * {@code extraHoles} are plain ground to it).
  */
 public final class ReferenceSimulator {
     public static final double TOLERANCE = 1e-10;
