@@ -4,7 +4,8 @@ four sails, with normals, UVs, objects and materials; and its halves windmill-to
 windmill-sails.obj (the sails about their hub at the origin, for sails that turn). Each also gets a
 lighter twin, NAME.low.obj, that the software quality tier draws instead (the same shape: the tower
 and the roof are straight-sided, so one band of 32 segments replaces 24 bands of 96; the physics
-keeps the full model). Deterministic; run from the repository root:
+keeps the full model; the twins are closed, the roof's underside, the tower's foot and the roof's tip,
+as that tier culls faces seen from behind). Deterministic; run from the repository root:
 
     python3 tools/generate_windmill.py [segments]
 
@@ -102,6 +103,36 @@ def box(cx, cy, cz, hx, hy, hz, turn, name, material, split=4):
                     out.append("f " + " ".join("%d/%d/%d" % (q[0], q[1], n) for q in quad))
 
 
+def eaves(inner, outer, z, segments):
+    """A ring facing down under the roof's rim, from the tower's top (radius inner) to the rim (outer): the
+    twin's faces are culled from behind (software tier), so the 4 cm the roof overhangs the tower must not
+    open onto the roof's inside when seen from below. Its corners are the full model's."""
+    out.append("o eaves")
+    out.append("usemtl thatch")
+    n = vn(0, 0, -1)
+    t = vt(0.5, 0.5)
+    ring = [(v(inner * math.cos(a), inner * math.sin(a), z), v(outer * math.cos(a), outer * math.sin(a), z))
+            for a in (2 * math.pi * s / segments for s in range(segments))]
+    for s in range(segments):
+        (i0, o0), (i1, o1) = ring[s], ring[(s + 1) % segments]
+        # counter-clockwise seen from below
+        out.append("f " + " ".join("%d/%d/%d" % (p, t, n) for p in (i0, i1, o1, o0)))
+
+
+def disc(radius, z, segments, up, name, material):
+    """A flat polygon on the ring of `segments` corners (a fan from its first corner, no new corner),
+    facing up or down: closes the tower's foot and the roof's tip in the twins."""
+    out.append("o " + name)
+    out.append("usemtl " + material)
+    n = vn(0, 0, 1 if up else -1)
+    t = vt(0.5, 0.5)
+    ring = [v(radius * math.cos(2 * math.pi * s / segments), radius * math.sin(2 * math.pi * s / segments), z)
+            for s in range(segments)]
+    for s in range(1, segments - 1):
+        fan = (ring[0], ring[s], ring[s + 1]) if up else (ring[0], ring[s + 1], ring[s])
+        out.append("f " + " ".join("%d/%d/%d" % (p, t, n) for p in fan))
+
+
 def tower_profile(rings):
     return [(0.45 - 0.15 * k / rings, 1.6 * k / rings) for k in range(rings + 1)]
 
@@ -117,7 +148,7 @@ HUB_Y, HUB_Z = -0.36, 1.75  # the sails' hub, in front of the roof; they turn ab
 
 
 def write(path, tower=True, sails=True, hub=(0.0, HUB_Y, HUB_Z), sail_split=12, segments=SEGMENTS, rings=RINGS,
-          roof_rings=12, axle_split=4):
+          roof_rings=12, axle_split=4, closed=False):
     """One model file: the tower (with its roof and axle) and/or the two crossed stocks with their
     sails (turned 45 degrees) about `hub`."""
     global vcount, ncount, tcount
@@ -128,6 +159,10 @@ def write(path, tower=True, sails=True, hub=(0.0, HUB_Y, HUB_Z), sail_split=12, 
     if tower:
         surface_of_revolution(tower_profile(rings), "tower", "whitewash", segments)
         surface_of_revolution(roof_profile(roof_rings), "roof", "thatch", segments)
+        if closed:
+            eaves(tower_profile(rings)[-1][0], roof_profile(roof_rings)[0][0], roof_profile(roof_rings)[0][1], segments)
+            disc(*tower_profile(rings)[0], segments, False, "foot", "whitewash")
+            disc(*roof_profile(roof_rings)[-1], segments, True, "tip", "thatch")
     if sails:
         for stock, angle in enumerate((math.pi / 4, 3 * math.pi / 4)):
             box(hub[0], hub[1], hub[2], 0.07, 0.015, 0.6, angle, "sails%d" % stock, "sailcloth", split=sail_split)
@@ -147,6 +182,6 @@ write("courses/models/windmill-tower.obj", sails=False)
 # (coarser: a moving model's triangles are swept every step near it)
 write("courses/models/windmill-sails.obj", tower=False, hub=(0.0, 0.0, 0.0), sail_split=2)
 # The software tier's twins (ObstaclesPass draws NAME.low.obj where it exists; flat faces need no split).
-LOW = dict(segments=LOW_SEGMENTS, rings=LOW_RINGS, roof_rings=LOW_RINGS, sail_split=1, axle_split=1)
+LOW = dict(segments=LOW_SEGMENTS, rings=LOW_RINGS, roof_rings=LOW_RINGS, sail_split=1, axle_split=1, closed=True)
 write("courses/models/windmill.low.obj", **LOW)
 write("courses/models/windmill-tower.low.obj", sails=False, **LOW)

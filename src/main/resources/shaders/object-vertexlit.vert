@@ -19,10 +19,9 @@ uniform float uShininess;
 uniform vec3 uTint;
 
 out vec3 vWorld;
-out vec3 vUnlit;     // ambient part, never shadowed
-out vec3 vSunlit;    // sun diffuse + specular, scaled by the sun's visibility per pixel
+out vec3 vUnlit;     // ambient part, never shadowed, with the haze (all of the fog's colour)
+out vec3 vSunlit;    // sun diffuse + specular, hazed, scaled by the sun's visibility per pixel
 out vec3 vShadowCoord;
-out float vHaze;
 
 // The balls' shadows redraw these surfaces within a scissor at GL_LEQUAL (SceneRenderer): the depth must match exactly.
 invariant gl_Position;
@@ -39,9 +38,11 @@ void main() {
     vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * n.z);
     float diffuse = max(dot(n, l), 0.0);
     float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;
-    vUnlit = albedo * ambient;
-    vSunlit = albedo * uSunColor * diffuse + uSunColor * specular * uSpecularStrength;
-    vHaze = hazeAmount(length(uEye - world.xyz));
+    // The haze is linear in the colour, so it is applied here: mix(unlit + sunlit * s, fog, h) is
+    // mix(unlit, fog, h) + sunlit * (1 - h) * s, and the fragment stage keeps one multiply-add.
+    float haze = hazeAmount(length(uEye - world.xyz));
+    vUnlit = mix(albedo * ambient, uFogColor, haze);
+    vSunlit = (albedo * uSunColor * diffuse + uSunColor * specular * uSpecularStrength) * (1.0 - haze);
     vec4 p = uLightViewProjection * vec4(world.xyz + n * uShadowNormalOffset, 1.0);
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;
     vWorld = world.xyz;

@@ -75,7 +75,9 @@ void main() {
     vec3 cloudColor = mix(uCloudShade, uCloudLit, 0.78 + 0.22 * noise.g) + vCloudColor;
     color = mix(color, cloudColor, cloud);
 #endif
-    color += vGlow;
+#if defined(CLOUDS) || defined(SEA_PIXEL) || defined(GROUND_DETAIL)
+    color += vGlow; // else already in vSky (sky.vert)
+#endif
 #ifdef SUN_DISC
     float s = dot(normalize(vDir), normalize(uSunDirection));
     color += vec3(2.0, 1.9, 1.6) * smoothstep(0.9994, 0.9997, s);

@@ -99,5 +99,9 @@ void main() {
     vCloudColor = vec3(1.0, 0.9, 0.7) * pow(s, 8.0) * 0.25;
     vCloudAlpha = up >= 0.0 ? smoothstep(0.02, 0.25, up) * 0.9 : 0.0;
     vDir = dir;
+#if !defined(CLOUDS) && !defined(SEA_PIXEL) && !defined(GROUND_DETAIL)
+    // Nothing per pixel goes between the gradient and the glow: one colour to interpolate (sky.frag).
+    vSky += vGlow;
+#endif
     gl_Position = vec4(aNdc, 1.0, 1.0);
 }

@@ -1,17 +1,17 @@
-// The fragment stage of terrain-vertexlit and object-vertexlit: lighting arrives interpolated from the
-// vertices; only the shadows (shadow.glsl) are computed per pixel.
+// The fragment stage of terrain-vertexlit and object-vertexlit: lighting (and, for objects, the haze)
+// arrives interpolated from the vertices; only the shadows (shadow.glsl) are computed per pixel.
 #include "lighting.glsl"
 #include "shadow.glsl"
 #ifdef TERRAIN_STRIPES
 #include "stripes.glsl"
 in float vStripes;
+in float vHaze; // the stripes shade the ground's light, not the haze: mixed in here
 #endif
 
 in vec3 vWorld;
 in vec3 vUnlit;
 in vec3 vSunlit;
 in vec3 vShadowCoord;
-in float vHaze;
 
 out vec4 fragColor;
 
@@ -22,6 +22,7 @@ void main() {
     // obstacles several times their frame (docs/rendering.md); the high tier draws it.
 #ifdef TERRAIN_STRIPES
     color *= stripeFactor(vWorld.x, vStripes > 1.5 ? 0.0 : vStripes);
+    color = mix(color, uFogColor, vHaze);
 #endif
-    fragColor = vec4(mix(color, uFogColor, vHaze), 1.0);
+    fragColor = vec4(color, 1.0); // objects: hazed per vertex (object-vertexlit.vert)
 }

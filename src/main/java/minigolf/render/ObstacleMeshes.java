@@ -139,8 +139,15 @@ public final class ObstacleMeshes {
     public record Built(MeshData solid, MeshData decoration, List<Piece> solidPieces, List<Piece> decorationPieces) {
     }
 
-    /** A run of {@code count} indices from {@code first} and the box round its vertices: min x, y, z, max x, y, z. */
-    public record Piece(int first, int count, float[] box) {
+    /**
+     * A run of {@code count} indices from {@code first} and the box round its vertices: min x, y, z, max x, y, z;
+     * {@code open}: a model that is not closed ({@link minigolf.mesh.MeshClosure}), drawn with every face.
+     */
+    public record Piece(int first, int count, float[] box, boolean open) {
+        public Piece(int first, int count, float[] box) {
+            this(first, count, box, false);
+        }
+
         /** Whether the piece's box meets {@code other} (min x, y, z, max x, y, z). */
         public boolean overlaps(float[] other) {
             return box[0] <= other[3] && box[3] >= other[0] && box[1] <= other[4] && box[4] >= other[1]
@@ -174,6 +181,7 @@ public final class ObstacleMeshes {
         List<Piece> solidPieces = new java.util.ArrayList<>(), crownPieces = new java.util.ArrayList<>();
         for (Obstacle o : obstacles) {
             int solidStart = solid.vertexCount(), crownStart = crowns.vertexCount();
+            boolean open = false;
             if (!ObstacleGeometry.isStillSolid(o) || o instanceof Obstacle.Bumper) {
                 // Gates, bumpers and moving obstacles are drawn by the course elements' own meshes.
             } else if (o instanceof Obstacle.Tree tree && style.posts() && tree.height() < POST_HEIGHT) {
@@ -210,6 +218,7 @@ public final class ObstacleMeshes {
             } else if (o instanceof Obstacle.Model m) {
                 solid.model(m.mesh(), modelMaterials.apply(m), m.position().x(), m.position().y(), m.position().z(),
                         m.rotationDeg(), m.scale());
+                open = !minigolf.mesh.MeshClosure.closed(m.mesh());
             } else if (o instanceof Obstacle.Wall w && style.roundedWalls()
                     && RailShapes.roundedWall(w, ground, (x, y, z, nx, ny, nz, shade) -> solid.vertex(x, y, z, nx, ny, nz,
                     style.wallColor()[0] * shade, style.wallColor()[1] * shade, style.wallColor()[2] * shade, style.wallMaterial()))) {
@@ -220,8 +229,8 @@ public final class ObstacleMeshes {
                 solid.flatTriangles(ObstacleGeometry.triangles(o, ground), wall ? style.wallColor() : style.boxColor());
                 solid.material = Material.PLAIN;
             }
-            solid.piece(solidStart, solidPieces);
-            crowns.piece(crownStart, crownPieces);
+            solid.piece(solidStart, solidPieces, open);
+            crowns.piece(crownStart, crownPieces, false);
         }
         return new Built(solid.build(), crowns.build(), List.copyOf(solidPieces), List.copyOf(crownPieces));
     }
@@ -333,7 +342,7 @@ public final class ObstacleMeshes {
         }
 
         /** Adds the vertices written since {@code start} (indices are 0, 1, 2, ...) as a piece, if any. */
-        void piece(int start, List<Piece> pieces) {
+        void piece(int start, List<Piece> pieces, boolean open) {
             int end = vertexCount();
             if (end == start) return;
             float[] box = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
@@ -344,7 +353,7 @@ public final class ObstacleMeshes {
                     box[a + 3] = Math.max(box[a + 3], v[STRIDE * i + a]);
                 }
             }
-            pieces.add(new Piece(start, end - start, box));
+            pieces.add(new Piece(start, end - start, box, open));
         }
 
         /**

@@ -11,6 +11,11 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
+import static org.lwjgl.opengl.GL11.GL_CULL_FACE;
+import static org.lwjgl.opengl.GL11.glDisable;
+import static org.lwjgl.opengl.GL11.glEnable;
+import static org.lwjgl.opengl.GL11.glIsEnabled;
+
 /**
  * The course's obstacles (walls, boxes, trunks, models) and the trees' decorative crowns, each
  * group one static mesh in world coordinates (one draw call for 200 obstacles). Rebuilt by
@@ -30,6 +35,8 @@ public final class ObstaclesPass implements RenderPass {
     private double top = Double.NEGATIVE_INFINITY;
     private int solidTriangles, decorationTriangles;
     private List<ObstacleMeshes.Piece> solidPieces = List.of(), decorationPieces = List.of();
+    /** Whether some solid piece is a model that is not closed (drawn with every face even where faces are culled). */
+    private boolean anyOpen;
     private final ObstacleMeshes.Style style;
     /** Nothing is drawn below this height (the plinth's foot): the rails' footings reach 1 m into the ground. */
     private final double floor;
@@ -88,6 +95,7 @@ public final class ObstaclesPass implements RenderPass {
         decoration = decorationTriangles > 0 ? new Mesh(built.decoration()) : null;
         top = Math.max(highest(built.solid()), highest(built.decoration()));
         solidPieces = built.solidPieces();
+        anyOpen = solidPieces.stream().anyMatch(ObstacleMeshes.Piece::open);
         decorationPieces = built.decorationPieces();
     }
 
@@ -166,7 +174,14 @@ public final class ObstaclesPass implements RenderPass {
         if (solid != null) {
             program.set("uSpecularStrength", 0.12f);
             program.set("uShininess", 16f);
-            drawRuns(solid, solidPieces, drawn);
+            // Where the faces turned away are culled (software tier), models that are not closed keep them.
+            boolean cull = anyOpen && glIsEnabled(GL_CULL_FACE);
+            drawRuns(solid, solidPieces, cull ? drawn.and(p -> !p.open()) : drawn);
+            if (cull) {
+                glDisable(GL_CULL_FACE);
+                drawRuns(solid, solidPieces, drawn.and(ObstacleMeshes.Piece::open));
+                glEnable(GL_CULL_FACE);
+            }
         }
         if (decoration != null) {
             program.set("uSpecularStrength", 0.05f);

@@ -26,13 +26,16 @@ import static org.lwjgl.opengl.GL11.glGetString;
  * @param waterImages      whether the water mirrors the scene and shows the bed through images drawn for it
  *                         (true); false: the sky's gradient is mirrored and the bed already drawn behind the
  *                         water is tinted by blending (see {@link WaterPass}), no extra scene drawn
+ * @param cullBackFaces    whether the closed meshes (terrain, obstacles, elements, props) skip their faces turned
+ *                         away from the camera before they are rasterised: hidden anyway, but a software
+ *                         rasteriser pays for every pixel it depth-tests (see SceneRenderer.render)
  */
 public record RenderQuality(String name, int samples, int shadowMapSize, float waterTargetScale, boolean shadowsInWater,
                             int shadowTaps, boolean vertexLit,
                             double terrainSpacing, boolean sunlitTerrain,
-                            boolean ballShadowRedraw, boolean waterImages) {
-    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4, false, 0.05, false, false, true);
-    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 1024, 0.35f, false, 1, true, 0.1, true, true, false);
+                            boolean ballShadowRedraw, boolean waterImages, boolean cullBackFaces) {
+    public static final RenderQuality HIGH = new RenderQuality("high", 4, 2048, 0.5f, true, 4, false, 0.05, false, false, true, false);
+    public static final RenderQuality SOFTWARE = new RenderQuality("software", 0, 1024, 0.35f, false, 1, true, 0.1, true, true, false, true);
 
     /** Whether a GL_RENDERER string names a software rasteriser. */
     public static boolean isSoftware(String glRenderer) {

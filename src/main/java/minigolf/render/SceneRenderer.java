@@ -59,6 +59,8 @@ public final class SceneRenderer implements AutoCloseable {
     private final boolean ballShadowRedraw;
     /** Whether the terrain's sunlit cells skip the shadow tap (software rasterisers). */
     private final boolean sunlitTerrain;
+    /** Whether the closed meshes skip the faces turned away from the camera (software rasterisers). */
+    private boolean cullBackFaces;
     /**
      * Frames to wait, after the terrain last changed, before its sunlit cells are searched again (a
      * brush stroke changes it every frame; meanwhile every cell keeps the tap); -1 when up to date.
@@ -100,6 +102,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.ballShadowRedraw = quality.ballShadowRedraw();
         this.waterImages = quality.waterImages();
         this.sunlitTerrain = quality.sunlitTerrain();
+        this.cullBackFaces = quality.cullBackFaces();
         SkyPass s = null;
         TerrainPass t = null;
         ObstaclesPass ob = null;
@@ -381,6 +384,11 @@ public final class SceneRenderer implements AutoCloseable {
         waterReflections = on;
     }
 
+    /** Turns the quality's back-face culling off or on again (tests compare the pictures). */
+    void cullBackFaces(boolean on) {
+        cullBackFaces = on;
+    }
+
     /** Whether the sun casts shadows (on by default). */
     public void setShadows(boolean on) {
         shadows = on;
@@ -458,18 +466,24 @@ public final class SceneRenderer implements AutoCloseable {
         glDisable(GL_CULL_FACE);
         glEnable(GL_MULTISAMPLE);
         timer.mark("clear");
+        // The closed meshes without their far faces (software tier): the pixels behind the near faces are
+        // never rasterised. The elements (decals) and objects (the flag's cloth is seen from both sides) keep every face.
+        cullFaces(cullBackFaces);
         terrain.render(frame);
         timer.mark("terrain");
         obstacles.renderInRect(frame, new int[]{0, 0, width, height});
         timer.mark("obstacles");
+        cullFaces(false);
         elements.render(frame);
         timer.mark("elements");
         objects.render(frame);
         timer.mark("objects");
         if (ballShadowRedraw && shadows && frame.ballShadowCount > 0) drawBallShadows(width, height);
         timer.mark("ballShadows");
+        cullFaces(cullBackFaces);
         surroundings.render(frame); // after the course: early depth test skips what it covers
         timer.mark("surroundings");
+        cullFaces(false);
         // The sky after the opaque passes, depth-tested at the far plane: its clouds are shaded only where it shows.
         sky.render(frame);
         timer.mark("sky");
@@ -494,11 +508,18 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_SCISSOR_TEST);
         glScissor(r[0], r[1], r[2], r[3]);
         frame.ballShadowsInline = true;
+        cullFaces(cullBackFaces); // the faces just drawn, no others
         terrain.redrawWithin(frame, region.box()); // the chunks at the levels just drawn
         obstacles.renderWithin(frame, region.box());
+        cullFaces(false);
         objects.renderForBallShadows(frame);
         frame.ballShadowsInline = false;
         glDisable(GL_SCISSOR_TEST);
+    }
+
+    private static void cullFaces(boolean on) {
+        if (on) glEnable(GL_CULL_FACE);
+        else glDisable(GL_CULL_FACE);
     }
 
     /** The sun's view of the casters that stand still (terrain, obstacles, pole, flag) into the shadow map. */

@@ -258,10 +258,12 @@ public final class PropMeshes {
         double[] l0 = {x - fx * 0.85 + sx * 0.82, y - fy * 0.85 + sy * 0.82, z + 1.7}, l1 = {x + fx * 0.85 + sx * 0.82, y + fy * 0.85 + sy * 0.82, z + 1.7};
         double[] r0 = {x - fx * 0.85 - sx * 0.82, y - fy * 0.85 - sy * 0.82, z + 1.7}, r1 = {x + fx * 0.85 - sx * 0.82, y + fy * 0.85 - sy * 0.82, z + 1.7};
         double[] t0 = {x - fx * 0.85, y - fy * 0.85, z + 2.3}, t1 = {x + fx * 0.85, y + fy * 0.85, z + 2.3};
-        w.flatQuad(l0, l1, t1, t0, WHITE);
-        w.flatQuad(r1, r0, t0, t1, WHITE);
-        w.flatTriangle(l1, r1, t1, c);
-        w.flatTriangle(r0, l0, t0, c);
+        // Counter-clockwise seen from outside, as every face: the normals are made from the winding (and the
+        // software tier culls by it); the roof was wound inside out, its slopes lit as if facing in.
+        w.flatQuad(t0, t1, l1, l0, WHITE);
+        w.flatQuad(t1, t0, r0, r1, WHITE);
+        w.flatTriangle(r1, l1, t1, c);
+        w.flatTriangle(l0, r0, t0, c);
     }
 
     /** A low, smooth mound: a snow drift (white) or a dune's body (sand, its crest lighter). */

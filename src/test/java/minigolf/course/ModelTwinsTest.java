@@ -23,7 +23,7 @@ class ModelTwinsTest {
     }
 
     /**
-     * The bundled windmill's twin has the same shape with 1.6% of the triangles: every one of its
+     * The bundled windmill's twin has the same shape with under 4% of the triangles (closed): every one of its
      * corners is a corner of the full model (32 of the 96 segments, the end rings of the straight
      * bands), its box is the full model's, and it names the same materials.
      */
@@ -33,7 +33,7 @@ class ModelTwinsTest {
             TriangleMesh full = ModelFiles.in(null).load(file);
             TriangleMesh low = ModelTwins.low(file, null);
             assertNotNull(low, file);
-            assertTrue(low.triangleCount() * 40 < full.triangleCount(), file + ": " + low + " against " + full);
+            assertTrue(low.triangleCount() * 25 < full.triangleCount(), file + ": " + low + " against " + full);
             Set<String> corners = new HashSet<>();
             for (int v = 0; v < full.vertexCount(); v++) corners.add(key(full.positions(), v));
             for (int v = 0; v < low.vertexCount(); v++) {
@@ -44,7 +44,14 @@ class ModelTwinsTest {
             assertEquals(full.materialLibraries(), low.materialLibraries(), file);
         }
         assertEquals(10560, ModelFiles.in(null).load("models/windmill.obj").triangleCount());
-        assertEquals(164, ModelTwins.low("models/windmill.obj", null).triangleCount());
+        // The software tier culls the faces turned away (docs/course-format.md): the twins and the sails are closed;
+        // the full models stand open on the ground (drawn with every face wherever they are drawn).
+        for (String file : new String[]{"models/windmill.obj", "models/windmill-tower.obj"}) {
+            assertTrue(minigolf.mesh.MeshClosure.closed(ModelTwins.low(file, null)), file);
+            assertFalse(minigolf.mesh.MeshClosure.closed(ModelFiles.in(null).load(file)), file);
+        }
+        assertTrue(minigolf.mesh.MeshClosure.closed(ModelFiles.in(null).load("models/windmill-sails.obj")));
+        assertEquals(288, ModelTwins.low("models/windmill.obj", null).triangleCount()); // 164, and 124 closing it (eaves, foot, tip)
     }
 
     @Test
@@ -78,7 +85,7 @@ class ModelTwinsTest {
         assertSame(wall, drawn.get(0));
         assertSame(noTwin, drawn.get(2), "no twin: the model itself");
         Obstacle.Model low = (Obstacle.Model) drawn.get(1);
-        assertEquals(164, low.mesh().triangleCount());
+        assertEquals(288, low.mesh().triangleCount());
         assertEquals(List.of(model.file(), model.position(), model.rotationDeg(), model.scale(), model.restitution()),
                 List.of(low.file(), low.position(), low.rotationDeg(), low.scale(), low.restitution()));
         assertEquals(2, cache.filesLookedFor(), "each file once: the mill and the sails");

@@ -91,7 +91,7 @@ class SunlitCellsTest {
         RenderQuality split = RenderQuality.SOFTWARE;
         RenderQuality tapped = new RenderQuality("software-tapped", split.samples(), split.shadowMapSize(),
                 split.waterTargetScale(), split.shadowsInWater(), split.shadowTaps(), split.vertexLit(),
-                split.terrainSpacing(), false, split.ballShadowRedraw(), split.waterImages());
+                split.terrainSpacing(), false, split.ballShadowRedraw(), split.waterImages(), split.cullBackFaces());
         for (String name : List.of("walled.json", "windmill.json", "lake.json")) {
             World w;
             try {
