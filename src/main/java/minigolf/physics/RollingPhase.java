@@ -156,9 +156,7 @@ final class RollingPhase {
             double slope = Math.sqrt(ghx * ghx + ghy * ghy);
             // A slow ball on ground shallower than mu_k, with nothing near, stops in one closed-form piece.
             if (tail != null && !leaning && slope < b.muK && tail.stops(speed)) return b.pieceTime;
-            if (controlled && control.isLong(tau)) {
-                tau = longestStep(tau, speed, slope, b.muK, leaning, decelerationAlongV < 0, a1x, a1y);
-            }
+            if (controlled && control.isLong(tau)) tau = longestStep(tau, speed, slope, b.muK, leaning, a1x, a1y);
             b.pieceTime = tau;
             // The stop looks a fixed time ahead and the slow step is that long, whatever length the
             // control has chosen: a ball the control keeps at dt/8 must still stop, not creep in
@@ -257,9 +255,6 @@ final class RollingPhase {
      */
     private boolean shallowStep;
 
-    /** Whether the long step being chosen starts speeding up on ground steeper than mu_k, so was not held to the turn horizon. */
-    private boolean speedingUp;
-
     /**
      * The longest step up to tau that may be taken from here (docs/physics.md, "Step control"):
      * dt, or longer where nothing it could reach needs the step's own length. A long step stays on
@@ -270,10 +265,9 @@ final class RollingPhase {
      * the step nor come within the rest rule's horizon of a turn (on ground shallower than mu_k it
      * cannot turn: only the stop counts). Cut from tau to the length that qualifies.
      */
-    private double longestStep(double tau, double speed, double slope, double muK, boolean leaning, boolean gaining,
+    private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
                                double a1x, double a1y) {
         shallowStep = false;
-        speedingUp = false;
         if (!smooth || leaning) return dt;
         // Braking at most g (|grad h| + mu_k), it must be left with the speed the rest rule's turn
         // horizon and a step of dt need (the ground may grow steeper than mu_k within the step).
@@ -281,10 +275,7 @@ final class RollingPhase {
         // On ground no steeper than mu_k the ball cannot turn, only stop: the turn horizon is not
         // needed (clearOfHazards checks that every stage's ground stayed that shallow).
         shallowStep = slope < muK;
-        // Nor is it needed by a ball speeding up (clearOfHazards checks that every stage did): it
-        // moves away from a turn.
-        speedingUp = !shallowStep && gaining;
-        double spare = speed - RestRule.REST_SPEED - braking * (dt + (shallowStep || speedingUp ? 0 : RestRule.TURN_HORIZON));
+        double spare = speed - RestRule.REST_SPEED - braking * (dt + (shallowStep ? 0 : RestRule.TURN_HORIZON));
         if (braking * tau >= spare) tau = spare / braking;
         if (!control.isLong(tau)) return dt;
         if (!(scene != null || zoned || captureRule || forces != null || teleporter != null)) return tau;
@@ -343,7 +334,6 @@ final class RollingPhase {
         double minX = Math.min(Math.min(b.x, r.nx) - bend, r.stageMinX), maxX = Math.max(Math.max(b.x, r.nx) + bend, r.stageMaxX);
         double minY = Math.min(Math.min(b.y, r.ny) - bend, r.stageMinY), maxY = Math.max(Math.max(b.y, r.ny) + bend, r.stageMaxY);
         if (elementNear(minX, minY, maxX, maxY) || (captureRule && hole.near(minX, minY, maxX, maxY))) return false;
-        if (speedingUp && !(r.stageLeastGain > 0)) return false;
         if (shallowStep) {
             // Still braking, short of its stop by at least half the dt of speed it was left with.
             double braking = gravity * (Math.sqrt(r.stageSteepest) + b.muK);

@@ -71,8 +71,6 @@ final class RollingStep {
      * with the sign turned, where the ground curves away ({@link TakeOff#gentleAlong}).
      */
     double stageBend;
-    /** The last long step's least rate of gain of kinetic energy among its stages, a . v (m^2/s^3): positive where every stage sped up. */
-    double stageLeastGain;
     /** The stages a long step sampled, in the order of their times (the last is its end): the fraction of the step, position, height. */
     static final double[] STAGE_TIMES = {0.2, 0.3, 0.8, 8.0 / 9, 1, 1};
     final double[] stageX = new double[STAGE_TIMES.length], stageY = new double[STAGE_TIMES.length],
@@ -209,14 +207,12 @@ final class RollingStep {
         keepStage(0, p2x, p2y);
         double a2x = ax, a2y = ay, lowest = sample[0], steepest = steepness();
         double along = hx * vx + hy * vy, bend = (along - sample[1] * vx - sample[2] * vy) * 5;
-        double gain = ax * v2x + ay * v2y;
         double minX = Math.min(x, p2x), maxX = Math.max(x, p2x), minY = Math.min(y, p2y), maxY = Math.max(y, p2y);
         double p3x = x + h * (A31 * vx + A32 * v2x), p3y = y + h * (A31 * vy + A32 * v2y);
         double v3x = vx + h * (A31 * a1x + A32 * a2x), v3y = vy + h * (A31 * a1y + A32 * a2y);
         accelerationAt(p3x, p3y, v3x, v3y);
         keepStage(1, p3x, p3y);
         bend = Math.max(bend, (along - sample[1] * vx - sample[2] * vy) * (10.0 / 3));
-        gain = Math.min(gain, ax * v3x + ay * v3y);
         double a3x = ax, a3y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -225,7 +221,6 @@ final class RollingStep {
         accelerationAt(p4x, p4y, v4x, v4y);
         keepStage(2, p4x, p4y);
         bend = Math.max(bend, (along - sample[1] * vx - sample[2] * vy) * 1.25);
-        gain = Math.min(gain, ax * v4x + ay * v4y);
         double a4x = ax, a4y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -236,7 +231,6 @@ final class RollingStep {
         accelerationAt(p5x, p5y, v5x, v5y);
         keepStage(3, p5x, p5y);
         bend = Math.max(bend, (along - sample[1] * vx - sample[2] * vy) * (9.0 / 8));
-        gain = Math.min(gain, ax * v5x + ay * v5y);
         double a5x = ax, a5y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -247,7 +241,6 @@ final class RollingStep {
         accelerationAt(p6x, p6y, v6x, v6y);
         keepStage(4, p6x, p6y);
         bend = Math.max(bend, along - sample[1] * vx - sample[2] * vy);
-        gain = Math.min(gain, ax * v6x + ay * v6y);
         double a6x = ax, a6y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -267,7 +260,6 @@ final class RollingStep {
         stageLowest = lowest;
         stageSteepest = steepest;
         stageBend = Math.max(bend, along - sample[1] * vx - sample[2] * vy);
-        stageLeastGain = Math.min(gain, ax * nvx + ay * nvy);
         minX = Math.min(Math.min(minX, Math.min(p3x, p4x)), Math.min(Math.min(p5x, p6x), nx));
         maxX = Math.max(Math.max(maxX, Math.max(p3x, p4x)), Math.max(Math.max(p5x, p6x), nx));
         minY = Math.min(Math.min(minY, Math.min(p3y, p4y)), Math.min(Math.min(p5y, p6y), ny));
