@@ -416,17 +416,29 @@ final class RollingStep {
      */
     void acceleration(double gx, double gy, double fx, double fy, double mu, double pvx, double pvy) {
         // The common case (a moving ball, no force, not leaning) is kept small enough for the JIT
-        // to inline into every stage of a step.
-        double speedSquared = pvx * pvx + pvy * pvy;
-        if (fx == 0 && fy == 0 && !leaning && speedSquared != 0) {
-            moving(gx, gy, gx, gy, complete ? 1 + gx * gx + gy * gy : 1, mu, pvx, pvy, speedSquared);
-        } else {
-            accelerationInGeneral(gx, gy, fx, fy, mu, pvx, pvy, speedSquared);
+        // to inline into every stage of a step; the arithmetic is the general case's, bit for bit.
+        if (fx == 0 && fy == 0 && !leaning) {
+            double speedSquared = pvx * pvx + pvy * pvy;
+            if (speedSquared != 0) {
+                if (complete) {
+                    double normalisation = 1 + gx * gx + gy * gy;
+                    double along = gx * pvx + gy * pvy;
+                    double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
+                    ax = -gravity * gx / normalisation - frictionScale * pvx;
+                    ay = -gravity * gy / normalisation - frictionScale * pvy;
+                } else {
+                    double frictionScale = mu * gravity / Math.sqrt(speedSquared);
+                    ax = -gravity * gx - frictionScale * pvx;
+                    ay = -gravity * gy - frictionScale * pvy;
+                }
+                return;
+            }
         }
+        accelerationInGeneral(gx, gy, fx, fy, mu, pvx, pvy);
     }
 
-    private void accelerationInGeneral(double gx, double gy, double fx, double fy, double mu, double pvx, double pvy,
-                                       double speedSquared) {
+    private void accelerationInGeneral(double gx, double gy, double fx, double fy, double mu, double pvx, double pvy) {
+        double speedSquared = pvx * pvx + pvy * pvy;
         double normalisation = complete ? 1 + gx * gx + gy * gy : 1;
         // Gravity's and the force's pull, as a gradient (px, py): a = -g p / D before friction.
         double px = gx, py = gy;
@@ -446,22 +458,7 @@ final class RollingStep {
             double factor = slope > mu ? -gravity * (1 - mu / slope) / normalisation : 0;
             ax = factor * px;
             ay = factor * py;
-        } else {
-            moving(gx, gy, px, py, normalisation, mu, pvx, pvy, speedSquared);
-        }
-        if (leaning) {
-            double into = ax * leanX + ay * leanY;
-            if (into < 0) {
-                ax -= into * leanX;
-                ay -= into * leanY;
-            }
-        }
-    }
-
-    /** (ax, ay) for a moving ball on slope (gx, gy) under the pull gradient (px, py), D = normalisation. */
-    private void moving(double gx, double gy, double px, double py, double normalisation, double mu,
-                        double pvx, double pvy, double speedSquared) {
-        if (complete) {
+        } else if (complete) {
             double along = gx * pvx + gy * pvy;
             double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
             ax = -gravity * px / normalisation - frictionScale * pvx;
@@ -470,6 +467,13 @@ final class RollingStep {
             double frictionScale = mu * gravity / Math.sqrt(speedSquared);
             ax = -gravity * px - frictionScale * pvx;
             ay = -gravity * py - frictionScale * pvy;
+        }
+        if (leaning) {
+            double into = ax * leanX + ay * leanY;
+            if (into < 0) {
+                ax -= into * leanX;
+                ay -= into * leanY;
+            }
         }
     }
 }
