@@ -65,7 +65,7 @@ final class RollingStep {
     /** The last long step's steepest ground among its stages (|grad h| squared; the pull gradient's with forces). */
     double stageSteepest;
     /**
-     * The last RK4 or long step's ground bending away along the start's velocity v, as its stages saw it:
+     * The last long step's ground bending away along the start's velocity v, as its stages saw it:
      * the largest drop of the terrain's slope along v from the start's, grad h(start) . v -
      * grad h(stage) . v, divided by the stage's fraction of the step (m/s); about tau v^T H v
      * with the sign turned, where the ground curves away ({@link TakeOff#gentleAlong}).
@@ -158,15 +158,12 @@ final class RollingStep {
                 double half = 0.5 * tau;
                 double v2x = vx + half * a1x, v2y = vy + half * a1y;
                 accelerationAt(x + half * vx, y + half * vy, v2x, v2y);
-                double along = hx * vx + hy * vy, bend = 2 * (along - sample[1] * vx - sample[2] * vy);
                 double a2x = ax, a2y = ay;
                 double v3x = vx + half * a2x, v3y = vy + half * a2y;
                 accelerationAt(x + half * v2x, y + half * v2y, v3x, v3y);
-                bend = Math.max(bend, 2 * (along - sample[1] * vx - sample[2] * vy));
                 double a3x = ax, a3y = ay;
                 double v4x = vx + tau * a3x, v4y = vy + tau * a3y;
                 accelerationAt(x + tau * v3x, y + tau * v3y, v4x, v4y);
-                stageBend = Math.max(bend, along - sample[1] * vx - sample[2] * vy);
                 double sixth = tau / 6;
                 nx = x + sixth * (vx + 2 * v2x + 2 * v3x + v4x);
                 ny = y + sixth * (vy + 2 * v2y + 2 * v3y + v4y);

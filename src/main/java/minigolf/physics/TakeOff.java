@@ -80,18 +80,6 @@ final class TakeOff {
         return bend < 0.125 * gravity * tau;
     }
 
-    /**
-     * The same measure against {@link #takesOff}'s: a step (of any length, on smooth ground) whose
-     * stages saw the ground fall below the tangent plane by less than half of the g tau^2 / 4 from
-     * which takesOff looks further (tau bend / 2 &lt; g tau^2 / 8) does not take off, and takesOff
-     * need not ask the terrain. For RK4's steps the second stage lies on the straight step's
-     * midpoint, where the slope's change along v measures the height's departure at its end
-     * exactly on quadratic ground.
-     */
-    boolean staysDown(double bend, double tau) {
-        return bend < 0.25 * gravity * tau;
-    }
-
     /** The terrain's height at (qx, qy); the last point asked is remembered ({@link #near} and {@link #takesOff} ask the same). */
     private double heightAt(double qx, double qy) {
         if (qx != lastX || qy != lastY) {

@@ -12,9 +12,8 @@ import org.junit.jupiter.api.Test;
 /**
  * A long step is refused where the ground curves away near take-off (TakeOff.near, one terrain
  * height at the straight step's end). Where its own stages saw the ground bend away by less than
- * half of that measure (TakeOff.gentleAlong, RollingStep.stageBend) the height is not asked, nor
- * by the take-off check of a step of any length on smooth ground whose stages saw it bend away by
- * less than half of the measure from which TakeOff.takesOff looks further (TakeOff.staysDown).
+ * half of that measure (TakeOff.gentleAlong, RollingStep.stageBend) the height is not asked: on
+ * the lake that is every long step.
  */
 class TakeOffNearTest {
     private static final double DT = 1.0 / 60;
@@ -23,7 +22,7 @@ class TakeOffNearTest {
     private int heights;
 
     @Test
-    void gentleStagesNeverHideGroundThatNearOrTakesOffLooksAt() {
+    void gentleStagesNeverHideGroundThatNearRefuses() {
         // Bumps whose curvature v^T H v reaches -g/4 (near's measure) at a few metres per second.
         Terrain bumps = new ExpressionTerrain("0.3*sin(2*x)*cos(1.5*y) + 0.05*x");
         World world = TestWorlds.world(bumps, 0.08, 0.2, 20);
@@ -31,36 +30,25 @@ class TakeOffNearTest {
         TakeOff takeOff = new TakeOff(bumps, step, TestWorlds.G);
         SplittableRandom random = new SplittableRandom(5);
         double[] ground = new double[3];
-        int gentle = 0, near = 0, stays = 0, steep = 0;
-        for (int i = 0; i < 40_000; i++) {
+        int gentle = 0, near = 0;
+        for (int i = 0; i < 20_000; i++) {
             double x = random.nextDouble(-5, 5), y = random.nextDouble(-5, 5);
             double angle = random.nextDouble(2 * Math.PI), speed = random.nextDouble(0.3, 5);
             double vx = speed * Math.cos(angle), vy = speed * Math.sin(angle);
-            // Half the steps of RK4 (up to dt), half long steps (Dormand-Prince, up to 8 dt).
-            double tau = DT * (i % 2 == 0 ? random.nextDouble(0.1, 1) : random.nextDouble(1.5, 8));
+            double tau = DT * random.nextDouble(1.5, 8);
             bumps.sample(x, y, ground);
             step.reset();
             step.acceleration(ground[1], ground[2], 0, 0, 0.08, vx, vy);
             step.from(x, y, vx, vy, ground[1], ground[2], 0.08, 0, 0);
             step.advance(tau, RollingStep.Kind.INTEGRATOR, step.ax, step.ay);
             boolean isGentle = takeOff.gentleAlong(step.stageBend, tau);
-            if (takeOff.staysDown(step.stageBend, tau)) stays++;
-            assertFalse(takeOff.staysDown(step.stageBend, tau) && departure(bumps, x, y, vx, vy, ground, tau) >= 0.25 * TestWorlds.G * tau * tau,
-                    "step " + i + " stays down");
             boolean isNear = takeOff.near(x, y, vx, vy, ground[0], ground[1], ground[2], tau);
             assertFalse(isGentle && isNear, "step " + i + " at (" + x + ", " + y + "), v (" + vx + ", " + vy + "), tau " + tau);
             if (isGentle) gentle++;
             if (isNear) near++;
-            if (departure(bumps, x, y, vx, vy, ground, tau) >= 0.25 * TestWorlds.G * tau * tau) steep++;
         }
         // Both kinds occur, so the check above has something to refuse.
-        assertTrue(gentle > 5_000 && near > 1_000 && stays > 10_000 && steep > 1_000,
-                "gentle " + gentle + ", near " + near + ", stays down " + stays + ", takesOff looks further " + steep);
-    }
-
-    /** How far the ground at the straight step's end lies below the start's tangent plane (TakeOff's measure). */
-    private static double departure(Terrain terrain, double x, double y, double vx, double vy, double[] start, double tau) {
-        return start[0] + (start[1] * vx + start[2] * vy) * tau - terrain.height(x + vx * tau, y + vy * tau);
+        assertTrue(gentle > 5_000 && near > 1_000, "gentle " + gentle + ", near " + near);
     }
 
     @Test
@@ -86,7 +74,8 @@ class TakeOffNearTest {
         heights = 0;
         ShotResult r = simulator.simulate(-3, -1.5, 3.5, 0.4);
         assertEquals(Outcome.STOPPED, r.outcome(), r.toString());
-        // No height in its 56 steps; 55 when each step's take-off check asked one.
-        assertEquals(0, heights, "heights in " + r.steps() + " steps");
+        // 17 heights in its 56 steps, those of its steps of dt; 55 when each long step's take-off
+        // check asked one too.
+        assertTrue(heights <= 20, "heights " + heights + " in " + r.steps() + " steps");
     }
 }
