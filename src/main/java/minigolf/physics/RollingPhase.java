@@ -141,7 +141,6 @@ final class RollingPhase {
             return 0;
         }
         waitUntil = Double.NaN;
-        gentleStep = Double.NaN;
         rolling.acceleration(b.hx, b.hy, b.fx, b.fy, b.muK, b.vx, b.vy);
         double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
@@ -323,7 +322,6 @@ final class RollingPhase {
      */
     private boolean clearOfHazards(double tau) {
         RollingStep r = rolling;
-        gentleStep = Double.NaN;
         hazardVeto = r.stageLowest < 0 || !locate.inPlay(r.stageMinX, r.stageMinY) || !locate.inPlay(r.stageMaxX, r.stageMaxY);
         if (hazardVeto) return false;
         // The step's path, the cubic through its ends (as swept against obstacles), lies within
@@ -342,19 +340,8 @@ final class RollingPhase {
             double endSpeed = Math.sqrt(r.nvx * r.nvx + r.nvy * r.nvy);
             if (!(r.stageSteepest < b.muK * b.muK && r.nvx * b.vx + r.nvy * b.vy > 0 && endSpeed > 0.5 * braking * dt)) return false;
         }
-        if (takeOff.gentleAlong(r.stageBend, tau)) {
-            gentleStep = tau;
-            return true;
-        }
         return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
-
-    /**
-     * The length of the long step of this piece whose stages found the ground too gently curved to
-     * come near take-off (TakeOff.gentleAlong), else NaN: near's measure is a quarter of
-     * takesOff's, so that step does not take off and is not asked again.
-     */
-    private double gentleStep = Double.NaN;
 
     /** Whether the last long step clearOfHazards refused had a stage in water or out of the bounds. */
     private boolean hazardVeto;
@@ -405,7 +392,7 @@ final class RollingPhase {
     private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         BallState b = ball;
         RollingTrial tr = trial;
-        if (kind == RollingStep.Kind.INTEGRATOR && tau != gentleStep && takesOffWithin(tau, a1x, a1y)) {
+        if (kind == RollingStep.Kind.INTEGRATOR && takesOffWithin(tau, a1x, a1y)) {
             // The ground falls away faster than gravity can pull the ball down: it flies this step,
             // from where the ground begins to curve away too fast (found by bisection). Decided
             // before water and the bounds, which a flying ball only meets where it comes down.

@@ -67,19 +67,6 @@ final class TakeOff {
         return tangent - ground >= 0.125 * gravity * tau * tau;
     }
 
-    /**
-     * Whether a long step's stages saw the ground along its path so gently curved that it is
-     * nowhere near {@link #near}'s measure, which then need not ask the terrain: bend is the
-     * step's {@link RollingStep#stageBend}, the largest drop of the slope along v per fraction of
-     * the step, so the ground falls below the tangent plane by about tau bend / 2 over the step
-     * (the second-order term, as near measures it at the straight step's end); it must stay under
-     * half of near's g tau^2 / 8. The ground between the stages is not seen, as near sees only
-     * one point; where the stages see a bend, near decides.
-     */
-    boolean gentleAlong(double bend, double tau) {
-        return bend < 0.125 * gravity * tau;
-    }
-
     /** The terrain's height at (qx, qy); the last point asked is remembered ({@link #near} and {@link #takesOff} ask the same). */
     private double heightAt(double qx, double qy) {
         if (qx != lastX || qy != lastY) {
