@@ -81,15 +81,6 @@ public final class ForceField {
         return pushShapes.length > 0;
     }
 
-    /**
-     * The push zones' rectangles (minX, minY, maxX, maxY each, the bounds push() compares with)
-     * where every push zone is a rectangle, else null.
-     */
-    double[] pushRectangles() {
-        for (boolean rect : pushRect) if (!rect) return null;
-        return pushBoxes.clone();
-    }
-
     /** Whether there is a magnet (else the force anywhere is the push there). */
     public boolean hasMagnets() {
         return magnetX.length > 0;

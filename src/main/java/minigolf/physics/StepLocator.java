@@ -40,8 +40,6 @@ final class StepLocator {
     private final ForceField forces;
     private final PlayArea area;
     private final double[] push = new double[2];
-    /** The push zones' edges in closed form where they alone decide the region (EdgeCrossings.of); else null. */
-    private final EdgeCrossings crossings;
 
     StepLocator(BallState ball, RollingTrial trial, RollingStep rolling, Terrain terrain, GroundCache ground,
                 FrictionField friction, ForceField forces, PlayArea area) {
@@ -53,7 +51,6 @@ final class StepLocator {
         this.terrain = terrain;
         this.friction = friction;
         this.area = area;
-        this.crossings = EdgeCrossings.of(friction, forces);
     }
 
     /** Whether (qx, qy) is in play: inside the bounds, not over a deleted cell. */
@@ -110,7 +107,7 @@ final class StepLocator {
     }
 
     /** A test of a point in the plane: whether something has happened there. */
-    interface PointTest {
+    private interface PointTest {
         boolean at(double x, double y);
     }
 
@@ -136,16 +133,6 @@ final class StepLocator {
             if (test.at(PathSweep.hermite(mid, x0, mx0, x1, mx1), PathSweep.hermite(mid, y0, my0, y1, my1))) after = mid; else before = mid;
         }
         return after;
-    }
-
-    /**
-     * As {@link #onCubic} for a push zone's edge, the same point, from the edges' crossings of the
-     * cubic in closed form ({@link EdgeCrossings}); NaN where they are not clean.
-     */
-    private double onCubicExact(double tau) {
-        BallState b = ball;
-        return crossings.bisect(b.x, b.vx * tau, trial.nx, trial.nvx * tau, b.y, b.vy * tau, trial.ny, trial.nvy * tau,
-                pastEdge, 0.125 * EDGE_CONFIRM, LOCATE_ITERATIONS);
     }
 
     /**
@@ -262,8 +249,7 @@ final class StepLocator {
         // The whole step again with the start's friction and push: a smooth path, whose cubic
         // the edge is found on.
         trial.run(tau, RollingStep.Kind.INTEGRATOR, a1x, a1y);
-        double edge = crossings == null ? Double.NaN : onCubicExact(tau);
-        if (Double.isNaN(edge)) edge = onCubic(tau, pastEdge, EDGE_CONFIRM);
+        double edge = onCubic(tau, pastEdge, EDGE_CONFIRM);
         // Found on the step's cubic, confirmed by trial steps a hair either side; where the cubic
         // strays from the trial steps by more than that hair (its own interpolation error), by
         // trial steps EDGE_BRACKET either side, and bisection between them; where even that fails,
