@@ -182,14 +182,21 @@ final class ShapeGrid {
 
     /** The grid column of x, clamped to the grid. */
     int column(double x) {
-        int i = (int) Math.floor((x - originX) / cellSize);
-        return i < 0 ? 0 : Math.min(i, columns - 1);
+        return index((x - originX) / cellSize, columns);
     }
 
     /** The grid row of y, clamped to the grid. */
     int row(double y) {
-        int j = (int) Math.floor((y - originY) / cellSize);
-        return j < 0 ? 0 : Math.min(j, rows - 1);
+        return index((y - originY) / cellSize, rows);
+    }
+
+    /**
+     * floor(u) clamped to [0, count - 1], as (int) Math.floor(u) then clamped, without the call
+     * (the queries ask it four times each): below 0 (or NaN) it is 0, and above it truncation is floor.
+     */
+    private static int index(double u, int count) {
+        if (!(u >= 0)) return 0;
+        return Math.min((int) u, count - 1);
     }
 
     /** Whether any shape is listed in the cells under the rectangle. */
