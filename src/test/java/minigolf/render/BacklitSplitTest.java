@@ -64,9 +64,8 @@ class BacklitSplitTest {
     @Test
     void drawingTheBacklitPartsWithoutTheTapLeavesThePictureAsItWas() throws Exception {
         for (String hole : new String[]{"seaside/07-jetty.json", "seaside/18-lighthouse-point.json"}) {
-            World w = World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "worlds", hole));
-            var b = w.course().bounds();
-            Vector3f centre = new Vector3f((float) (b.minX() + b.maxX()) / 2, (float) (b.minY() + b.maxY()) / 2, 0.3f);
+            World w = TestCourses.worldHole(hole);
+            Vector3f centre = TestCourses.middle(w.course());
             try (Offscreen off = new Offscreen(W, H, 0);
                  SceneRenderer r = new SceneRenderer(w.course(), w.terrain(), TerrainMesh.ColorMode.GREEN, RenderQuality.SOFTWARE)) {
                 r.setBalls(List.of());
