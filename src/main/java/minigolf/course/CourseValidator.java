@@ -84,7 +84,7 @@ public final class CourseValidator {
     private static void checkBricks(Course course, String sourceName) throws CourseException {
         for (int i = 0; i < course.bricks().size(); i++) {
             Brick b = course.bricks().get(i);
-            for (int k = 0; k <= course.extraHoles().size(); k++) {
+            for (int k = 0; k <= course.holes().size(); k++) {
                 Vec2 p = k == 0 ? course.start() : course.holes().get(k - 1).position();
                 if (p.x() > b.min().x() && p.x() < b.max().x() && p.y() > b.min().y() && p.y() < b.max().y()) {
                     throw new CourseException(sourceName, "bricks[" + i + "]", "stands on the "

@@ -31,7 +31,7 @@ class BricksFormatTest {
         assertEquals(c, back);
         assertEquals(json, CourseWriter.toJson(back));
         // Kept through the course's other copies.
-        assertEquals(c.bricks(), c.withWorld("meadow").withObstacles(List.of()).withHoles(c.hole(), List.of()).bricks());
+        assertEquals(c.bricks(), c.withWorld("seaside").withObstacles(List.of()).withHoles(c.hole(), List.of()).bricks());
     }
 
     @Test
@@ -54,7 +54,7 @@ class BricksFormatTest {
                 error(withBricks("[ { \"min\": [1, 0, 0], \"max\": [1, 1, 1], \"hits\": 1 } ]")));
         assertEquals("courses/x.json: bricks[0].restitution: must be between 0 and 1, got 1.5",
                 error(withBricks("[ { \"min\": [0, 0, 0], \"max\": [1, 1, 1], \"hits\": 1, \"restitution\": 1.5 } ]")));
-        assertEquals("courses/x.json: bricks[0]: unknown field \"colour\"",
+        assertEquals("courses/x.json: bricks[0].colour: unknown field (known: min, max, hits, restitution)",
                 error(withBricks("[ { \"min\": [0, 0, 0], \"max\": [1, 1, 1], \"hits\": 1, \"colour\": 3 } ]")));
         assertEquals("courses/x.json: bricks[0]: stands on the start at (-3, 0)",
                 error(withBricks("[ { \"min\": [-3.5, -0.5, -1], \"max\": [-2.5, 0.5, 1], \"hits\": 1 } ]")));

@@ -18,12 +18,12 @@ import minigolf.course.Vec3;
 import org.junit.jupiter.api.Test;
 
 /** Breakable bricks: each contact takes a hit, the last hit still bounces, then the brick is gone (docs/physics.md). */
-class BrickPhysicsTest {
+public class BrickPhysicsTest {
     /** A flat lane, x from -1 to 9: the ball starts at 0, a brick across the lane at x 2..2.25, the hole at x 6. */
-    static Course lane(int hits) {
+    public static Course lane(int hits) {
         return new Course(Course.FORMAT, "brick lane", new TerrainSpec.HeightExpression("0"), new Bounds(-1, -1, 9, 1),
                 new PhysicsSettings(9.81, 0.1, 0.2, 5.0, minigolf.course.PhysicsModel.CLASSIC), new Vec2(0, 0), new Hole(new Vec2(6, 0), 0.1, HoleRule.REST, null),
-                List.of(), List.of(), List.of(), List.of(), List.of(), "meadow", List.of(),
+                List.of(), List.of(), List.of(), List.of(), List.of(), "meadowbrook", List.of(),
                 List.of(new Brick(new Vec3(2, -1, -0.5), new Vec3(2.25, 1, 0.5), hits, 0.9)));
     }
 
