@@ -105,6 +105,17 @@ public record Course(int format, String name, TerrainSpec terrain, Bounds bounds
                 teleports, world, extraHoles, newBricks);
     }
 
+    /**
+     * The obstacles to draw: the course's own, then the breakable bricks that {@code standing} says
+     * still stand (by index), each as its box.
+     */
+    public List<Obstacle> obstaclesWithBricks(java.util.function.IntPredicate standing) {
+        if (bricks.isEmpty()) return obstacles;
+        List<Obstacle> all = new ArrayList<>(obstacles);
+        for (int i = 0; i < bricks.size(); i++) if (standing.test(i)) all.add(bricks.get(i).box());
+        return Collections.unmodifiableList(all);
+    }
+
     /** Every hole: the main one first, then the extra holes in order. */
     public List<Hole> holes() {
         List<Hole> all = new ArrayList<>(1 + extraHoles.size());

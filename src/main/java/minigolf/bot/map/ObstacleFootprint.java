@@ -16,7 +16,8 @@ import minigolf.terrain.Terrain;
  * their height range meets a rolling ball's, so a ball may roll under a raised box); trees are
  * circles (reported as {@link #TREE} for A*'s diagonal rule); models are their triangles
  * ({@link ObstacleGeometry}, as the physics places them) projected onto the ground, those that
- * reach from the ground up to the ball's top. Built once per world and cached.
+ * reach from the ground up to the ball's top; the breakable bricks standing in the world's state
+ * as boxes. Built once per world and cached.
  */
 public final class ObstacleFootprint {
     public static final byte FREE = 0, SOLID = 1, TREE = 2;
@@ -38,6 +39,10 @@ public final class ObstacleFootprint {
         this.terrain = world.terrain();
         this.radius = world.physics().ballRadius();
         for (Obstacle o : world.course().obstacles()) add(o);
+        // The bricks standing in this world's state are boxes; broken ones leave the way open.
+        for (int i = 0; i < world.state().bricks(); i++) {
+            if (world.state().standing(i)) add(world.course().bricks().get(i).box());
+        }
         minX = world.bounds().minX() - 1;
         minY = world.bounds().minY() - 1;
         cols = Math.max(1, (int) Math.ceil((world.bounds().width() + 2) / BUCKET));
