@@ -76,4 +76,18 @@ class ClassicBricksTest {
         assertTrue(r.holed(), r.strokes() + " strokes, holed " + r.holed());
         assertTrue(r.strokes() <= 4, r.strokes() + " strokes");
     }
+
+    /**
+     * A full brick (4 hits) as the only way: the planner, finding no way on its map, plays hard at
+     * the hole, breaks the brick in a few strokes (a hard putt bounces off it more than once) and
+     * holes out (3 strokes when written). With the brick a wall (before) no stroke could hole.
+     */
+    @Test
+    void thePlannerBreaksAFullBrick() throws Exception {
+        World world = World.of(TrackConverterTest.convert(brickGate(16)).course());
+        Playthrough.Result r = Playthrough.play(new PlannerBot(), world, SimulationSettings.DEFAULT, 10, 20_000, 1,
+                CancellationToken.none(), BotProgress.NONE);
+        assertTrue(r.holed() && r.strokes() <= 5, r.strokes() + " strokes, holed " + r.holed());
+        assertEquals(0, r.shots().get(r.shots().size() - 1).result().state().hitsLeft(0));
+    }
 }
