@@ -53,18 +53,31 @@ class ClassicBricksTest {
         assertFalse(converted.notes().stream().anyMatch(n -> n.contains("bricks")), converted.notes().toString());
     }
 
-    /** The bots' map: the standing brick closes the only gap; broken, the way to the hole is open. */
+    /**
+     * The bots' map: the standing brick closes the only gap to the ball, but the distance field leads
+     * through it at a cost (DistanceField.BRICK_COST: about 5 m to cross a brick tile); broken, the
+     * way is the plain 40 tiles. Before, the field had no way at all (infinite: the planner wandered).
+     */
     @Test
-    void theBotsMapOpensWhereTheBrickBroke() throws Exception {
+    void theBotsMapLeadsThroughABrickAtACostAndOpensWhereItBroke() throws Exception {
         World world = World.of(TrackConverterTest.convert(brickGate(19)).course());
         Course c = world.course();
+        double sx = c.start().x(), sy = c.start().y();
+        assertTrue(minigolf.bot.map.CourseGrid.isBlocked(world, 20.5 * TILE, (TileMap.HEIGHT - 12.5) * TILE), "the brick blocks a ball");
         CourseMaps maps = new CourseMaps();
         maps.prepare(world, CancellationToken.none());
-        assertFalse(Double.isFinite(maps.toHole().at(c.start().x(), c.start().y())), "walled off while the brick stands");
+        double standing = maps.toHole().at(sx, sy);
         maps.prepare(world.withState(CourseState.of(c, new int[]{0})), CancellationToken.none());
-        double d = maps.toHole().at(c.start().x(), c.start().y());
+        double broken = maps.toHole().at(sx, sy);
+        assertFalse(minigolf.bot.map.CourseGrid.isBlocked(world.withState(CourseState.of(c, new int[]{0})), 20.5 * TILE,
+                (TileMap.HEIGHT - 12.5) * TILE), "broken: open");
         // 40 tiles straight along row 12.
-        assertTrue(d >= 40 * TILE - 1e-9 && d < 40 * TILE * 1.05, "open once broken: " + d);
+        assertTrue(broken >= 40 * TILE - 1e-9 && broken < 40 * TILE * 1.05, "open once broken: " + broken);
+        // Standing: the crossing of 0.25 m + 2 radii (0.217 m) costs 11 times its length (to a cell
+        // of 0.05 m: 14.5 m against 14.67 when written).
+        double crossing = TILE + 2 * c.physics().ballRadius();
+        double cell = 0.05 * (1 + minigolf.bot.map.DistanceField.BRICK_COST);
+        assertEquals(broken + minigolf.bot.map.DistanceField.BRICK_COST * crossing, standing, cell);
     }
 
     /** The planner plays through the one-hit brick and holes out; with the brick a wall (before) it could not. */
