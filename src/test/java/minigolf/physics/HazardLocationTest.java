@@ -35,11 +35,6 @@ class HazardLocationTest {
         };
     }
 
-    /** When a ball braking at a from speed v has gone the distance d (the closed form). */
-    private static double timeToCover(double d, double v, double a) {
-        return (v - Math.sqrt(v * v - 2 * a * d)) / a;
-    }
-
     @Test
     void aBallRollingIntoWaterIsLocatedAtTheShoreWithFewHeights() {
         // Down a 2% slope (braking, mu_k 0.08) from x = -5 at 4 m/s into water beyond x = 5.
@@ -50,7 +45,7 @@ class HazardLocationTest {
         ShotResult r = simulator.simulate(-5, 0, v, 0);
         assertEquals(Outcome.WATER, r.outcome());
         assertEquals(5, r.endX(), 1e-7);
-        assertEquals(timeToCover(10, v, TestWorlds.G * (muK - s)), r.time(), 1e-7);
+        assertEquals(TestWorlds.timeToCover(10, v, TestWorlds.G * (muK - s)), r.time(), 1e-7);
         // 35 heights in the whole shot; bisection on the cubic asked 27 to locate the shore (57 in all).
         assertTrue(heights <= 40, "water heights " + heights);
     }

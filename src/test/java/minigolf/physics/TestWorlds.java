@@ -85,4 +85,9 @@ final class TestWorlds {
     static Simulator rk4(World world) {
         return new Simulator(world, SimulationSettings.DEFAULT);
     }
+
+    /** When a ball braking at a from speed v has gone the distance d (the closed form). */
+    static double timeToCover(double d, double v, double a) {
+        return (v - Math.sqrt(v * v - 2 * a * d)) / a;
+    }
 }
