@@ -117,6 +117,22 @@ final class PathSweep {
         return false;
     }
 
+    /**
+     * The end of the j-th (1 to 4) of four equal pieces of [sa, sb] into (px, py, pz): the path
+     * there, or b itself for the last; returns its s.
+     */
+    private double quarter(int j, double sa, double sb, double bx, double by, double bz) {
+        if (j == 4) {
+            px = bx;
+            py = by;
+            pz = bz;
+            return sb;
+        }
+        double s = sa + 0.25 * j * (sb - sa);
+        pointAt(s);
+        return s;
+    }
+
     /** The sphere's centre on the path at s (the ends exactly). */
     private void pointAt(double s) {
         if (s >= 1) {
@@ -151,18 +167,8 @@ final class PathSweep {
         }
         double ca = sa, cx = ax, cy = ay, cz = az;
         for (int j = 1; j <= 4; j++) {
-            double cb = j == 4 ? sb : sa + 0.25 * j * (sb - sa);
-            double dx, dy, dz;
-            if (j == 4) {
-                dx = bx;
-                dy = by;
-                dz = bz;
-            } else {
-                pointAt(cb);
-                dx = px;
-                dy = py;
-                dz = pz;
-            }
+            double cb = quarter(j, sa, sb, bx, by, bz);
+            double dx = px, dy = py, dz = pz;
             if (sweepRange(ca, cb, cx, cy, cz, dx, dy, dz, refinements - 1)) return true;
             ca = cb;
             cx = dx;
@@ -195,18 +201,8 @@ final class PathSweep {
             double s0 = sa, t0 = ta, p0x = pax, p0y = pay, p0z = paz;
             double stop = sb;
             for (int j = 1; j <= 4; j++) {
-                double s1 = j == 4 ? stop : sa + 0.25 * j * (stop - sa);
-                double p1x, p1y, p1z;
-                if (j == 4) {
-                    p1x = pbx;
-                    p1y = pby;
-                    p1z = pbz;
-                } else {
-                    pointAt(s1);
-                    p1x = px;
-                    p1y = py;
-                    p1z = pz;
-                }
+                double s1 = quarter(j, sa, stop, pbx, pby, pbz);
+                double p1x = px, p1y = py, p1z = pz;
                 double rx = p1x - ax, ry = p1y - ay, rz = p1z - az;
                 double t1 = (rx * dx + ry * dy + rz * dz) / squared;
                 // Off the chord (by its distance), or not advancing along it: refine as before.
