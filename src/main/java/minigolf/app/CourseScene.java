@@ -83,6 +83,10 @@ final class CourseScene implements AutoCloseable {
     }
 
     /** Shows {@code world} (its course file's folder holds the models' colours, may be null); builds the scene when it is another. */
+    /** The bricks drawn now and on which course (see {@link #showBricks}). */
+    private minigolf.physics.CourseState drawnBricks;
+    private World bricksOf;
+
     void show(World world, Path coursePath, UserSettings settings, int width, int height) {
         if (!stale && world == built) return;
         stale = false;
@@ -120,6 +124,21 @@ final class CourseScene implements AutoCloseable {
     }
 
     /** The course shown now (null before the first frame). */
+    /**
+     * Draws the breakable bricks that {@code state} leaves standing (null: every brick, as the hole
+     * starts); the obstacles are rebuilt only when that changes.
+     */
+    void showBricks(minigolf.physics.CourseState state) {
+        World w = built;
+        if (w == null || renderer == null || w.course().bricks().isEmpty()) return;
+        minigolf.physics.CourseState s = state != null && state.bricks() == w.course().bricks().size() ? state
+                : minigolf.physics.CourseState.initial(w.course());
+        if (s.equals(drawnBricks) && w == bricksOf) return;
+        drawnBricks = s;
+        bricksOf = w;
+        renderer.setObstacles(w.course().obstaclesWithBricks(s::standing));
+    }
+
     World world() {
         return built;
     }

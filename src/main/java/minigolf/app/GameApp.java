@@ -149,6 +149,7 @@ public final class GameApp implements WindowApp {
         host.resize(fw, fh);
         GameScreen s = current();
         scene.show(s.course(), s.course() == play.world() ? play.coursePath() : null, settings, fw, fh);
+        scene.showBricks(s.courseState());
         // Each world's quiet background loop (setAmbience does nothing when it already plays).
         if (sounds != null) sounds.setAmbience(minigolf.theme.Themes.of(s.course().course().world()).ambience());
         s.directCamera(scene, scene.sinceLastFrame(time), (float) fw / Math.max(1, fh));

@@ -29,6 +29,12 @@ abstract class GameScreen implements Screen {
         return app.play().world();
     }
 
+    /** The bricks standing on the course drawn (null: as the course starts): the game's, as its strokes left them. */
+    minigolf.physics.CourseState courseState() {
+        Game game = app.play().game();
+        return game != null && course() == app.play().world() ? game.courseState() : null;
+    }
+
     /** The balls drawn: the rolling one where its animation has it, the others at rest, the one dropping into the cup. */
     List<BallView> balls() {
         List<BallView> views = new ArrayList<>();

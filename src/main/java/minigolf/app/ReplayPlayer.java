@@ -24,6 +24,11 @@ final class ReplayPlayer {
     private ShotRecord shot;
     private int replayed, mismatches;
 
+    /** The bricks standing as the replay stands (null when none is running). */
+    minigolf.physics.CourseState courseNow() {
+        return replay == null ? null : replay.courseNow().state();
+    }
+
     void start(HoleReplay r) {
         replay = r;
         animator = null;

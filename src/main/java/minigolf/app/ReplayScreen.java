@@ -48,6 +48,12 @@ final class ReplayScreen extends GameScreen {
         return world;
     }
 
+    /** The bricks as the replay has reached: rebuilt stroke by stroke, as play left them. */
+    @Override
+    minigolf.physics.CourseState courseState() {
+        return replayer.courseNow();
+    }
+
     @Override
     public void update(double elapsed) {
         double dt = app.play().game().settings().dt();

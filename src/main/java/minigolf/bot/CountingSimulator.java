@@ -114,6 +114,16 @@ public final class CountingSimulator {
         return new CountingSimulator(other, new Simulator(other, simulator.settings()), account, candidates, false);
     }
 
+    /**
+     * This simulator on the same course with the bricks as {@code state} leaves them (what the strokes
+     * so far broke): the same count, budget, token and threads. Itself when the state is its world's.
+     */
+    public CountingSimulator inState(minigolf.physics.CourseState state) {
+        if (state.equals(world.state())) return this;
+        World other = world.withState(state);
+        return new CountingSimulator(other, new Simulator(other, simulator.settings()), account, primary, real);
+    }
+
     public World world() {
         return world;
     }
@@ -426,7 +436,7 @@ public final class CountingSimulator {
         } catch (minigolf.physics.NonFiniteMotionException e) {
             // The ball's motion overflowed (terrain too steep, or not finite between the loader's
             // samples): out of play, as the game rules it (StrokeAnimator); the ball stays where it was.
-            return new ShotResult(Outcome.OUT, x, y, 0, 0);
+            return new ShotResult(Outcome.OUT, x, y, 0, 0, Double.NaN, java.util.List.of(), simulator.world().state());
         }
     }
 

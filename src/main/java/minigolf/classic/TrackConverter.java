@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import minigolf.course.Bounds;
+import minigolf.course.Brick;
 import minigolf.course.Course;
 import minigolf.course.Hole;
 import minigolf.course.HoleRule;
@@ -79,8 +80,7 @@ public final class TrackConverter {
             // ours would give it for ever, and a downhill tile pushing the ball back at one bounced it
             // until the stroke's time limit (10 minutes) on a sample track.
             new WallKind("bouncy", new int[]{PixelMap.BOUNCY}, 1.0),
-            new WallKind("movable", new int[]{PixelMap.MOVABLE, PixelMap.SINKABLE}, 0.8),
-            new WallKind("brick", new int[]{40, 41, 42, 43}, 0.9));
+            new WallKind("movable", new int[]{PixelMap.MOVABLE, PixelMap.SINKABLE}, 0.8));
 
     private TrackConverter() {
     }
@@ -179,25 +179,45 @@ public final class TrackConverter {
         Course course = new Course(Course.FORMAT, track.name(), new TerrainSpec.HeightExpression("0"),
                 new Bounds(0, 0, width, height), physics, first, cups.get(0), zones, obstacles)
                 .withElements(elements.pushZones, elements.magnets, elements.teleports)
-                .withHoles(cups.get(0), cups.subList(1, cups.size()));
+                .withHoles(cups.get(0), cups.subList(1, cups.size()))
+                .withBricks(bricks(track, scale, bottom, top));
         return new Converted(course, files, List.copyOf(notes));
+    }
+
+    /**
+     * The breakable bricks: one per brick tile (the original's special blocks 40..43, a whole tile
+     * each), with 4..1 hits left as the tile shows, restitution 0.9 as the original's.
+     */
+    static List<Brick> bricks(ClassicTrack track, ClassicScale scale, double bottom, double top) {
+        List<Brick> bricks = new ArrayList<>();
+        double t = scale.tile();
+        for (int ty = 0; ty < TileMap.HEIGHT; ty++) {
+            for (int tx = 0; tx < TileMap.WIDTH; tx++) {
+                int code = track.tiles().code(tx, ty);
+                if (TileMap.kind(code) != TileMap.SPECIAL_TILE) continue;
+                int value = 24 + TileMap.shape(code);
+                if (value < PixelMap.BRICK_FULL || value > PixelMap.BRICK_QUARTER) continue;
+                double y0 = (TileMap.HEIGHT - ty - 1) * t;
+                bricks.add(new Brick(new Vec3(tx * t, y0, bottom), new Vec3((tx + 1) * t, y0 + t, top),
+                        PixelMap.BRICK_QUARTER + 1 - value, Brick.DEFAULT_RESTITUTION));
+            }
+        }
+        return bricks;
     }
 
     /** Elements the course does not play as the original yet (docs/classic-tracks.md lists them). */
     private static void noteUnsupported(PixelMap map, List<String> notes) {
-        boolean mine = false, movable = false, brick = false, illusion = false;
+        boolean mine = false, movable = false, illusion = false;
         for (int y = 0; y < PixelMap.HEIGHT; y++) {
             for (int x = 0; x < PixelMap.WIDTH; x++) {
                 int v = map.at(x, y);
                 mine |= v == PixelMap.MINE || v == PixelMap.BIG_MINE;
                 movable |= v == PixelMap.MOVABLE || v == PixelMap.SINKABLE;
-                brick |= v >= PixelMap.BRICK_FULL && v <= PixelMap.BRICK_QUARTER;
                 illusion |= v == PixelMap.ILLUSION;
             }
         }
         if (mine) notes.add("not yet played: mines");
         if (movable) notes.add("not yet played: movable blocks (still walls)");
-        if (brick) notes.add("not yet played: breakable bricks (still walls)");
         if (illusion) notes.add("illusion blocks are drawn as grass (the ball rolls through them, as in the original)");
     }
 

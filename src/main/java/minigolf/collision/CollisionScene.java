@@ -188,6 +188,15 @@ public final class CollisionScene {
      * {@code scratch} must hold at least 3 doubles (one per thread).
      */
     public boolean sweep(double x0, double y0, double z0, double x1, double y1, double z1, Hit hit, double[] scratch) {
+        return sweep(x0, y0, z0, x1, y1, z1, hit, scratch, null);
+    }
+
+    /**
+     * As {@link #sweep(double, double, double, double, double, double, Hit, double[])}, passing over
+     * the obstacles whose entry in {@code gone} is true (bricks broken earlier; null: none).
+     */
+    public boolean sweep(double x0, double y0, double z0, double x1, double y1, double z1, Hit hit, double[] scratch,
+                         boolean[] gone) {
         double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
         double r = radius;
         double minX = Math.min(x0, x1) - r, maxX = Math.max(x0, x1) + r;
@@ -218,6 +227,7 @@ public final class CollisionScene {
                         }
                         // A shape listed in several cells is tested in the first of them this sweep visits.
                         if ((i > i0 && firstColumn[s] < i) || (j > j0 && firstRow[s] < j)) continue;
+                        if (gone != null && gone[obstacleOf[s]]) continue;
                         double t = s < triangleCount
                                 ? triangle(s, x0, y0, z0, dx, dy, dz, best, scratch)
                                 : cylinder(s - triangleCount, x0, y0, z0, dx, dy, dz, best, scratch);

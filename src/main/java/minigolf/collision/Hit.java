@@ -11,6 +11,8 @@ public final class Hit {
     public int obstacle;
     /** The velocity of the obstacle's surface at the contact (m/s): 0 for a still obstacle, set for a moving one. */
     public double ux, uy, uz;
+    /** Index of the breakable brick hit in the course's {@code bricks}, or -1 for any other obstacle. */
+    public int brick = -1;
     /** Whether the obstacle hit moves (then {@link #ux}, {@link #uy}, {@link #uz} hold its velocity there). */
     public boolean moving;
 
@@ -22,6 +24,7 @@ public final class Hit {
         this.nz = nz;
         this.restitution = restitution;
         this.obstacle = obstacle;
+        brick = -1;
         ux = 0;
         uy = 0;
         uz = 0;
@@ -36,6 +39,7 @@ public final class Hit {
         nz = other.nz;
         restitution = other.restitution;
         obstacle = other.obstacle;
+        brick = other.brick;
         ux = other.ux;
         uy = other.uy;
         uz = other.uz;

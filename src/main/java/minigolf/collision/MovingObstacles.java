@@ -284,6 +284,7 @@ public final class MovingObstacles {
             hit.restitution = e.restitution;
             hit.obstacle = e.index;
             hit.moving = true;
+            hit.brick = -1;
             // The surface's velocity at the contact point (the ball's centre less a radius along n).
             double px = x0 + f * (x1 - x0) - radius * nx, py = y0 + f * (y1 - y0) - radius * ny, pz = z0 + f * (z1 - z0) - radius * nz;
             e.motion.velocityAt(time, velocity);

@@ -15,7 +15,8 @@ import minigolf.theme.Themes;
  */
 public record Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
                      Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, List<PushZone> pushZones,
-                     List<Magnet> magnets, List<Teleport> teleports, String world, List<Hole> extraHoles) {
+                     List<Magnet> magnets, List<Teleport> teleports, String world, List<Hole> extraHoles,
+                     List<Brick> bricks) {
     public static final int FORMAT = 1;
 
     public Course {
@@ -25,7 +26,16 @@ public record Course(int format, String name, TerrainSpec terrain, Bounds bounds
         magnets = List.copyOf(magnets);
         teleports = List.copyOf(teleports);
         extraHoles = extraHoles == null ? List.of() : List.copyOf(extraHoles);
+        bricks = bricks == null ? List.of() : List.copyOf(bricks);
         if (world == null) world = Themes.DEFAULT_ID;
+    }
+
+    /** A course without breakable bricks. */
+    public Course(int format, String name, TerrainSpec terrain, Bounds bounds, PhysicsSettings physics,
+                  Vec2 start, Hole hole, List<Zone> zones, List<Obstacle> obstacles, List<PushZone> pushZones,
+                  List<Magnet> magnets, List<Teleport> teleports, String world, List<Hole> extraHoles) {
+        this(format, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones, magnets, teleports, world,
+                extraHoles, List.of());
     }
 
     /** A course with one hole. */
@@ -64,29 +74,46 @@ public record Course(int format, String name, TerrainSpec terrain, Bounds bounds
 
     public Course withPhysics(PhysicsSettings newPhysics) {
         return new Course(format, name, terrain, bounds, newPhysics, start, hole, zones, obstacles, pushZones, magnets,
-                teleports, world, extraHoles);
+                teleports, world, extraHoles, bricks);
     }
 
     public Course withObstacles(List<Obstacle> newObstacles) {
         return new Course(format, name, terrain, bounds, physics, start, hole, zones, newObstacles, pushZones, magnets,
-                teleports, world, extraHoles);
+                teleports, world, extraHoles, bricks);
     }
 
     public Course withWorld(String newWorld) {
         return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones, magnets,
-                teleports, newWorld, extraHoles);
+                teleports, newWorld, extraHoles, bricks);
     }
 
     /** The same course with other push zones, magnets and teleports. */
     public Course withElements(List<PushZone> newPushZones, List<Magnet> newMagnets, List<Teleport> newTeleports) {
         return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, newPushZones, newMagnets,
-                newTeleports, world, extraHoles);
+                newTeleports, world, extraHoles, bricks);
     }
 
     /** The same course with these holes: {@code main} where the flag stands, {@code extra} the others. */
     public Course withHoles(Hole main, List<Hole> extra) {
         return new Course(format, name, terrain, bounds, physics, start, main, zones, obstacles, pushZones, magnets,
-                teleports, world, extra);
+                teleports, world, extra, bricks);
+    }
+
+    /** The same course with these breakable bricks (as the hole starts). */
+    public Course withBricks(List<Brick> newBricks) {
+        return new Course(format, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones, magnets,
+                teleports, world, extraHoles, newBricks);
+    }
+
+    /**
+     * The obstacles to draw: the course's own, then the breakable bricks that {@code standing} says
+     * still stand (by index), each as its box.
+     */
+    public List<Obstacle> obstaclesWithBricks(java.util.function.IntPredicate standing) {
+        if (bricks.isEmpty()) return obstacles;
+        List<Obstacle> all = new ArrayList<>(obstacles);
+        for (int i = 0; i < bricks.size(); i++) if (standing.test(i)) all.add(bricks.get(i).box());
+        return Collections.unmodifiableList(all);
     }
 
     /** Every hole: the main one first, then the extra holes in order. */

@@ -38,7 +38,7 @@ import java.util.function.Function;
 public final class CourseLoader {
     static final List<String> TOP_FIELDS = List.of(
             "format", "name", "world", "terrain", "bounds", "physics", "start", "hole", "extraHoles", "zones", "obstacles",
-            "pushZones", "magnets", "teleports");
+            "pushZones", "magnets", "teleports", "bricks");
     static final List<String> TERRAIN_FIELDS = List.of("height", "grid");
     static final List<String> GRID_FIELDS = List.of("origin", "spacing", "heights", "kineticFriction", "staticFriction",
             "deletedCells");
@@ -46,6 +46,7 @@ public final class CourseLoader {
     static final List<String> PHYSICS_FIELDS = List.of("gravity", "kineticFriction", "staticFriction", "maxSpeed", "model",
             "ballRadius", "ballMass", "dragCoefficient", "airDensity", "groundRestitution", "puttsOnly");
     static final List<String> HOLE_FIELDS = List.of("position", "radius", "rule", "captureSpeed");
+    static final List<String> BRICK_FIELDS = List.of("min", "max", "hits", "restitution");
     static final List<String> ZONE_FIELDS = List.of("shape", "kineticFriction", "staticFriction", "hazard");
     static final List<String> HAZARD_FIELDS = List.of("kind", "when", "returnTo", "penalty");
     static final List<String> CELLS_FIELDS = List.of("type", "origin", "size", "columns", "rows", "spans");
@@ -256,8 +257,9 @@ public final class CourseLoader {
             List<PushZone> pushZones = elements.pushZones(o.get("pushZones"), "pushZones");
             List<Magnet> magnets = elements.magnets(o.get("magnets"), "magnets");
             List<Teleport> teleports = elements.teleports(o.get("teleports"), "teleports");
+            List<Brick> bricks = bricks(o.get("bricks"), "bricks");
             return new Course(Course.FORMAT, name, terrain, bounds, physics, start, hole, zones, obstacles, pushZones,
-                    magnets, teleports, world, extraHoles);
+                    magnets, teleports, world, extraHoles, bricks);
         }
 
         // ---- terrain ----
@@ -343,6 +345,41 @@ public final class CourseLoader {
             List<Hole> holes = new ArrayList<>(n.size());
             for (int i = 0; i < n.size(); i++) holes.add(hole(n.get(i), path + "[" + i + "]"));
             return holes;
+        }
+
+        List<Brick> bricks(JsonNode n, String path) throws CourseException {
+            if (n == null) return List.of();
+            if (!n.isArray()) throw error(path, "expected an array, got " + kind(n));
+            if (n.size() > Limits.BRICKS) {
+                throw error(path, "too many bricks: " + n.size() + " (the limit is " + Limits.BRICKS + ")");
+            }
+            List<Brick> bricks = new ArrayList<>(n.size());
+            for (int i = 0; i < n.size(); i++) bricks.add(brick(n.get(i), path + "[" + i + "]"));
+            return bricks;
+        }
+
+        Brick brick(JsonNode n, String path) throws CourseException {
+            ObjectNode o = object(n, path);
+            knownFields(o, path, BRICK_FIELDS);
+            Vec3 min = vec3(required(o, path, "min"), join(path, "min"));
+            Vec3 max = vec3(required(o, path, "max"), join(path, "max"));
+            if (!(min.x() < max.x() && min.y() < max.y() && min.z() < max.z())) {
+                throw error(path, "min must be < max in all three axes, got min " + point3(min) + ", max " + point3(max));
+            }
+            String hp = join(path, "hits");
+            JsonNode h = required(o, path, "hits");
+            if (!h.isIntegralNumber() || !h.canConvertToInt() || h.intValue() < 1 || h.intValue() > Brick.MAX_HITS) {
+                throw error(hp, "expected a whole number from 1 to " + Brick.MAX_HITS + ", got " + show(h));
+            }
+            double restitution = Brick.DEFAULT_RESTITUTION;
+            if (o.has("restitution")) {
+                String rp = join(path, "restitution");
+                restitution = number(o.get("restitution"), rp);
+                if (!(restitution >= 0 && restitution <= 1)) {
+                    throw error(rp, "must be between 0 and 1, got " + CourseValidator.number(restitution));
+                }
+            }
+            return new Brick(min, max, h.intValue(), restitution);
         }
 
         // ---- zones, obstacles ----

@@ -77,6 +77,21 @@ public final class CourseValidator {
         }
         checkTeleports(course, sourceName);
         checkNoHazard(course.start(), "start", course, sourceName);
+        checkBricks(course, sourceName);
+    }
+
+    /** No brick stands on the start or a hole (the ball would start inside it; a hole could never be reached). */
+    private static void checkBricks(Course course, String sourceName) throws CourseException {
+        for (int i = 0; i < course.bricks().size(); i++) {
+            Brick b = course.bricks().get(i);
+            for (int k = 0; k <= course.holes().size(); k++) {
+                Vec2 p = k == 0 ? course.start() : course.holes().get(k - 1).position();
+                if (p.x() > b.min().x() && p.x() < b.max().x() && p.y() > b.min().y() && p.y() < b.max().y()) {
+                    throw new CourseException(sourceName, "bricks[" + i + "]", "stands on the "
+                            + (k == 0 ? "start" : k == 1 ? "hole" : "hole extraHoles[" + (k - 2) + "]") + " at " + point(p));
+                }
+            }
+        }
     }
 
     /**

@@ -72,6 +72,24 @@ public final class CourseWriter {
             }
             sb.append("  ],\n");
         }
+        List<Brick> bricks = course.bricks();
+        if (!bricks.isEmpty()) {
+            sb.append("  \"bricks\": [\n");
+            for (int i = 0; i < bricks.size(); i++) {
+                String bp = "bricks[" + i + "]";
+                Brick brick = require(bricks.get(i), bp);
+                sb.append("    { \"min\": ");
+                vec3(sb, require(brick.min(), bp + ".min"), bp + ".min");
+                sb.append(", \"max\": ");
+                vec3(sb, require(brick.max(), bp + ".max"), bp + ".max");
+                sb.append(", \"hits\": ").append(brick.hits());
+                if (brick.restitution() != Brick.DEFAULT_RESTITUTION) {
+                    sb.append(", \"restitution\": ").append(num(brick.restitution(), bp + ".restitution"));
+                }
+                sb.append(" }").append(i + 1 < bricks.size() ? ",\n" : "\n");
+            }
+            sb.append("  ],\n");
+        }
         List<Zone> zones = course.zones();
         if (zones.isEmpty()) {
             sb.append("  \"zones\": [],\n");

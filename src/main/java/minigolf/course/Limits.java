@@ -45,6 +45,8 @@ public final class Limits {
     public static final int TELEPORT_EXITS = 16;
     /** Holes beside the main one (a classic track has up to ten; each is checked on every step near it). */
     public static final int EXTRA_HOLES = 100;
+    /** Breakable bricks of one course (a classic track has at most 1,225 tiles). */
+    public static final int BRICKS = 2_500;
     /** Moving obstacles of one course (each is swept separately, in its own frame, on every step near it). */
     public static final int MOVING_OBSTACLES = 64;
     /** Points of one sliding obstacle's path. */

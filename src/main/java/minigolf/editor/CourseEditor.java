@@ -55,6 +55,7 @@ public final class CourseEditor {
                 c.teleports(), new EditableCourse.Properties(c.name(), c.start(), c.hole(), c.physics()));
         ec.world = c.world();
         ec.extraHoles = c.extraHoles();
+        ec.bricks = c.bricks();
         CourseEditor e = new CourseEditor(ec, file);
         // A sampled expression course is not yet a file: it counts as unsaved.
         if (!(c.terrain() instanceof TerrainSpec.HeightGrid)) e.file = null;

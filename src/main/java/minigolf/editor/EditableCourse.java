@@ -38,6 +38,8 @@ public final class EditableCourse {
     String world = minigolf.theme.Themes.DEFAULT_ID;
     /** The holes beside the main one (kept as loaded: the editor places only the main hole). */
     List<Hole> extraHoles = List.of();
+    /** Breakable bricks: kept as loaded (not editable), saved back. */
+    List<minigolf.course.Brick> bricks = List.of();
 
     /** The course's fields that are not per node or per obstacle. */
     public record Properties(String name, Vec2 start, Hole hole, PhysicsSettings physics) {
@@ -105,7 +107,7 @@ public final class EditableCourse {
     public Course toCourse() {
         Properties p = properties;
         return new Course(Course.FORMAT, p.name(), grid(), bounds, p.physics(), p.start(), p.hole(), zones, obstacles,
-                pushZones, magnets, teleports, world, extraHoles);
+                pushZones, magnets, teleports, world, extraHoles, bricks);
     }
 
     public int columns() {

@@ -7,6 +7,7 @@ import minigolf.bot.NoiseModel;
 import minigolf.bot.Shot;
 import minigolf.bot.noise.PlayedStroke;
 import minigolf.bot.noise.ShotNoise;
+import minigolf.physics.CourseState;
 import minigolf.physics.Outcome;
 import minigolf.physics.ShotResult;
 import minigolf.physics.SimulationSettings;
@@ -26,7 +27,8 @@ import minigolf.physics.World;
  * strokes, then the lower seat. Holed
  * players are skipped. A player whose hits plus penalties reach the stroke limit without holing
  * picks up and scores the limit plus one. The game is over when nobody is still playing. Balls
- * do not collide with each other.
+ * do not collide with each other. What a stroke changes on the course (breakable bricks) lasts
+ * for the strokes after it, for every player, until the hole ends ({@link #world()}).
  */
 public final class Game {
     public static final int MAX_PLAYERS = 4;
@@ -35,7 +37,9 @@ public final class Game {
     /** Distances to the hole closer than this count as equal for the turn order. */
     public static final double TIE_DISTANCE = 0.001;
 
-    private final World world;
+    /** The hole as it starts (every brick standing) and as the strokes so far have left it. */
+    private final World startWorld;
+    private World world;
     private final SimulationSettings settings;
     private final List<Player> players;
     private final int strokeLimit;
@@ -84,7 +88,9 @@ public final class Game {
         if (strokeLimit < 1 || strokeLimit > MAX_STROKE_LIMIT) {
             throw new IllegalArgumentException("the stroke limit must be 1 to " + MAX_STROKE_LIMIT + ", got " + strokeLimit);
         }
-        this.world = world;
+        // Every game starts its hole afresh: the bricks as the course file gives them.
+        this.startWorld = world.withState(CourseState.initial(world.course()));
+        this.world = startWorld;
         this.settings = settings;
         this.players = List.copyOf(players);
         this.strokeLimit = strokeLimit;
@@ -107,6 +113,7 @@ public final class Game {
         game.states.clear();
         game.states.addAll(saved.states());
         game.history.addAll(saved.history());
+        game.world = courseAfter(game.startWorld, saved.settings(), saved.history());
         game.clock = saved.clock();
         if (saved.pendingShot() != null) {
             int who = game.currentPlayer();
@@ -115,6 +122,21 @@ public final class Game {
             game.startShot(p.vx(), p.vy(), p.vz(), null);
         }
         return game;
+    }
+
+    /**
+     * The hole as {@code history} leaves it: its strokes replayed in order, each from the state the
+     * one before left (the engine is deterministic, so this is the state play reached; a save or a
+     * server's event need not carry it). Nothing is simulated on a course without bricks.
+     */
+    static World courseAfter(World start, SimulationSettings settings, List<ShotRecord> history) {
+        if (start.course().bricks().isEmpty()) return start;
+        World w = start;
+        for (ShotRecord r : history) {
+            w = w.withState(new Stroke(w, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), null, false)
+                    .run().state());
+        }
+        return w;
     }
 
     /** Everything needed to resume this game exactly. A stroke in flight is saved as its start and velocity. */
@@ -170,8 +192,22 @@ public final class Game {
         return botSeed;
     }
 
+    /**
+     * The course as the strokes so far have left it (the bricks still standing): what the next
+     * stroke is played on, what bots plan on and what is drawn.
+     */
     public World world() {
         return world;
+    }
+
+    /** The hole as it started, every brick standing: what a replay of its strokes starts from. */
+    public World startWorld() {
+        return startWorld;
+    }
+
+    /** The bricks left standing (the state of {@link #world()}). */
+    public CourseState courseState() {
+        return world.state();
     }
 
     public SimulationSettings settings() {
@@ -335,6 +371,7 @@ public final class Game {
         ShotRecord record = new ShotRecord(strokePlayer, strokePlayed.x(), strokePlayed.y(), v.vx(), v.vy(), v.vz(),
                 r.outcome(), r.endX(), r.endY(), clock);
         history.add(record);
+        world = world.withState(r.state());
         clock = stroke.clock();
         stroke = null;
         strokePlayer = -1;

@@ -12,23 +12,28 @@ import minigolf.physics.World;
  * A hole played again from its shot history: every stroke starts where it started in play with the
  * velocity it was hit with, on the same course with the same integrator and step. The engine is
  * deterministic, so each replayed stroke ends exactly (to the bit) where it ended in play;
- * {@link #matchesPlay()} checks that.
+ * {@link #matchesPlay()} checks that. What strokes change on the course (bricks) is rebuilt the
+ * same way: each stroke is played on the course as the ones before it left it.
  */
 public final class HoleReplay {
     private final World world;
     private final SimulationSettings settings;
     private final List<ShotRecord> shots;
     private int next;
+    /** The course as the strokes handed out so far leave it (bricks broken), for the next one. */
+    private World now;
+    private Stroke last;
 
     public HoleReplay(World world, SimulationSettings settings, List<ShotRecord> shots) {
         this.world = world;
         this.settings = settings;
         this.shots = List.copyOf(shots);
+        this.now = world;
     }
 
     /** The replay of a game's hole so far. */
     public static HoleReplay of(Game game) {
-        return new HoleReplay(game.world(), game.settings(), game.history());
+        return new HoleReplay(game.startWorld(), game.settings(), game.history());
     }
 
     /** The course the hole was played on. */
@@ -52,14 +57,23 @@ public final class HoleReplay {
     /** The next stroke, ready to be stepped (or run). */
     public Stroke nextStroke(TrajectoryListener listener) {
         ShotRecord r = shots.get(next++);
-        return new Stroke(world, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), listener, false);
+        if (last != null) now = now.withState(last.run().state());
+        last = new Stroke(now, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), listener, false);
+        return last;
+    }
+
+    /** The course as the replay stands: the state the next stroke is played on (after the last one handed out ends). */
+    public World courseNow() {
+        return last == null ? now : now.withState(last.isFinished() ? last.result().state() : last.state());
     }
 
     /** Replays every stroke to its end; true if each ends with the outcome and at the very point recorded in play. */
     public boolean matchesPlay() {
+        World w = world;
         for (ShotRecord r : shots) {
-            ShotResult res = new Stroke(world, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), null, false).run();
+            ShotResult res = new Stroke(w, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), null, false).run();
             if (!matches(r, res)) return false;
+            w = w.withState(res.state());
         }
         return true;
     }

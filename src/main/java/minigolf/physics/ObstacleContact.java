@@ -25,10 +25,13 @@ final class ObstacleContact {
     private final double hopSpeed;
     private final Bounce bounce;
     private final double gravity;
+    /** The bricks' hits this stroke; null without bricks. */
+    private final BrickHits bricks;
 
     ObstacleContact(BallState ball, StrokeReports reports, Hit hit, RestRule rest, Leaning lean, double hopSpeed,
-                    double maxSpeed, double gravity) {
+                    double maxSpeed, double gravity, BrickHits bricks) {
         this.gravity = gravity;
+        this.bricks = bricks;
         this.bounce = new Bounce(maxSpeed);
         this.ball = ball;
         this.reports = reports;
@@ -48,6 +51,7 @@ final class ObstacleContact {
         // A new heading: the rest rule's decision about a turn ahead was for the old one.
         rest.forget();
         if (hit.moving && caught()) return;
+        if (hit.brick >= 0) bricks.hit(hit.brick);
         double wz = b.hx * b.vx + b.hy * b.vy;
         double before = Math.sqrt(b.vx * b.vx + b.vy * b.vy + wz * wz);
         bounce.off(b.vx, b.vy, wz, hit.nx, hit.ny, hit.nz, hit.restitution, hit.ux, hit.uy, hit.uz);
@@ -128,6 +132,7 @@ final class ObstacleContact {
     void inFlight() {
         BallState b = ball;
         if (hit.moving && caught()) return;
+        if (hit.brick >= 0) bricks.hit(hit.brick);
         double before = Math.sqrt(b.vx * b.vx + b.vy * b.vy + b.vz * b.vz);
         double vn = b.vx * hit.nx + b.vy * hit.ny + b.vz * hit.nz;
         bounce.off(b.vx, b.vy, b.vz, hit.nx, hit.ny, hit.nz, hit.restitution, hit.ux, hit.uy, hit.uz);

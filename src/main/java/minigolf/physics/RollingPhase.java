@@ -394,7 +394,7 @@ final class RollingPhase {
             double endSpeed = Math.sqrt(r.nvx * r.nvx + r.nvy * r.nvy);
             if (!(r.stageSteepest < b.muK * b.muK && r.nvx * b.vx + r.nvy * b.vy > 0 && endSpeed > 0.5 * braking * dt)) return false;
         }
-        return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
+        return takeOff.gentleAlong(r.stageBend, tau) || !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
 
     /** Whether the last long step clearOfHazards refused had a stage in water or out of the bounds. */
@@ -446,7 +446,9 @@ final class RollingPhase {
     private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         BallState b = ball;
         RollingTrial tr = trial;
-        if (kind == RollingStep.Kind.INTEGRATOR && takesOffWithin(tau, a1x, a1y)) {
+        // On smooth ground a step whose stages saw the ground bend away gently stays on it (TakeOff.staysDown).
+        boolean staysDown = smooth && tr.holds(tau) && takeOff.staysDown(tr.heldBend, tau);
+        if (kind == RollingStep.Kind.INTEGRATOR && !staysDown && takesOffWithin(tau, a1x, a1y)) {
             // The ground falls away faster than gravity can pull the ball down: it flies this step,
             // from where the ground begins to curve away too fast (found by bisection). Decided
             // before water and the bounds, which a flying ball only meets where it comes down.

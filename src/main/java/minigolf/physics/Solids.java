@@ -16,11 +16,16 @@ final class Solids {
     private final Gates gates;
     private final MovingObstacles moving;
     private final MovingObstacles.Sweeper sweeper;
+    /** The breakable bricks (null when the course has none) and what is left of them this stroke. */
+    private final CollisionScene bricks;
+    final BrickHits brickHits;
     private final Hit other = new Hit();
     private final double[] scratch = new double[3];
 
-    private Solids(CollisionScene scene, Gates gates, MovingObstacles moving) {
+    private Solids(CollisionScene scene, Gates gates, MovingObstacles moving, CollisionScene bricks, int brickCount) {
         this.scene = scene;
+        this.bricks = bricks;
+        this.brickHits = bricks == null ? null : new BrickHits(brickCount);
         this.gates = gates;
         this.moving = moving;
         this.sweeper = moving == null ? null : moving.sweeper();
@@ -28,13 +33,16 @@ final class Solids {
 
     /** The world's solids, or null when it has none. */
     static Solids of(World world) {
-        if (world.obstacles() == null && world.gates() == null && world.moving() == null) return null;
-        return new Solids(world.obstacles(), world.gates(), world.moving());
+        if (world.obstacles() == null && world.gates() == null && world.moving() == null && world.bricks() == null) {
+            return null;
+        }
+        return new Solids(world.obstacles(), world.gates(), world.moving(), world.bricks(), world.course().bricks().size());
     }
 
     /** Whether anything still (an obstacle or a gate) is listed near the rectangle of centre positions. */
     boolean anyStillNear(double minX, double minY, double maxX, double maxY) {
         return (scene != null && scene.anyNear(minX, minY, maxX, maxY))
+                || (bricks != null && bricks.anyNear(minX, minY, maxX, maxY))
                 || (gates != null && gates.anyNear(minX, minY, maxX, maxY));
     }
 
@@ -51,6 +59,7 @@ final class Solids {
     /** As {@link CollisionScene#anyShapeNear}, with gates and moving obstacles. */
     boolean anyShapeNear(double minX, double minY, double maxX, double maxY) {
         return (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY))
+                || (bricks != null && bricks.anyShapeNear(minX, minY, maxX, maxY))
                 || (gates != null && gates.anyNear(minX, minY, maxX, maxY))
                 || (moving != null && moving.anyNear(minX, minY, maxX, maxY));
     }
@@ -65,7 +74,8 @@ final class Solids {
         double minY = Math.min(y0, y1) - margin, maxY = Math.max(y0, y1) + margin;
         return (gates != null && gates.anyNear(minX, minY, maxX, maxY))
                 || (moving != null && moving.anyNear(minX, minY, maxX, maxY))
-                || (scene != null && scene.anyShapeNearPath(x0, y0, x1, y1, margin));
+                || (scene != null && scene.anyShapeNearPath(x0, y0, x1, y1, margin))
+                || (bricks != null && bricks.anyShapeNearPath(x0, y0, x1, y1, margin));
     }
 
     /**
@@ -90,6 +100,12 @@ final class Solids {
     boolean sweepStill(double x0, double y0, double z0, double x1, double y1, double z1, Hit hit) {
         double best = Double.POSITIVE_INFINITY;
         if (scene != null && scene.sweep(x0, y0, z0, x1, y1, z1, hit, scratch)) best = hit.fraction;
+        if (bricks != null && bricks.sweep(x0, y0, z0, x1, y1, z1, other, scratch, brickHits.gone)
+                && other.fraction < best) {
+            best = other.fraction;
+            hit.set(other);
+            hit.brick = other.obstacle;
+        }
         if (gates != null) {
             double f = gates.sweep(x0, y0, z0, x1, y1, z1, Math.min(best, 1.0 + 1e-12), other, scratch);
             if (f < best) {

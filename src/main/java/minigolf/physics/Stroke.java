@@ -58,6 +58,9 @@ public final class Stroke {
     private boolean framed;
     private long frames;
     private boolean shownEnd;
+    /** The bricks' hits this stroke (null without bricks) and the state they start from: the world's. */
+    private final BrickHits bricks;
+    private final CourseState startState;
     /** Whether a {@link Simulator} is running this stroke now (it reuses one per course). */
     boolean running;
 
@@ -130,8 +133,10 @@ public final class Stroke {
         this.paths = paths;
         Leaning lean = scene == null ? null : new Leaning(scene, terrain, steps, ballRadius, gravity, complete);
         HoleRules hole = new HoleRules(ball, reports, terrain, world.holes());
+        this.bricks = scene == null ? null : scene.brickHits;
+        this.startState = world.state();
         ObstacleContact contact = new ObstacleContact(ball, reports, paths.hit, rest, lean, hopSpeed, physics.maxSpeed(),
-                gravity);
+                gravity, bricks);
         this.steps = steps;
         this.control = control;
         this.trial = trial;
@@ -185,6 +190,7 @@ public final class Stroke {
         if (control != null) control.reset();
         trial.reset();
         rest.forget();
+        if (bricks != null) bricks.start(startState);
 
         ball.sampleGround();
         ball.z = ball.h;
@@ -217,7 +223,13 @@ public final class Stroke {
     /** The result; only valid once {@link #isFinished()}. */
     public ShotResult result() {
         if (!isFinished()) throw new IllegalStateException("the stroke has not finished");
-        return new ShotResult(ball.outcome, ball.endX, ball.endY, ball.t, ball.steps, ball.endZ, reports.events());
+        return new ShotResult(ball.outcome, ball.endX, ball.endY, ball.t, ball.steps, ball.endZ, reports.events(),
+                bricks == null ? startState : bricks.state());
+    }
+
+    /** The course as the stroke has left it so far (the bricks standing): the world's state until a brick breaks. */
+    public CourseState state() {
+        return bricks == null ? startState : bricks.state();
     }
 
     // The ball at the last frame shown (after run(): at its end).

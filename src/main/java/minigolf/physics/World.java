@@ -32,6 +32,10 @@ public final class World {
     private final minigolf.collision.MovingObstacles moving;
     /** The teleports; null when the course has none. */
     private final TeleportField teleports;
+    /** Every breakable brick as collision geometry (its obstacle index: the brick's); null when the course has none. */
+    private final CollisionScene bricks;
+    /** The bricks left standing when a stroke on this world starts. */
+    private final CourseState state;
 
     public World(Course course, Terrain terrain) {
         this.course = course;
@@ -47,6 +51,49 @@ public final class World {
         this.teleports = course.teleports().isEmpty() ? null : new TeleportField(course.teleports());
         this.obstacles = course.obstacles().stream().noneMatch(minigolf.collision.ObstacleGeometry::isStillSolid) ? null
                 : CollisionScene.build(course.obstacles(), terrain::height, course.bounds(), course.physics().ballRadius());
+        this.bricks = course.bricks().isEmpty() ? null : CollisionScene.build(
+                course.bricks().stream().map(minigolf.course.Brick::box).map(b -> (minigolf.course.Obstacle) b).toList(),
+                terrain::height, course.bounds(), radius);
+        this.state = CourseState.initial(course);
+    }
+
+    /** The same world in another state: everything shared but the bricks left standing. */
+    private World(World base, CourseState state) {
+        this.course = base.course;
+        this.holes = base.holes;
+        this.terrain = base.terrain;
+        this.friction = base.friction;
+        this.playArea = base.playArea;
+        this.forces = base.forces;
+        this.gates = base.gates;
+        this.moving = base.moving;
+        this.teleports = base.teleports;
+        this.obstacles = base.obstacles;
+        this.bricks = base.bricks;
+        this.state = state;
+    }
+
+    /**
+     * This course with the bricks as {@code newState} leaves them: strokes on it start from that state,
+     * and bots plan on it. The same world when the state is this one's.
+     */
+    public World withState(CourseState newState) {
+        if (newState.equals(state)) return this;
+        if (newState.bricks() != course.bricks().size()) {
+            throw new IllegalArgumentException("the course has " + course.bricks().size() + " bricks, the state "
+                    + newState.bricks());
+        }
+        return new World(this, newState);
+    }
+
+    /** The bricks left standing when a stroke on this world starts ({@link CourseState#initial} for a loaded course). */
+    public CourseState state() {
+        return state;
+    }
+
+    /** Every brick as collision geometry, standing or not (the stroke skips broken ones); null without bricks. */
+    public CollisionScene bricks() {
+        return bricks;
     }
 
     /** Builds the terrain from the course's own terrain description. */
@@ -70,7 +117,7 @@ public final class World {
 
     /** The same course under another physics model. */
     public World withModel(PhysicsModel model) {
-        return new World(course.withPhysics(course.physics().withModel(model)), terrain);
+        return new World(course.withPhysics(course.physics().withModel(model)), terrain).withState(state);
     }
 
     public Course course() {

@@ -117,7 +117,8 @@ public final class SceneRenderer implements AutoCloseable {
             t = new TerrainPass(course, surface, mode, quality.vertexLit(), quality.terrainSpacing());
             // Rounded rails cost a software rasteriser about four times the triangles: square ones there.
             ObstacleMeshes.Style style = ObstacleMeshes.Style.of(theme);
-            ob = new ObstaclesPass(course.obstacles(), surface::height, quality.vertexLit(), quality.vertexLit() ? style.squareWalls() : style,
+            // The bricks as the hole starts, every one standing (the game shows what strokes broke: setObstacles).
+            ob = new ObstaclesPass(course.obstaclesWithBricks(i -> true), surface::height, quality.vertexLit(), quality.vertexLit() ? style.squareWalls() : style,
                     TerrainMesh.skirtBase(t.minHeight(), course.bounds()));
             el = new ElementsPass(course, surface::height, quality.vertexLit());
             o = new ObjectsPass(course, surface, quality.vertexLit());

@@ -105,7 +105,9 @@ class TrackConverterTest {
         Tracks.set(codes, 18, 5, TileMap.elementTile(0, PixelMap.ILLUSION, PixelMap.ILLUSION));
         TrackConverter.Converted t = convert(codes);
         List<String> files = models(t.course()).stream().map(Obstacle.Model::file).toList();
-        assertEquals(List.of("block.obj", "sticky.obj", "bouncy.obj", "movable.obj", "brick.obj"), files);
+        assertEquals(List.of("block.obj", "sticky.obj", "bouncy.obj", "movable.obj"), files);
+        // The brick is a breakable brick, not a wall (ClassicBricksTest).
+        assertEquals(1, t.course().bricks().size());
         assertTrue(t.files().containsKey("walls.mtl"));
         assertTrue(t.notes().stream().anyMatch(n -> n.startsWith("illusion")), t.notes().toString());
     }

@@ -166,7 +166,7 @@ class CourseLoaderTest {
     void unknownFieldListsTheKnownOnes() {
         assertEquals("courses/x.json: physics.frction: unknown field (known: gravity, kineticFriction, staticFriction, maxSpeed, model, ballRadius, ballMass, dragCoefficient, airDensity, groundRestitution, puttsOnly)",
                 error(edit("\"gravity\": 9.81,", "\"gravity\": 9.81, \"frction\": 0.1,")));
-        assertEquals("courses/x.json: colour: unknown field (known: format, name, world, terrain, bounds, physics, start, hole, extraHoles, zones, obstacles, pushZones, magnets, teleports)",
+        assertEquals("courses/x.json: colour: unknown field (known: format, name, world, terrain, bounds, physics, start, hole, extraHoles, zones, obstacles, pushZones, magnets, teleports, bricks)",
                 error(edit("\"name\": \"Lake\",", "\"name\": \"Lake\", \"colour\": \"green\",")));
     }
 

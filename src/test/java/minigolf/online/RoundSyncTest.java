@@ -52,6 +52,27 @@ class RoundSyncTest {
     }
 
     @Test
+    void bricksBrokenOnTheServerAreBrokenOnTheClientWithoutTheEventSayingSo() throws Exception {
+        World lane = World.of(minigolf.physics.BrickPhysicsTest.lane(2));
+        Round round = new Round("Bricks", List.of(new Round.Hole("lane.json", 3, lane), new Round.Hole("lane.json", 3, lane)), "test");
+        List<Player> players = List.of(Player.human("Ann"), Player.human("Bob"));
+        RoundGame server = new RoundGame(round, SimulationSettings.DEFAULT, players, 6);
+        RoundGame client = SavedRounds.parse(SavedRounds.toJson(server), "start");
+        long seq = 0;
+        // Ann and Bob each putt into the 2-hit brick: after the second stroke it is gone for both.
+        int[][] expected = {{1}, {0}, {0}};
+        for (int k = 0; k < 3; k++) {
+            int seat = server.game().currentPlayer();
+            ShotRecord r = server.game().play(3, 0);
+            RoomEvent e = new RoomEvent(++seq, 0, seat, r, server.game().player(seat), 0, server.game().clock());
+            client = RoundSync.apply(client, RoomEvent.parse(Json.parse(Json.write(e.toJson(-1))), 2));
+            assertEquals(List.of(expected[k][0]), List.of(server.game().courseState().hitsLeft(0)), "server, stroke " + k);
+            assertEquals(server.game().courseState(), client.game().courseState(), "client, stroke " + k);
+            assertEquals(server.game().player(seat), client.game().player(seat));
+        }
+    }
+
+    @Test
     void aPickUpScoresTheLimitPlusOneAndAnEventOnTheWrongHoleIsRefused() throws Exception {
         Round round = twoHoles();
         RoundGame rg = new RoundGame(round, SimulationSettings.DEFAULT, List.of(Player.human("Ann")), 5);

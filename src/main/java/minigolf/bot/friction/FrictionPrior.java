@@ -61,7 +61,7 @@ public final class FrictionPrior {
             terrain = new TerrainSpec.HeightGrid(g.origin(), g.spacing(), g.heights(), null, null, g.deleted());
         }
         Course hidden = new Course(c.format(), c.name(), terrain, c.bounds(), physics, c.start(), c.hole(), zones,
-                c.obstacles(), c.pushZones(), c.magnets(), c.teleports(), c.world(), c.extraHoles());
+                c.obstacles(), c.pushZones(), c.magnets(), c.teleports(), c.world(), c.extraHoles(), c.bricks());
         return new World(hidden, truth.terrain());
     }
 }

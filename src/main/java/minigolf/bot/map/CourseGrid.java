@@ -23,6 +23,8 @@ public final class CourseGrid {
     private final int cols, rows;
     private final boolean[] blocked;
     private final boolean[] tree;
+    /** Blocked by a standing breakable brick only: the distance field may lead through it, at a cost. */
+    private final boolean[] brick;
     /** Distance from each cell centre to the nearest blocked cell centre (chamfer estimate), metres. */
     private final double[] clearance;
     /** The same to the nearest lost cell (water, out of bounds): hazards, where obstacles only bounce. */
@@ -37,6 +39,7 @@ public final class CourseGrid {
         this.rows = Math.max(1, (int) Math.ceil(world.bounds().depth() / cell));
         this.blocked = new boolean[cols * rows];
         this.tree = new boolean[cols * rows];
+        this.brick = new boolean[cols * rows];
         boolean[] lost = new boolean[cols * rows];
         ObstacleFootprint footprint = ObstacleFootprint.of(world);
         // A cell is blocked when its centre is within the ball's radius of an obstacle, plus half a
@@ -60,6 +63,7 @@ public final class CourseGrid {
                 byte kind = footprint.kind(x, y, margin);
                 blocked[i] = kind != ObstacleFootprint.FREE;
                 tree[i] = kind == ObstacleFootprint.TREE;
+                brick[i] = kind == ObstacleFootprint.BRICK;
             }
         }
         clearance = chamfer(blocked);
@@ -218,6 +222,11 @@ public final class CourseGrid {
 
     public boolean blocked(int index) {
         return blocked[index];
+    }
+
+    /** Whether the cell is blocked by a standing breakable brick only (off the grid: no). */
+    public boolean brick(int c, int r) {
+        return c >= 0 && r >= 0 && c < cols && r < rows && brick[r * cols + c];
     }
 
     /** Whether the cell is blocked by a tree trunk only (not water, the edge, a wall, a box or a model). */

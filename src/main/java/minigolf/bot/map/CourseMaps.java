@@ -5,7 +5,7 @@ import minigolf.physics.World;
 
 /**
  * The grid and the distance field to the nearest hole of one world, built on first use and kept while a
- * bot plays that world (they depend on the course only, not on the ball).
+ * bot plays that world (they depend on the course and the bricks standing, not on the ball).
  */
 public final class CourseMaps {
     /** Whether the distance field weighs each metre by the ground's friction (see {@link DistanceField}). */
@@ -24,6 +24,11 @@ public final class CourseMaps {
 
     public void prepare(World w, CancellationToken token) {
         if (w == world) return;
+        // A brick hit but not broken changes the state, not the way: the maps stand.
+        if (world != null && w.course() == world.course() && sameBricksStanding(w, world)) {
+            world = w;
+            return;
+        }
         grid = CourseGrid.of(w, token);
         var holes = w.holes();
         double[] xs = new double[holes.size()], ys = new double[holes.size()];
@@ -33,6 +38,11 @@ public final class CourseMaps {
         }
         toHole = new DistanceField(grid, xs, ys, token, frictionAware);
         world = w;
+    }
+
+    private static boolean sameBricksStanding(World a, World b) {
+        for (int i = 0; i < a.state().bricks(); i++) if (a.state().standing(i) != b.state().standing(i)) return false;
+        return true;
     }
 
     public CourseGrid grid() {

@@ -16,6 +16,12 @@ public final class DistanceField {
     private static final double SQRT2 = Math.sqrt(2);
     public static final double SAFE_CLEARANCE = 0.5;
     public static final double NEAR_WATER_COST = 3;
+    /**
+     * A step into a cell that only a standing breakable brick blocks costs 1 + this times its length:
+     * crossing a classic brick tile (0.25 m and the ball's diameter, 0.47 m) costs about 5 m more,
+     * so the way leads through a brick where going round is longer than that (a guess, not tuned).
+     */
+    public static final double BRICK_COST = 10;
 
     private final CourseGrid grid;
     /** The one-way gates (null: none): a step against one is barred. */
@@ -84,7 +90,9 @@ public final class DistanceField {
                 for (int dc = -1; dc <= 1; dc++) {
                     if (dc == 0 && dr == 0) continue;
                     int nc = c + dc, nr = r + dr;
-                    if (grid.blocked(nc, nr)) continue;
+                    // A standing brick blocks the ball but can be broken: the way leads through it at a cost.
+                    boolean throughBrick = grid.brick(nc, nr);
+                    if (grid.blocked(nc, nr) && !throughBrick) continue;
                     boolean diagonal = dc != 0 && dr != 0;
                     if (diagonal && !grid.diagonalAllowed(c, r, dc, dr)) continue;
                     int j = grid.index(nc, nr);
@@ -93,6 +101,7 @@ public final class DistanceField {
                     double step = (diagonal ? SQRT2 : 1) * grid.cell() * (1 + NEAR_WATER_COST * nearWater);
                     // The step between two cells on the friction of both halves.
                     if (weight != null) step *= 0.5 * (weight[i] + weight[j]);
+                    if (throughBrick) step *= 1 + BRICK_COST;
                     if (push != null) {
                         // The ball goes from j to i: a push along that way pays part of the friction.
                         double ux = -dc / (diagonal ? SQRT2 : 1), uy = -dr / (diagonal ? SQRT2 : 1);

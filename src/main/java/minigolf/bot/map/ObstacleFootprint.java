@@ -16,10 +16,12 @@ import minigolf.terrain.Terrain;
  * their height range meets a rolling ball's, so a ball may roll under a raised box); trees are
  * circles (reported as {@link #TREE} for A*'s diagonal rule); models are their triangles
  * ({@link ObstacleGeometry}, as the physics places them) projected onto the ground, those that
- * reach from the ground up to the ball's top. Built once per world and cached.
+ * reach from the ground up to the ball's top; the breakable bricks standing in the world's state
+ * as boxes. Built once per world and cached.
  */
 public final class ObstacleFootprint {
-    public static final byte FREE = 0, SOLID = 1, TREE = 2;
+    /** {@link #BRICK}: only a standing breakable brick is in the way (the ball can break it). */
+    public static final byte FREE = 0, SOLID = 1, TREE = 2, BRICK = 3;
 
     private static final Map<World, ObstacleFootprint> CACHE = new WeakHashMap<>();
     private static final double BUCKET = 0.5;
@@ -31,6 +33,8 @@ public final class ObstacleFootprint {
     private final double minX, minY;
     private final int cols, rows;
     private final int[][] buckets;
+    /** Shapes from this index on are the standing bricks. */
+    private final int firstBrick;
 
     private static final int RECT = 0, CIRCLE = 1, TRIANGLE = 2;
 
@@ -38,6 +42,11 @@ public final class ObstacleFootprint {
         this.terrain = world.terrain();
         this.radius = world.physics().ballRadius();
         for (Obstacle o : world.course().obstacles()) add(o);
+        firstBrick = shapes.size();
+        // The bricks standing in this world's state are boxes; broken ones leave the way open.
+        for (int i = 0; i < world.state().bricks(); i++) {
+            if (world.state().standing(i)) add(world.course().bricks().get(i).box());
+        }
         minX = world.bounds().minX() - 1;
         minY = world.bounds().minY() - 1;
         cols = Math.max(1, (int) Math.ceil((world.bounds().width() + 2) / BUCKET));
@@ -108,6 +117,7 @@ public final class ObstacleFootprint {
         double reach = radius + extra;
         double ground = terrain.height(x, y);
         byte found = FREE;
+        boolean brick = false;
         for (int s : list) {
             double[] p = shapes.get(s);
             double d;
@@ -127,11 +137,15 @@ public final class ObstacleFootprint {
                 }
             }
             if (d <= reach) {
+                if (s >= firstBrick) {
+                    brick = true;
+                    continue;
+                }
                 if ((int) p[0] != CIRCLE) return SOLID;
                 found = TREE;
             }
         }
-        return found;
+        return found == FREE && brick ? BRICK : found;
     }
 
     /** Distance in the plane from (x, y) to the triangle (0 inside). */

@@ -337,8 +337,8 @@ public final class PlannerBot extends SearchBot {
             Hole h = c.hole();
             Course probe = new Course(c.format(), c.name(), c.terrain(), c.bounds(), c.physics(), c.start(),
                     new Hole(h.position(), h.radius(), HoleRule.REST, null), c.zones(), c.obstacles(), c.pushZones(),
-                    c.magnets(), c.teleports(), c.world(), rest);
-            probeWorld = new World(probe, world.terrain());
+                    c.magnets(), c.teleports(), c.world(), rest, c.bricks());
+            probeWorld = new World(probe, world.terrain()).withState(world.state());
             probeSource = world;
         }
         return sim.variant(probeWorld, true);

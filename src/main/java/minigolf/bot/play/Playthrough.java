@@ -109,8 +109,12 @@ public final class Playthrough {
         // The course clock: it starts at 0 and runs on through each stroke's wait and its own time.
         double clock = 0;
         Bot player = TimedBot.forWorld(bot, world);
+        // The course as the strokes so far left it (bricks broken): the bot plans on it, the stroke is played on it.
+        World now = world;
         while (played.size() < maxStrokes && !holed) {
             long before = counting.count();
+            botSim = botSim.inState(now.state());
+            if (game.world() != now) game = new Simulator(now, settings);
             botSim.setClock(clock);
             Shot intended = player.nextShot(new BotRequest(botSim, x, y, strokes, seeds.nextLong(), conditions.noise(), clock));
             intended = counting.limit(intended);
@@ -118,6 +122,7 @@ public final class Playthrough {
             Shot shot = stroke.shot().withWait(intended.waitSeconds());
             ShotResult result = CountingSimulator.play(game, clock, stroke.x(), stroke.y(), shot, null);
             clock += intended.waitSeconds() + result.time();
+            now = now.withState(result.state());
             if (estimator != null && estimator.observe(counting,
                     new FrictionEstimator.Observation(x, y, intended, result.endX(), result.endY()), result.outcome())) {
                 botSim = counting.variant(estimator.world(), true);
