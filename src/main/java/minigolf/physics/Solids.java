@@ -51,6 +51,11 @@ final class Solids {
         return anyStillNear(minX, minY, maxX, maxY) || (moving != null && moving.anyNear(minX, minY, maxX, maxY));
     }
 
+    /** Whether a moving obstacle may come within reach of the rectangle of centre positions. */
+    boolean anyMovingNear(double minX, double minY, double maxX, double maxY) {
+        return moving != null && moving.anyNear(minX, minY, maxX, maxY);
+    }
+
     /** As {@link CollisionScene#anyShapeNear}, with gates and moving obstacles. */
     boolean anyShapeNear(double minX, double minY, double maxX, double maxY) {
         return (scene != null && scene.anyShapeNear(minX, minY, maxX, maxY))

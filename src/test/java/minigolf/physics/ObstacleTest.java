@@ -39,6 +39,20 @@ class ObstacleTest {
     }
 
     @Test
+    void aBrakingBallMeetsTheFenceAtTheClosedFormsMoment() {
+        // Straight at the fence with friction: x(t) = 3 t - mu g t^2 / 2 reaches 1 - R at
+        // t = (3 - sqrt(9 - 2 mu g (1 - R))) / (mu g). The contact's time is found on the path's
+        // sixteenths (PathSweep), not as the chord's fraction (off by up to mu g tau^2 / 8 / v).
+        double braking = 0.1 * 9.81, v = Math.sqrt(9 - 2 * braking * (1 - R));
+        List<StrokeEvent> events = new ArrayList<>();
+        TestObstacles.stepUntil(shoot(fenced(0.7, 0.1), 0, 0, 3, 0, events), events, StrokeEvent.Type.COLLISION, 1);
+        StrokeEvent hit = events.get(0);
+        assertEquals(1 - R, hit.x(), 2e-7, "the ball's centre stops one radius (and the skin) before the fence");
+        assertEquals((3 - v) / braking, hit.t(), 1e-7);
+        assertEquals(v, hit.speedBefore(), 1e-6);
+    }
+
+    @Test
     void at45DegreesTheAngleAndTheSpeedComeOutExact() {
         double v = 3 / Math.sqrt(2);
         for (double e : new double[] {1.0, 0.7}) {
