@@ -5,6 +5,8 @@
 #ifdef TERRAIN_STRIPES
 #include "stripes.glsl"
 in float vStripes;
+#endif
+#ifdef TERRAIN_HAZE
 in float vHaze; // the stripes shade the ground's light, not the haze: mixed in here
 #endif
 
@@ -22,6 +24,8 @@ void main() {
     // obstacles several times their frame (docs/rendering.md); the high tier draws it.
 #ifdef TERRAIN_STRIPES
     color *= stripeFactor(vWorld.x, vStripes > 1.5 ? 0.0 : vStripes);
+#endif
+#ifdef TERRAIN_HAZE
     color = mix(color, uFogColor, vHaze);
 #endif
     fragColor = vec4(color, 1.0); // objects: hazed per vertex (object-vertexlit.vert)
