@@ -43,6 +43,11 @@ void main() {
     float haze = hazeAmount(length(uEye - world.xyz));
     vUnlit = mix(albedo * ambient, uFogColor, haze);
     vSunlit = (albedo * uSunColor * diffuse + uSunColor * specular * uSpecularStrength) * (1.0 - haze);
+#if !defined(SHADOW_MAP) && !defined(BALL_SHADOWS)
+    // Nothing shadows this draw (sunlit cells, faces turned from the sun, shadows off): the sunlight is
+    // added here, and the fragment stage interpolates three inputs fewer (vertexlit-fragment.glsl).
+    vUnlit += vSunlit;
+#endif
     vec4 p = uLightViewProjection * vec4(world.xyz + n * uShadowNormalOffset, 1.0);
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;
     vWorld = world.xyz;

@@ -35,6 +35,11 @@ void main() {
     float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;
     vUnlit = aColor.rgb * ambient;
     vSunlit = aColor.rgb * uSunColor * diffuse + uSunColor * specular * uSpecularStrength;
+#if !defined(SHADOW_MAP) && !defined(BALL_SHADOWS)
+    // Nothing shadows this draw (sunlit cells, faces turned from the sun, shadows off): the sunlight is
+    // added here, and the fragment stage interpolates three inputs fewer (vertexlit-fragment.glsl).
+    vUnlit += vSunlit;
+#endif
     vHaze = hazeAmount(length(uEye - aPosition));
     vec4 p = uLightViewProjection * vec4(aPosition + n * uShadowNormalOffset, 1.0);
     vShadowCoord = p.xyz / p.w * 0.5 + 0.5;

@@ -11,10 +11,13 @@ import java.util.Map;
  */
 final class LitShader implements AutoCloseable {
     private final String name;
+    /** Defines every variant gets (such as terrain-vertexlit's SKIRTS). */
+    private final String[] defines;
     private final Map<String, ShaderProgram> variants = new HashMap<>();
 
-    LitShader(String name) {
+    LitShader(String name, String... defines) {
         this.name = name;
+        this.defines = defines.clone();
         use(Variant.UNSHADOWED, 4); // fail at construction on a broken source, not mid-frame
     }
 
@@ -44,11 +47,14 @@ final class LitShader implements AutoCloseable {
         String key = v + "/" + taps;
         ShaderProgram program = variants.get(key);
         if (program == null) {
-            program = switch (v) {
-                case UNSHADOWED -> ShaderProgram.load(name);
-                case MAP -> ShaderProgram.load(name, "SHADOW_MAP", "SHADOW_TAPS " + taps);
-                case MAP_AND_BALLS -> ShaderProgram.load(name, "SHADOW_MAP", "SHADOW_TAPS " + taps, "BALL_SHADOWS");
+            String[] shadows = switch (v) {
+                case UNSHADOWED -> new String[0];
+                case MAP -> new String[]{"SHADOW_MAP", "SHADOW_TAPS " + taps};
+                case MAP_AND_BALLS -> new String[]{"SHADOW_MAP", "SHADOW_TAPS " + taps, "BALL_SHADOWS"};
             };
+            String[] all = java.util.Arrays.copyOf(defines, defines.length + shadows.length);
+            System.arraycopy(shadows, 0, all, defines.length, shadows.length);
+            program = ShaderProgram.load(name, all);
             variants.put(key, program);
         }
         program.use();

@@ -8,6 +8,8 @@ public final class TerrainPass implements RenderPass {
     private Course course;
     private Terrain terrain;
     private final LitShader shader;
+    /** The skirts' program: the software tier's skips the mowing stripes (their weight is 0 on the skirts). */
+    private final LitShader skirtShader;
     private TerrainMesh.ColorMode mode;
     private Mesh mesh;
     private double minHeight, maxHeight;
@@ -49,6 +51,7 @@ public final class TerrainPass implements RenderPass {
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing) {
         this.minSpacing = minSpacing;
         this.shader = new LitShader(vertexLit ? "terrain-vertexlit" : "terrain");
+        this.skirtShader = vertexLit ? new LitShader("terrain-vertexlit", "SKIRTS") : shader;
         this.vertexLit = vertexLit;
         this.course = course;
         this.terrain = terrain;
@@ -307,10 +310,12 @@ public final class TerrainPass implements RenderPass {
     /**
      * The skirts, their sides in order. With lighting per vertex (software tier) a side turned from the
      * sun has no sunlight at any vertex (diffuse and specular 0), so the shadow tap could only multiply
-     * zero: such sides are drawn without it, the same pixels for less work per pixel.
+     * zero: such sides are drawn without it, the same pixels for less work per pixel. Their program
+     * also skips the mowing stripes, whose factor is exactly 1 on the skirts (stripe weight 0).
      */
     private void drawSkirts(FrameContext frame) {
         boolean split = splitSkirts && vertexLit && LitShader.Variant.of(frame) != LitShader.Variant.UNSHADOWED;
+        LitShader skirts = splitSkirts ? skirtShader : shader;
         LitShader.Variant current = null;
         int runFirst = 0, runCount = 0;
         lastBacklitSides = 0;
@@ -320,7 +325,7 @@ public final class TerrainPass implements RenderPass {
             LitShader.Variant v = backlit ? LitShader.Variant.UNSHADOWED : LitShader.Variant.of(frame);
             if (v != current) {
                 if (runCount > 0) mesh.drawRange(runFirst, runCount);
-                use(frame, v);
+                use(skirts, frame, v);
                 current = v;
                 runFirst = side.first();
                 runCount = 0;
@@ -340,7 +345,7 @@ public final class TerrainPass implements RenderPass {
         return lastBacklitSides;
     }
 
-    /** Off: every skirt side with the frame's shadow variant, as before the split (tests compare the pictures). */
+    /** Off: every skirt side with the terrain's program and the frame's shadow variant, as before the split (tests compare the pictures). */
     void splitSkirts(boolean on) {
         splitSkirts = on;
     }
@@ -424,7 +429,11 @@ public final class TerrainPass implements RenderPass {
     }
 
     private ShaderProgram use(FrameContext frame, LitShader.Variant variant) {
-        ShaderProgram program = shader.use(frame, variant);
+        return use(shader, frame, variant);
+    }
+
+    private ShaderProgram use(LitShader lit, FrameContext frame, LitShader.Variant variant) {
+        ShaderProgram program = lit.use(frame, variant);
         program.set("uViewProjection", frame.viewProjection);
         program.set("uClipPlane", frame.clipPlane);
         program.set("uShininess", 24f);
@@ -438,5 +447,6 @@ public final class TerrainPass implements RenderPass {
     public void close() {
         if (mesh != null) mesh.close();
         shader.close();
+        if (skirtShader != shader) skirtShader.close();
     }
 }

@@ -10,8 +10,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The skirts' sides (TerrainMesh.skirtSides) are the skirts' index ranges with one outward normal each,
- * and the software tier's terrain draws the sides turned from the sun without the shadow tap: the
- * same pixels (needs an OpenGL context for the last test).
+ * and the software tier's terrain draws the sides turned from the sun without the shadow tap, and
+ * every side without the mowing stripes: the same pixels (needs an OpenGL context for the last test).
  */
 class SkirtSidesTest {
     static final int W = 480, H = 270;
