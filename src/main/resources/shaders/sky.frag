@@ -24,6 +24,7 @@ uniform vec2 uFade;          // as sky.vert's: far away the ground's detail fade
 #ifdef SEA_PIXEL
 in vec3 vSea;
 in vec3 vBeach;
+in float vFade;              // sky.vert's fade, per vertex (SIMPLE_SHORE)
 uniform vec4 uCourseRect;    // the course's bounds: min x, min y, max x, max y
 uniform float uShore;        // the shore's distance from the bounds (metres)
 #endif
@@ -41,10 +42,20 @@ void main() {
 #if defined(SEA_PIXEL) || defined(GROUND_DETAIL)
     // Where the ground is seen, the point of the ground plane under this pixel decides its detail and,
     // by the sea, whether it is grass, beach (with a line of foam at the water's edge) or sea.
+#ifdef SIMPLE_SHORE
+    // The software tier: where the ray meets the ground does not depend on dir's length, and the fade
+    // (only the foam's, here) changes slowly enough to come per vertex.
+    vec3 dir = vDir;
+#else
     vec3 dir = normalize(vDir);
+#endif
     if (dir.z < -1e-4 && uGround.y > 0.5 && uEye.z > uGround.x) {
         vec2 p = uEye.xy + dir.xy * ((uGround.x - uEye.z) / dir.z);
+#ifdef SIMPLE_SHORE
+        float fade = vFade;
+#else
         float fade = smoothstep(uFade.x, uFade.y, length(p - uEye.xy));
+#endif
         vec3 land = vSky;
 #ifdef GROUND_DETAIL
         vec3 detail = mottleAt(p) * materialAt(p * 0.7, uGroundLayer).rgb;
@@ -63,7 +74,19 @@ void main() {
         vec3 water = vSea;
 #endif
         vec3 ground = mix(mix(vBeach, land, grass), water, sea);
+#ifdef SIMPLE_SHORE
+        // The same line of foam from a few multiplies (llvmpipe pays for exp and sin on every pixel of the
+        // band's cells): sin by a parabola per half wave (within 0.06), exp(-t*t) by (1 - t*t/8)^8.
+        float phase = fract((uTime * 0.8 + d) * 0.15915494 + 0.5) - 0.5;
+        float swing = 8.0 * phase * (1.0 - 2.0 * abs(phase));
+        float t = (d - uShore - 0.25 - 0.15 * swing) * (1.0 / 0.22);
+        float bell = max(1.0 - 0.125 * t * t, 0.0);
+        bell *= bell;
+        bell *= bell;
+        float foam = bell * bell * 0.6 * (1.0 - fade);
+#else
         float foam = exp(-pow((d - uShore - 0.25 - 0.15 * sin(uTime * 0.8 + d)) / 0.22, 2.0)) * 0.6 * (1.0 - fade);
+#endif
         color = mix(ground, vec3(0.95, 0.97, 0.98), foam);
 #endif
     }

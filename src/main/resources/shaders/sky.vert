@@ -33,6 +33,7 @@ uniform vec4 uCourseRect;    // the course's bounds: min x, min y, max x, max y
 uniform float uShore;        // the shore's distance from the bounds (metres)
 out vec3 vSea;
 out vec3 vBeach;
+out float vFade;      // the ground's fade into the sky here (sky.frag's foam, SIMPLE_SHORE)
 #endif
 
 out vec3 vSky;        // gradient under the clouds
@@ -68,6 +69,7 @@ void main() {
 #ifdef SEA
     vSea = vSky;
     vBeach = vSky;
+    vFade = 1.0;
 #endif
     if (uGround.y > 0.5 && up < 0.0 && origin.z > uGround.x) {
         vec3 p = origin + dir * ((uGround.x - origin.z) / up);
@@ -81,6 +83,7 @@ void main() {
         sea += uSunColor * pow(max(dot(r, sun), 0.0), 40.0) * 0.35;
         vSea = mix(haze(sea, p), vSky, f);
         vBeach = mix(haze(shade(uBeachColor, vec3(0.0, 0.0, 1.0), p, 0.03, 8.0), p), vSky, f);
+        vFade = f;
 #ifndef SEA_PIXEL
         vec2 outside = max(max(uCourseRect.xy - p.xy, p.xy - uCourseRect.zw), 0.0);
         if (length(outside) > uShore) lit = haze(sea, p);

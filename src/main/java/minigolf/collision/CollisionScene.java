@@ -169,6 +169,11 @@ public final class CollisionScene {
         return proximity.anyShapeNearPath(x0, y0, x1, y1, margin);
     }
 
+    /** For tests: the path proximity's hull points, stored and listed by the runs. */
+    long[] hullPoints() {
+        return proximity.hullPoints();
+    }
+
     /**
      * How many shape entries a sweep from (x0, y0) to (x1, y1) visits: those listed in the grid cells
      * under its rectangle (a shape listed in two of them counts twice), before their boxes are tested.

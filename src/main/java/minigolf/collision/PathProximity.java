@@ -24,16 +24,32 @@ final class PathProximity {
         this.boxes = boxes;
         this.triangleCount = triangles.length / 12;
         int runs = grid.runStart.length - 1;
-        hullStart = new int[runs + 1];
-        double[] hull = new double[64];
+        hullStart = new int[runs];
+        hullSize = new byte[runs];
+        // Hulls cost time and memory at load: a budget of 4 points a triangle holds every run's hull
+        // on the bundled courses (about 1.6 a triangle) and for 2,500 boxes drawn tile by tile (4.2),
+        // but half of them for 2,500 models 100 m wide (7.6: each triangle listed in 7 cells); a run
+        // past it is tested shape by shape.
+        int budget = 4 * triangleCount + 10_000;
+        double[] hull = new double[2 * (budget + 3 * ShapeGrid.RUN_LENGTH)];
         int used = 0;
         double[] points = new double[2 * 3 * ShapeGrid.RUN_LENGTH];
+        int[] order = new int[3 * ShapeGrid.RUN_LENGTH], chain = new int[6 * ShapeGrid.RUN_LENGTH + 1];
+        // A long wall is listed in every cell along it with the same triangles: its run in each of
+        // those cells shares one hull, found through the last run that began with the same shape.
+        int[] lastRunOf = new int[triangleCount];
+        Arrays.fill(lastRunOf, -1);
         for (int q = 0; q < runs; q++) {
-            hullStart[q] = used;
             int first = grid.runStart[q], end = grid.runStart[q + 1];
-            // Runs of one obstacle: all triangles or a single cylinder; the budget keeps memory in
-            // proportion to the shapes (a run past it is tested shape by shape).
-            if (grid.cellItems[first] >= triangleCount || used > MAX_HULL_POINTS) continue;
+            // Runs of one obstacle: all triangles or a single cylinder.
+            if (grid.cellItems[first] >= triangleCount) continue;
+            int lead = grid.cellItems[first], same = lastRunOf[lead];
+            if (same >= 0 && sameItems(grid, same, q)) {
+                hullStart[q] = hullStart[same];
+                hullSize[q] = hullSize[same];
+                continue;
+            }
+            if (used > budget) continue;
             int n = 0;
             for (int k = first; k < end; k++) {
                 int o = 12 * grid.cellItems[k];
@@ -42,21 +58,40 @@ final class PathProximity {
                     points[n++] = triangles[o + 3 * v + 1];
                 }
             }
-            if (hull.length < 2 * used + n + 2) hull = Arrays.copyOf(hull, 2 * (2 * used + n + 2));
-            used += convexHull(points, n / 2, hull, 2 * used);
+            int size = convexHull(points, n / 2, hull, 2 * used, order, chain);
+            hullStart[q] = used;
+            hullSize[q] = (byte) size;
+            used += size;
+            lastRunOf[lead] = q;
         }
-        hullStart[runs] = used;
         hulls = Arrays.copyOf(hull, 2 * used);
     }
 
-    /** The budget of hull points (x, y each) over all runs (32 MB). */
-    private static final int MAX_HULL_POINTS = 2_000_000;
+    /** The hull points stored, and those the runs list (more where runs share a hull). */
+    long[] hullPoints() {
+        long listed = 0;
+        for (byte size : hullSize) listed += size;
+        return new long[] {hulls.length / 2, listed};
+    }
+
+    /** Whether runs a and b list the same shapes in the same order. */
+    private static boolean sameItems(ShapeGrid grid, int a, int b) {
+        int fromA = grid.runStart[a], fromB = grid.runStart[b], length = grid.runStart[b + 1] - fromB;
+        if (grid.runStart[a + 1] - fromA != length) return false;
+        for (int k = 0; k < length; k++) {
+            if (grid.cellItems[fromA + k] != grid.cellItems[fromB + k]) return false;
+        }
+        return true;
+    }
+
     /**
      * Each run of triangles' outlines seen from above as one convex polygon, counter-clockwise:
-     * run q's points are hulls[2 hullStart[q] .. 2 hullStart[q + 1]) (none for a cylinder's run).
-     * A wall's or a box's 12 triangles all lie in its footprint, so 1 test serves for 12.
+     * run q's hullSize[q] points (at most 3 {@link ShapeGrid#RUN_LENGTH}, so a byte holds it) are
+     * hulls[2 hullStart[q] ..) (none for a cylinder's run). A wall's or a box's 12 triangles all lie
+     * in its footprint, so 1 test serves for 12.
      */
     private final int[] hullStart;
+    private final byte[] hullSize;
     private final double[] hulls;
 
     /**
@@ -64,11 +99,35 @@ final class PathProximity {
      * offset at, without collinear points (Andrew's monotone chain); returns its number of points.
      */
     static int convexHull(double[] p, int n, double[] out, int at) {
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) order[i] = i;
-        Arrays.sort(order, (a, b) -> p[2 * a] != p[2 * b] ? Double.compare(p[2 * a], p[2 * b])
-                : Double.compare(p[2 * a + 1], p[2 * b + 1]));
-        int[] chain = new int[2 * n + 1];
+        return convexHull(p, n, out, at, new int[n], new int[2 * n + 1]);
+    }
+
+    /** As above, with scratch arrays of at least n (order) and 2n + 1 (chain) entries. */
+    private static int convexHull(double[] p, int n, double[] out, int at, int[] order, int[] chain) {
+        // Akl-Toussaint: a point strictly inside the quadrilateral of the leftmost, lowest,
+        // rightmost and highest points is no corner of the hull; a model's run drops most of its 48.
+        int left = 0, low = 0, right = 0, high = 0;
+        for (int i = 1; i < n; i++) {
+            if (after(p, left, i)) left = i;
+            if (after(p, i, right)) right = i;
+            if (p[2 * i + 1] < p[2 * low + 1]) low = i;
+            if (p[2 * i + 1] > p[2 * high + 1]) high = i;
+        }
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            boolean inside = cross(p, left, low, i) > 0 && cross(p, low, right, i) > 0
+                    && cross(p, right, high, i) > 0 && cross(p, high, left, i) > 0;
+            if (inside) continue;
+            // Insertion sort by x, then y (a run has at most 48 points; no boxing), each point once:
+            // a box's 36 corners of faces are its 4 corners.
+            int k = m;
+            while (k > 0 && after(p, order[k - 1], i)) k--;
+            if (k > 0 && p[2 * order[k - 1]] == p[2 * i] && p[2 * order[k - 1] + 1] == p[2 * i + 1]) continue;
+            System.arraycopy(order, k, order, k + 1, m - k);
+            order[k] = i;
+            m++;
+        }
+        n = m;
         int h = 0;
         for (int r = 0; r < n; r++) {
             int i = order[r];
@@ -89,6 +148,11 @@ final class PathProximity {
             out[at + 2 * k + 1] = p[2 * chain[k] + 1];
         }
         return h;
+    }
+
+    /** Whether point a of p sorts after point b: by x, then y (equal points keep their order). */
+    private static boolean after(double[] p, int a, int b) {
+        return p[2 * a] != p[2 * b] ? p[2 * a] > p[2 * b] : p[2 * a + 1] > p[2 * b + 1];
     }
 
     /** The z of (b - a) x (c - a) for points a, b, c of p. */
@@ -166,9 +230,10 @@ final class PathProximity {
                 for (int q = cellRuns[c], last = cellRuns[c + 1]; q < last; q++) {
                     int rb = 6 * q;
                     if (runBox[rb] > hiX || runBox[rb + 3] < loX || runBox[rb + 1] > hiY || runBox[rb + 4] < loY) continue;
-                    if (outlines && hullStart[q] < hullStart[q + 1]) {
+                    if (outlines && hullSize[q] > 0) {
                         // A run of triangles: their outlines' hull decides for all of them at once.
-                        if (hullNear(hullStart[q], hullStart[q + 1], mx, my, ux, uy, along, reach)) return true;
+                        int from = hullStart[q];
+                        if (hullNear(from, from + hullSize[q], mx, my, ux, uy, along, reach)) return true;
                         continue;
                     }
                     for (int k = runStart[q], end = runStart[q + 1]; k < end; k++) {

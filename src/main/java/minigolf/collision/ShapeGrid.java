@@ -20,6 +20,8 @@ final class ShapeGrid {
     static final int RUN_LENGTH = 16;
 
     final double originX, originY, cellSize;
+    /** 1 / cellSize: a cell's index is a product, not a quotient (the queries ask four a time). */
+    private final double inverseSize;
     final int columns, rows;
     /** Cell (i, j) lists shapes cellItems[cellStart[c] .. cellStart[c + 1]), c = j * columns + i. */
     final int[] cellStart, cellItems;
@@ -73,8 +75,8 @@ final class ShapeGrid {
                 int[] fill = pass == 1 ? Arrays.copyOf(counts, cells) : null;
                 if (pass == 1) items = new int[counts[cells]];
                 for (int s = 0; s < shapes; s++) {
-                    int i0 = cell(boxes[6 * s] - radius, minX, size, columns), i1 = cell(boxes[6 * s + 3] + radius, minX, size, columns);
-                    int j0 = cell(boxes[6 * s + 1] - radius, minY, size, rows), j1 = cell(boxes[6 * s + 4] + radius, minY, size, rows);
+                    int i0 = cell(boxes[6 * s] - radius, minX, 1 / size, columns), i1 = cell(boxes[6 * s + 3] + radius, minX, 1 / size, columns);
+                    int j0 = cell(boxes[6 * s + 1] - radius, minY, 1 / size, rows), j1 = cell(boxes[6 * s + 4] + radius, minY, 1 / size, rows);
                     for (int j = j0; j <= j1; j++) {
                         for (int i = i0; i <= i1; i++) {
                             int c = j * columns + i;
@@ -91,6 +93,7 @@ final class ShapeGrid {
             size *= 2;
         }
         this.cellSize = size;
+        this.inverseSize = 1 / size;
         this.originX = minX;
         this.originY = minY;
         this.columns = columns;
@@ -155,9 +158,12 @@ final class ShapeGrid {
         return f < x ? Math.nextUp(f) : f;
     }
 
-    private static int cell(double x, double origin, double size, int count) {
-        int i = (int) Math.floor((x - origin) / size);
-        return i < 0 ? 0 : Math.min(i, count - 1);
+    /**
+     * The cell of x along one axis: (x - origin) times the inverse cell size, floored and clamped.
+     * Listing and every query use this one function, so a shape is found wherever it is listed.
+     */
+    private static int cell(double x, double origin, double inverseSize, int count) {
+        return index((x - origin) * inverseSize, count);
     }
 
     /** How many (cell, shape) entries a grid of this cell size would hold, as the constructor fills it. */
@@ -182,14 +188,21 @@ final class ShapeGrid {
 
     /** The grid column of x, clamped to the grid. */
     int column(double x) {
-        int i = (int) Math.floor((x - originX) / cellSize);
-        return i < 0 ? 0 : Math.min(i, columns - 1);
+        return cell(x, originX, inverseSize, columns);
     }
 
     /** The grid row of y, clamped to the grid. */
     int row(double y) {
-        int j = (int) Math.floor((y - originY) / cellSize);
-        return j < 0 ? 0 : Math.min(j, rows - 1);
+        return cell(y, originY, inverseSize, rows);
+    }
+
+    /**
+     * floor(u) clamped to [0, count - 1], as (int) Math.floor(u) then clamped, without the call:
+     * below 0 (or NaN) it is 0, and above it truncation is floor.
+     */
+    private static int index(double u, int count) {
+        if (!(u >= 0)) return 0;
+        return Math.min((int) u, count - 1);
     }
 
     /** Whether any shape is listed in the cells under the rectangle. */

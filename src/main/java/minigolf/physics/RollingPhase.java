@@ -96,6 +96,7 @@ final class RollingPhase {
     void start(double clock, long strokeKey) {
         startClock = clock;
         waitUntil = Double.NaN;
+        lastClear = 0;
         if (teleporter != null) teleporter.reset(strokeKey);
         if (tail != null) tail.reset();
     }
@@ -141,6 +142,7 @@ final class RollingPhase {
             return 0;
         }
         waitUntil = Double.NaN;
+        clearMinX = Double.NaN;
         rolling.acceleration(b.hx, b.hy, b.fx, b.fy, b.muK, b.vx, b.vy);
         double a1x = rolling.ax, a1y = rolling.ay;
         if (speed > 0) {
@@ -268,6 +270,7 @@ final class RollingPhase {
     private double longestStep(double tau, double speed, double slope, double muK, boolean leaning,
                                double a1x, double a1y) {
         shallowStep = false;
+        clearMinX = Double.NaN;
         if (!smooth || leaning) return dt;
         // Braking at most g (|grad h| + mu_k), it must be left with the speed the rest rule's turn
         // horizon and a step of dt need (the ground may grow steeper than mu_k within the step).
@@ -279,27 +282,74 @@ final class RollingPhase {
         if (braking * tau >= spare) tau = spare / braking;
         if (!control.isLong(tau)) return dt;
         if (!(scene != null || zoned || captureRule || forces != null || teleporter != null)) return tau;
-        // The longest first, then halving down to 2 dt: each as long as nothing is within the
+        // The longest, then halving down to 2 dt: the longest of them with nothing within the
         // step's reach, the box round the straight path at the starting velocity, widened by
-        // what the acceleration (twice the start's) can bend the path away from it.
-        BallState b = ball;
-        double acceleration = Math.sqrt(a1x * a1x + a1y * a1y);
+        // what the acceleration (twice the start's) can bend the path away from it. The boxes
+        // are nested and a box inside one with nothing near has nothing near, so the search
+        // starts at the length the last step found (neighbouring steps find about the same) and
+        // moves up or down from there: the same length as asking from the longest down.
+        int n = 0;
         double length = tau;
+        levels[n++] = length;
         while (true) {
-            double bend = acceleration * length * length + PATH_MARGIN;
-            double ex = b.vx * length, ey = b.vy * length;
-            double minX = b.x + Math.min(0, ex) - bend, maxX = b.x + Math.max(0, ex) + bend;
-            double minY = b.y + Math.min(0, ey) - bend, maxY = b.y + Math.max(0, ey) + bend;
-            if (!elementNear(minX, minY, maxX, maxY) && !(captureRule && hole.near(minX, minY, maxX, maxY))) {
-                // No push zone's edge or magnet within reach: the force is the start's all over it.
-                rolling.uniformForce = forces != null;
-                return length;
-            }
             double shorter = 2 * dt;
             while (2 * shorter < length * (1 - 1e-9)) shorter *= 2;
-            if (!(shorter < length * (1 - 1e-9)) || !control.isLong(shorter)) return dt;
+            if (!(shorter < length * (1 - 1e-9)) || !control.isLong(shorter)) break;
             length = shorter;
+            levels[n++] = length;
         }
+        double acceleration = Math.sqrt(a1x * a1x + a1y * a1y);
+        int j = 0;
+        while (j < n - 1 && levels[j] > lastClear) j++;
+        if (clearWithin(levels[j], acceleration)) {
+            while (j > 0 && clearWithin(levels[j - 1], acceleration)) j--;
+        } else {
+            do {
+                j++;
+            } while (j < n && !clearWithin(levels[j], acceleration));
+            if (j == n) {
+                lastClear = 0;
+                return dt;
+            }
+        }
+        lastClear = levels[j];
+        // Its box, for clearOfHazards.
+        clearWithin(levels[j], acceleration, true);
+        // No push zone's edge or magnet within reach: the force is the start's all over it.
+        rolling.uniformForce = forces != null;
+        return levels[j];
+    }
+
+    /** The lengths longestStep tries, longest first (tau, then powers of two of 2 dt). */
+    private final double[] levels = new double[64];
+    /** The length the last longestStep found (0: none, dt); where the next one starts looking. */
+    private double lastClear;
+    /**
+     * The box round the path (centre positions) within which the last long step was found to
+     * have nothing near (empty where none was: NaN): a box of clearOfHazards inside it has
+     * nothing near either.
+     */
+    private double clearMinX = Double.NaN, clearMinY, clearMaxX, clearMaxY;
+
+    /** Whether nothing that needs a step's own length is within reach of a step of this length (longestStep). */
+    private boolean clearWithin(double length, double acceleration) {
+        return clearWithin(length, acceleration, false);
+    }
+
+    private boolean clearWithin(double length, double acceleration, boolean keep) {
+        BallState b = ball;
+        double bend = acceleration * length * length + PATH_MARGIN;
+        double ex = b.vx * length, ey = b.vy * length;
+        double minX = b.x + Math.min(0, ex) - bend, maxX = b.x + Math.max(0, ex) + bend;
+        double minY = b.y + Math.min(0, ey) - bend, maxY = b.y + Math.max(0, ey) + bend;
+        if (keep) {
+            clearMinX = minX;
+            clearMinY = minY;
+            clearMaxX = maxX;
+            clearMaxY = maxY;
+            return true;
+        }
+        return !elementNear(minX, minY, maxX, maxY) && !(captureRule && hole.near(minX, minY, maxX, maxY));
     }
 
     /**
@@ -333,14 +383,18 @@ final class RollingPhase {
         double bend = 4.0 / 27 * (Math.sqrt(e0x * e0x + e0y * e0y) + Math.sqrt(e1x * e1x + e1y * e1y)) + PATH_MARGIN;
         double minX = Math.min(Math.min(b.x, r.nx) - bend, r.stageMinX), maxX = Math.max(Math.max(b.x, r.nx) + bend, r.stageMaxX);
         double minY = Math.min(Math.min(b.y, r.ny) - bend, r.stageMinY), maxY = Math.max(Math.max(b.y, r.ny) + bend, r.stageMaxY);
-        if (elementNear(minX, minY, maxX, maxY) || (captureRule && hole.near(minX, minY, maxX, maxY))) return false;
+        // Inside the box longestStep found clear nothing is near (the answers are monotone in the box).
+        boolean inClearBox = minX >= clearMinX && minY >= clearMinY && maxX <= clearMaxX && maxY <= clearMaxY;
+        if (!inClearBox && (elementNear(minX, minY, maxX, maxY) || (captureRule && hole.near(minX, minY, maxX, maxY)))) {
+            return false;
+        }
         if (shallowStep) {
             // Still braking, short of its stop by at least half the dt of speed it was left with.
             double braking = gravity * (Math.sqrt(r.stageSteepest) + b.muK);
             double endSpeed = Math.sqrt(r.nvx * r.nvx + r.nvy * r.nvy);
             if (!(r.stageSteepest < b.muK * b.muK && r.nvx * b.vx + r.nvy * b.vy > 0 && endSpeed > 0.5 * braking * dt)) return false;
         }
-        return !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
+        return takeOff.gentleAlong(r.stageBend, tau) || !takeOff.near(b.x, b.y, b.vx, b.vy, b.h, b.hx, b.hy, tau);
     }
 
     /** Whether the last long step clearOfHazards refused had a stage in water or out of the bounds. */
@@ -392,7 +446,9 @@ final class RollingPhase {
     private void commitStep(double tau, RollingStep.Kind kind, double a1x, double a1y, double speed0) {
         BallState b = ball;
         RollingTrial tr = trial;
-        if (kind == RollingStep.Kind.INTEGRATOR && takesOffWithin(tau, a1x, a1y)) {
+        // On smooth ground a step whose stages saw the ground bend away gently stays on it (TakeOff.staysDown).
+        boolean staysDown = smooth && tr.holds(tau) && takeOff.staysDown(tr.heldBend, tau);
+        if (kind == RollingStep.Kind.INTEGRATOR && !staysDown && takesOffWithin(tau, a1x, a1y)) {
             // The ground falls away faster than gravity can pull the ball down: it flies this step,
             // from where the ground begins to curve away too fast (found by bisection). Decided
             // before water and the bounds, which a flying ball only meets where it comes down.

@@ -64,6 +64,13 @@ final class RollingStep {
     double stageLowest, stageMinX, stageMinY, stageMaxX, stageMaxY;
     /** The last long step's steepest ground among its stages (|grad h| squared; the pull gradient's with forces). */
     double stageSteepest;
+    /**
+     * The last RK4 or long step's ground bending away along the start's velocity v, as its stages saw it:
+     * the largest drop of the terrain's slope along v from the start's, grad h(start) . v -
+     * grad h(stage) . v, divided by the stage's fraction of the step (m/s); about tau v^T H v
+     * with the sign turned, where the ground curves away ({@link TakeOff#gentleAlong}).
+     */
+    double stageBend;
     /** The stages a long step sampled, in the order of their times (the last is its end): the fraction of the step, position, height. */
     static final double[] STAGE_TIMES = {0.2, 0.3, 0.8, 8.0 / 9, 1, 1};
     final double[] stageX = new double[STAGE_TIMES.length], stageY = new double[STAGE_TIMES.length],
@@ -151,12 +158,15 @@ final class RollingStep {
                 double half = 0.5 * tau;
                 double v2x = vx + half * a1x, v2y = vy + half * a1y;
                 accelerationAt(x + half * vx, y + half * vy, v2x, v2y);
+                double along = hx * vx + hy * vy, bend = 2 * (along - sample[1] * vx - sample[2] * vy);
                 double a2x = ax, a2y = ay;
                 double v3x = vx + half * a2x, v3y = vy + half * a2y;
                 accelerationAt(x + half * v2x, y + half * v2y, v3x, v3y);
+                bend = Math.max(bend, 2 * (along - sample[1] * vx - sample[2] * vy));
                 double a3x = ax, a3y = ay;
                 double v4x = vx + tau * a3x, v4y = vy + tau * a3y;
                 accelerationAt(x + tau * v3x, y + tau * v3y, v4x, v4y);
+                stageBend = Math.max(bend, along - sample[1] * vx - sample[2] * vy);
                 double sixth = tau / 6;
                 nx = x + sixth * (vx + 2 * v2x + 2 * v3x + v4x);
                 ny = y + sixth * (vy + 2 * v2y + 2 * v3y + v4y);
@@ -196,11 +206,13 @@ final class RollingStep {
         accelerationAt(p2x, p2y, v2x, v2y);
         keepStage(0, p2x, p2y);
         double a2x = ax, a2y = ay, lowest = sample[0], steepest = steepness();
+        double along = hx * vx + hy * vy, bend = (along - sample[1] * vx - sample[2] * vy) * 5;
         double minX = Math.min(x, p2x), maxX = Math.max(x, p2x), minY = Math.min(y, p2y), maxY = Math.max(y, p2y);
         double p3x = x + h * (A31 * vx + A32 * v2x), p3y = y + h * (A31 * vy + A32 * v2y);
         double v3x = vx + h * (A31 * a1x + A32 * a2x), v3y = vy + h * (A31 * a1y + A32 * a2y);
         accelerationAt(p3x, p3y, v3x, v3y);
         keepStage(1, p3x, p3y);
+        bend = Math.max(bend, (along - sample[1] * vx - sample[2] * vy) * (10.0 / 3));
         double a3x = ax, a3y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -208,6 +220,7 @@ final class RollingStep {
         double v4x = vx + h * (A41 * a1x + A42 * a2x + A43 * a3x), v4y = vy + h * (A41 * a1y + A42 * a2y + A43 * a3y);
         accelerationAt(p4x, p4y, v4x, v4y);
         keepStage(2, p4x, p4y);
+        bend = Math.max(bend, (along - sample[1] * vx - sample[2] * vy) * 1.25);
         double a4x = ax, a4y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -217,6 +230,7 @@ final class RollingStep {
         double v5y = vy + h * (A51 * a1y + A52 * a2y + A53 * a3y + A54 * a4y);
         accelerationAt(p5x, p5y, v5x, v5y);
         keepStage(3, p5x, p5y);
+        bend = Math.max(bend, (along - sample[1] * vx - sample[2] * vy) * (9.0 / 8));
         double a5x = ax, a5y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -226,6 +240,7 @@ final class RollingStep {
         double v6y = vy + h * (A61 * a1y + A62 * a2y + A63 * a3y + A64 * a4y + A65 * a5y);
         accelerationAt(p6x, p6y, v6x, v6y);
         keepStage(4, p6x, p6y);
+        bend = Math.max(bend, along - sample[1] * vx - sample[2] * vy);
         double a6x = ax, a6y = ay;
         lowest = Math.min(lowest, sample[0]);
         steepest = Math.max(steepest, steepness());
@@ -244,6 +259,7 @@ final class RollingStep {
         longError = Math.sqrt(ex * ex + ey * ey);
         stageLowest = lowest;
         stageSteepest = steepest;
+        stageBend = Math.max(bend, along - sample[1] * vx - sample[2] * vy);
         minX = Math.min(Math.min(minX, Math.min(p3x, p4x)), Math.min(Math.min(p5x, p6x), nx));
         maxX = Math.max(Math.max(maxX, Math.max(p3x, p4x)), Math.max(Math.max(p5x, p6x), nx));
         minY = Math.min(Math.min(minY, Math.min(p3y, p4y)), Math.min(Math.min(p5y, p6y), ny));
@@ -399,7 +415,18 @@ final class RollingStep {
      * a = -g grad h + f - friction; complete a = -g grad h/D + f - grad h (grad h . f)/D - friction.
      */
     void acceleration(double gx, double gy, double fx, double fy, double mu, double pvx, double pvy) {
+        // The common case (a moving ball, no force, not leaning) is kept small enough for the JIT
+        // to inline into every stage of a step.
         double speedSquared = pvx * pvx + pvy * pvy;
+        if (fx == 0 && fy == 0 && !leaning && speedSquared != 0) {
+            moving(gx, gy, gx, gy, complete ? 1 + gx * gx + gy * gy : 1, mu, pvx, pvy, speedSquared);
+        } else {
+            accelerationInGeneral(gx, gy, fx, fy, mu, pvx, pvy, speedSquared);
+        }
+    }
+
+    private void accelerationInGeneral(double gx, double gy, double fx, double fy, double mu, double pvx, double pvy,
+                                       double speedSquared) {
         double normalisation = complete ? 1 + gx * gx + gy * gy : 1;
         // Gravity's and the force's pull, as a gradient (px, py): a = -g p / D before friction.
         double px = gx, py = gy;
@@ -419,7 +446,22 @@ final class RollingStep {
             double factor = slope > mu ? -gravity * (1 - mu / slope) / normalisation : 0;
             ax = factor * px;
             ay = factor * py;
-        } else if (complete) {
+        } else {
+            moving(gx, gy, px, py, normalisation, mu, pvx, pvy, speedSquared);
+        }
+        if (leaning) {
+            double into = ax * leanX + ay * leanY;
+            if (into < 0) {
+                ax -= into * leanX;
+                ay -= into * leanY;
+            }
+        }
+    }
+
+    /** (ax, ay) for a moving ball on slope (gx, gy) under the pull gradient (px, py), D = normalisation. */
+    private void moving(double gx, double gy, double px, double py, double normalisation, double mu,
+                        double pvx, double pvy, double speedSquared) {
+        if (complete) {
             double along = gx * pvx + gy * pvy;
             double frictionScale = mu * gravity / (Math.sqrt(normalisation) * Math.sqrt(speedSquared + along * along));
             ax = -gravity * px / normalisation - frictionScale * pvx;
@@ -428,13 +470,6 @@ final class RollingStep {
             double frictionScale = mu * gravity / Math.sqrt(speedSquared);
             ax = -gravity * px - frictionScale * pvx;
             ay = -gravity * py - frictionScale * pvy;
-        }
-        if (leaning) {
-            double into = ax * leanX + ay * leanY;
-            if (into < 0) {
-                ax -= into * leanX;
-                ay -= into * leanY;
-            }
         }
     }
 }

@@ -16,6 +16,8 @@ final class RollingTrial {
     // Whether n* hold the controlled step, and its length.
     private boolean held;
     private double heldTau;
+    /** The held step's {@link RollingStep#stageBend}. */
+    double heldBend;
 
     RollingTrial(BallState ball, RollingStep rolling, StepControl control) {
         this.ball = ball;
@@ -58,6 +60,7 @@ final class RollingTrial {
         nvy = r.nvy;
         held = true;
         heldTau = length;
+        heldBend = r.stageBend;
         return length;
     }
 

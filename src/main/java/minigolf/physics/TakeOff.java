@@ -67,6 +67,31 @@ final class TakeOff {
         return tangent - ground >= 0.125 * gravity * tau * tau;
     }
 
+    /**
+     * Whether a long step's stages saw the ground along its path so gently curved that it is
+     * nowhere near {@link #near}'s measure, which then need not ask the terrain: bend is the
+     * step's {@link RollingStep#stageBend}, the largest drop of the slope along v per fraction of
+     * the step, so the ground falls below the tangent plane by about tau bend / 2 over the step
+     * (the second-order term, as near measures it at the straight step's end); it must stay under
+     * half of near's g tau^2 / 8. The ground between the stages is not seen, as near sees only
+     * one point; where the stages see a bend, near decides.
+     */
+    boolean gentleAlong(double bend, double tau) {
+        return bend < 0.125 * gravity * tau;
+    }
+
+    /**
+     * The same measure against {@link #takesOff}'s: a step (of any length, on smooth ground) whose
+     * stages saw the ground fall below the tangent plane by less than half of the g tau^2 / 4 from
+     * which takesOff looks further (tau bend / 2 &lt; g tau^2 / 8) does not take off, and takesOff
+     * need not ask the terrain. For RK4's steps the second stage lies on the straight step's
+     * midpoint, where the slope's change along v measures the height's departure at its end
+     * exactly on quadratic ground.
+     */
+    boolean staysDown(double bend, double tau) {
+        return bend < 0.25 * gravity * tau;
+    }
+
     /** The terrain's height at (qx, qy); the last point asked is remembered ({@link #near} and {@link #takesOff} ask the same). */
     private double heightAt(double qx, double qy) {
         if (qx != lastX || qy != lastY) {

@@ -35,6 +35,7 @@ public final class ObstaclesPass implements RenderPass {
     private double top = Double.NEGATIVE_INFINITY;
     private int solidTriangles, decorationTriangles;
     private List<ObstacleMeshes.Piece> solidPieces = List.of(), decorationPieces = List.of();
+    private MeshData solidData, decorationData;
     /** Whether some solid piece is a model that is not closed (drawn with every face even where faces are culled). */
     private boolean anyOpen;
     private final ObstacleMeshes.Style style;
@@ -44,6 +45,13 @@ public final class ObstaclesPass implements RenderPass {
     private final boolean lowModels;
     /** The twins found so far, for the course folder's models. */
     private ModelTwins.Cache twins = new ModelTwins.Cache(null);
+    /**
+     * The software tier's meshes reordered by {@link BacklitSplit} for this sun (null: not yet): the
+     * backlit parts are drawn without the shadow tap.
+     */
+    private org.joml.Vector3f splitFor;
+    private BacklitSplit.Result solidSplit, decorationSplit;
+    private boolean splitBacklit = true;
 
     public ObstaclesPass(List<Obstacle> obstacles, HeightProbe ground) {
         this(obstacles, ground, false);
@@ -97,6 +105,45 @@ public final class ObstaclesPass implements RenderPass {
         solidPieces = built.solidPieces();
         anyOpen = solidPieces.stream().anyMatch(ObstacleMeshes.Piece::open);
         decorationPieces = built.decorationPieces();
+        solidData = built.solid();
+        decorationData = built.decoration();
+        splitFor = null;
+        solidSplit = decorationSplit = null;
+    }
+
+    /**
+     * Reorders the meshes' indices for {@code toSun} if they are not yet (software tier): each piece's
+     * triangles the sun may light, then those it cannot ({@link BacklitSplit}).
+     */
+    private void splitFor(org.joml.Vector3f toSun) {
+        if (toSun.equals(splitFor)) return;
+        if (solid != null) {
+            solidSplit = BacklitSplit.split(solidData, solidPieces, toSun);
+            solid.updateIndices(0, solidSplit.indices());
+        }
+        if (decoration != null) {
+            decorationSplit = BacklitSplit.split(decorationData, decorationPieces, toSun);
+            decoration.updateIndices(0, decorationSplit.indices());
+        }
+        splitFor = new org.joml.Vector3f(toSun);
+    }
+
+    /** Off: the meshes in their built order, every piece with the frame's shadow variant, as before the split (tests compare the pictures). */
+    void splitBacklit(boolean on) {
+        if (on == splitBacklit) return;
+        splitBacklit = on;
+        if (solid != null) solid.updateIndices(0, solidData.indices());
+        if (decoration != null) decoration.updateIndices(0, decorationData.indices());
+        splitFor = null;
+        solidSplit = decorationSplit = null;
+    }
+
+    /** Triangles in the backlit parts (0 before the first software frame; tests). */
+    int backlitTriangles() {
+        int n = 0;
+        if (solidSplit != null) for (ObstacleMeshes.Piece p : solidSplit.backlit()) n += p.count() / 3;
+        if (decorationSplit != null) for (ObstacleMeshes.Piece p : decorationSplit.backlit()) n += p.count() / 3;
+        return n;
     }
 
     /** Where model obstacles' .mtl files are looked for before the classpath (the course file's folder); rebuilds. */
@@ -170,23 +217,39 @@ public final class ObstaclesPass implements RenderPass {
     /** The solid obstacles and the crowns whose pieces pass {@code drawn}; neighbouring ones as one run. */
     private void renderWhere(FrameContext frame, java.util.function.Predicate<ObstacleMeshes.Piece> drawn) {
         if (solid == null && decoration == null) return;
-        begin(frame);
-        if (solid != null) {
+        LitShader.Variant variant = LitShader.Variant.of(frame);
+        if (!lowModels || !splitBacklit) {
+            drawParts(frame, drawn, variant, solidPieces, decorationPieces);
+            return;
+        }
+        // Software tier: the parts the sun may light with the frame's shadows, the backlit parts without the tap.
+        splitFor(frame.sun.direction());
+        List<ObstacleMeshes.Piece> none = List.of();
+        drawParts(frame, drawn, variant, solidSplit == null ? none : solidSplit.lit(), decorationSplit == null ? none : decorationSplit.lit());
+        drawParts(frame, drawn, LitShader.Variant.UNSHADOWED, solidSplit == null ? none : solidSplit.backlit(),
+                decorationSplit == null ? none : decorationSplit.backlit());
+    }
+
+    private void drawParts(FrameContext frame, java.util.function.Predicate<ObstacleMeshes.Piece> drawn, LitShader.Variant variant,
+                           List<ObstacleMeshes.Piece> solidParts, List<ObstacleMeshes.Piece> decorationParts) {
+        if (solidParts.isEmpty() && decorationParts.isEmpty()) return;
+        begin(frame, variant);
+        if (solid != null && !solidParts.isEmpty()) {
             program.set("uSpecularStrength", 0.12f);
             program.set("uShininess", 16f);
             // Where the faces turned away are culled (software tier), models that are not closed keep them.
             boolean cull = anyOpen && glIsEnabled(GL_CULL_FACE);
-            drawRuns(solid, solidPieces, cull ? drawn.and(p -> !p.open()) : drawn);
+            drawRuns(solid, solidParts, cull ? drawn.and(p -> !p.open()) : drawn);
             if (cull) {
                 glDisable(GL_CULL_FACE);
-                drawRuns(solid, solidPieces, drawn.and(ObstacleMeshes.Piece::open));
+                drawRuns(solid, solidParts, drawn.and(ObstacleMeshes.Piece::open));
                 glEnable(GL_CULL_FACE);
             }
         }
-        if (decoration != null) {
+        if (decoration != null && !decorationParts.isEmpty()) {
             program.set("uSpecularStrength", 0.05f);
             program.set("uShininess", 8f);
-            drawRuns(decoration, decorationPieces, drawn);
+            drawRuns(decoration, decorationParts, drawn);
         }
     }
 
@@ -223,7 +286,11 @@ public final class ObstaclesPass implements RenderPass {
     }
 
     private void begin(FrameContext frame) {
-        program = shader.use(frame);
+        begin(frame, LitShader.Variant.of(frame));
+    }
+
+    private void begin(FrameContext frame, LitShader.Variant variant) {
+        program = shader.use(frame, variant);
         program.set("uViewProjection", frame.viewProjection);
         program.set("uClipPlane", frame.clipPlane);
         program.set("uModel", identity);

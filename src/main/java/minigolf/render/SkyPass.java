@@ -28,7 +28,7 @@ public final class SkyPass implements RenderPass {
     /** Cells whose corners all point further than this from the sun cannot hold its disc (cells span about 3.5 degrees). */
     static final double SUN_CELL_COS = Math.cos(Math.toRadians(12));
     /** The programs per cell group: bit 0 clouds, bit 1 the sun's disc, bit 2 ground without per-pixel sea. */
-    private final ShaderProgram[] programs;
+    private ShaderProgram[] programs;
     /** Whether cells off the seaside's shore are drawn without the per-pixel sea (software tier). */
     private boolean shoreSplit;
     private final float[] groundX = new float[(GRID_X + 1) * (GRID_Y + 1)];
@@ -72,17 +72,11 @@ public final class SkyPass implements RenderPass {
     SkyPass(Sea sea, int groundLayer) {
         this.sea = sea;
         this.groundLayer = groundLayer;
-        String s = sea != null ? "SEA" : "NO_SEA";
-        // Per pixel (the shoreline, the ground's detail) only in the cells wholly below the horizon.
-        String p = sea != null ? "SEA_PIXEL" : "NO_SEA_PIXEL";
-        String g = groundLayer >= 0 ? "GROUND_DETAIL" : "NO_GROUND_DETAIL";
         // Where the ground shows no per-pixel detail (software rasterisers), the cells off the shore's
-        // band take their colour from the grid's corners (groups 4 and 6; see sortCells).
+        // band take their colour from the grid's corners (groups 4 and 6; see sortCells), and the band's
+        // cells draw the shore with cheaper arithmetic (sky.frag's SIMPLE_SHORE).
         shoreSplit = sea != null && groundLayer < 0;
-        programs = new ShaderProgram[]{ShaderProgram.load("sky", s, p, g), ShaderProgram.load("sky", "CLOUDS", s),
-                ShaderProgram.load("sky", "SUN_DISC", s, p, g), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC", s),
-                shoreSplit ? ShaderProgram.load("sky", s, "NO_SEA_PIXEL", g) : null, null,
-                shoreSplit ? ShaderProgram.load("sky", "SUN_DISC", s, "NO_SEA_PIXEL", g) : null, null};
+        programs = programs(shoreSplit);
         glBindVertexArray(vao);
         FloatBuffer corners = MemoryUtil.memAllocFloat((GRID_X + 1) * (GRID_Y + 1) * 2);
         try {
@@ -101,6 +95,20 @@ public final class SkyPass implements RenderPass {
         glEnableVertexAttribArray(0);
         glBindVertexArray(0);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+
+    /** The programs per cell group (see {@link #programs}); {@code simpleShore}: the band's cells with SIMPLE_SHORE. */
+    private ShaderProgram[] programs(boolean simpleShore) {
+        String s = sea != null ? "SEA" : "NO_SEA";
+        // Per pixel (the shoreline, the ground's detail) only in the cells wholly below the horizon.
+        String p = sea != null ? "SEA_PIXEL" : "NO_SEA_PIXEL";
+        String g = groundLayer >= 0 ? "GROUND_DETAIL" : "NO_GROUND_DETAIL";
+        String simple = simpleShore ? "SIMPLE_SHORE" : "NO_SIMPLE_SHORE";
+        boolean split = sea != null && groundLayer < 0;
+        return new ShaderProgram[]{ShaderProgram.load("sky", s, p, g, simple), ShaderProgram.load("sky", "CLOUDS", s),
+                ShaderProgram.load("sky", "SUN_DISC", s, p, g, simple), ShaderProgram.load("sky", "CLOUDS", "SUN_DISC", s),
+                split ? ShaderProgram.load("sky", s, "NO_SEA_PIXEL", g) : null, null,
+                split ? ShaderProgram.load("sky", "SUN_DISC", s, "NO_SEA_PIXEL", g) : null, null};
     }
 
     private static float ndcX(int i) {
@@ -264,6 +272,15 @@ public final class SkyPass implements RenderPass {
         if (sea == null || groundLayer >= 0 || programs[4] == null) return;
         shoreSplit = on;
         shore = on && !Float.isNaN(groundLevel) ? Shore.of(sea, groundLevel) : null;
+    }
+
+    /**
+     * Off: the shore's band with the high tier's arithmetic (exp, sin, the fade per pixel), as before
+     * SIMPLE_SHORE (tests compare the pictures); on: the software tier's again. Only where the split can exist.
+     */
+    void simpleShore(boolean on) {
+        if (sea == null || groundLayer >= 0) return;
+        programs = programs(on);
     }
 
     private void use(ShaderProgram shader, FrameContext frame) {

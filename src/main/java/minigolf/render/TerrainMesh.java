@@ -411,6 +411,17 @@ public final class TerrainMesh {
         return cellStarts.clone();
     }
 
+    /** One side of the skirts: its index range and its outward normal (every vertex of a side has it). */
+    public record SkirtSide(int first, int count, int normalX, int normalY) {
+    }
+
+    /** The skirts' four sides in drawing order (y = min, x = max, y = max, x = min), as {@link #build} makes them. */
+    public List<SkirtSide> skirtSides() {
+        int first = cellStarts[cellStarts.length - 1], along = 6 * (columns - 1), across = 6 * (rows - 1);
+        return List.of(new SkirtSide(first, along, 0, -1), new SkirtSide(first + along, across, 1, 0),
+                new SkirtSide(first + along + across, along, 0, 1), new SkirtSide(first + 2 * along + across, across, -1, 0));
+    }
+
     /** The height the skirts reach down to, for terrain whose lowest sample is {@code minHeight}: where the slab stands. */
     public static double skirtBase(double minHeight, Bounds b) {
         return Math.min(minHeight, 0) - Math.max(0.25, 0.015 * Math.max(b.width(), b.depth()));

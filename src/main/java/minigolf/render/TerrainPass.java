@@ -30,6 +30,11 @@ public final class TerrainPass implements RenderPass {
     private int[] scratchLevels;
     private int lastLodIndices;
     private boolean levelOfDetail = true;
+    /** The software tier's shader (lighting per vertex): a skirt side turned from the sun skips the shadow tap. */
+    private final boolean vertexLit;
+    private java.util.List<TerrainMesh.SkirtSide> skirtSides = java.util.List.of();
+    private boolean splitSkirts = true;
+    private int lastBacklitSides;
 
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode) {
         this(course, terrain, mode, false, TerrainMesh.MIN_SPACING);
@@ -44,6 +49,7 @@ public final class TerrainPass implements RenderPass {
     public TerrainPass(Course course, Terrain terrain, TerrainMesh.ColorMode mode, boolean vertexLit, double minSpacing) {
         this.minSpacing = minSpacing;
         this.shader = new LitShader(vertexLit ? "terrain-vertexlit" : "terrain");
+        this.vertexLit = vertexLit;
         this.course = course;
         this.terrain = terrain;
         setColorMode(mode);
@@ -69,6 +75,7 @@ public final class TerrainPass implements RenderPass {
         vertexCount = built.data().vertices().length / built.data().stride();
         rowStarts = built.rowStarts();
         cellStarts = built.cellStarts();
+        skirtSides = built.skirtSides();
         indexCount = own.length;
         lod = newLod;
         lastLevels = null;
@@ -293,10 +300,49 @@ public final class TerrainPass implements RenderPass {
                 drawn += count;
             }
         }
-        use(frame);
-        int skirts = cellStarts[cellStarts.length - 1];
-        mesh.drawRange(skirts, indexCount - skirts);
+        drawSkirts(frame);
         lastLodIndices = drawn;
+    }
+
+    /**
+     * The skirts, their sides in order. With lighting per vertex (software tier) a side turned from the
+     * sun has no sunlight at any vertex (diffuse and specular 0), so the shadow tap could only multiply
+     * zero: such sides are drawn without it, the same pixels for less work per pixel.
+     */
+    private void drawSkirts(FrameContext frame) {
+        boolean split = splitSkirts && vertexLit && LitShader.Variant.of(frame) != LitShader.Variant.UNSHADOWED;
+        LitShader.Variant current = null;
+        int runFirst = 0, runCount = 0;
+        lastBacklitSides = 0;
+        for (TerrainMesh.SkirtSide side : skirtSides) {
+            boolean backlit = split && backlit(side, frame.sun.direction());
+            if (backlit) lastBacklitSides++;
+            LitShader.Variant v = backlit ? LitShader.Variant.UNSHADOWED : LitShader.Variant.of(frame);
+            if (v != current) {
+                if (runCount > 0) mesh.drawRange(runFirst, runCount);
+                use(frame, v);
+                current = v;
+                runFirst = side.first();
+                runCount = 0;
+            }
+            runCount += side.count();
+        }
+        if (runCount > 0) mesh.drawRange(runFirst, runCount);
+    }
+
+    /** Whether the sun (towards it: {@code sun}) lights no point of the side: n.l <= 0 (a side's normal is horizontal). */
+    static boolean backlit(TerrainMesh.SkirtSide side, org.joml.Vector3f sun) {
+        return side.normalX() * sun.x + side.normalY() * sun.y <= 0;
+    }
+
+    /** Skirt sides the last perspective frame drew without the shadow tap (tests). */
+    int lastBacklitSkirtSides() {
+        return lastBacklitSides;
+    }
+
+    /** Off: every skirt side with the frame's shadow variant, as before the split (tests compare the pictures). */
+    void splitSkirts(boolean on) {
+        splitSkirts = on;
     }
 
     private int drawChunk(TerrainLod.Chunk c, int level) {

@@ -221,4 +221,36 @@ class CollisionSceneTest {
         }
         assertTrue(hits > 500 && tighter > 100, hits + " hits, " + tighter + " paths clear that the rectangle would not clear");
     }
+
+    /**
+     * Long walls across the course (the "2500 walls" limit case in small) are listed in every cell
+     * along them with the same triangles: those runs share one hull, so the hulls stay in
+     * proportion to the walls, not to the cells (unshared, they took 1.2 s and 160 MB to build at
+     * the limit); and the shared hulls still never hide a contact.
+     */
+    @Test
+    void longWallsShareTheirHullsAlongTheirCellsAndHideNoContact() {
+        List<Obstacle> walls = new ArrayList<>();
+        for (int k = 0; k < 200; k++) {
+            double y = -9.5 + 0.095 * k;
+            walls.add(new Obstacle.Wall(new Vec2(-9.5, y), new Vec2(9.5, y + 0.3 * Math.sin(k)), 0.02, 0.2, 0.7));
+        }
+        CollisionScene scene = CollisionScene.build(walls, (x, y) -> 0, BOUNDS, R);
+        long[] points = scene.hullPoints();
+        assertTrue(points[0] <= 200 * 4 * 4, points[0] + " hull points stored for 200 walls");
+        assertTrue(points[1] >= 10 * points[0], points[1] + " listed by the runs, " + points[0] + " stored");
+        java.util.Random random = new java.util.Random(12);
+        Hit hit = new Hit();
+        double[] scratch = new double[3];
+        int hits = 0;
+        for (int k = 0; k < 20_000; k++) {
+            double x0 = -9 + 18 * random.nextDouble(), y0 = -9 + 18 * random.nextDouble();
+            double x1 = x0 + random.nextGaussian() * 0.2, y1 = y0 + random.nextGaussian() * 0.2;
+            if (scene.sweep(x0, y0, 0.1, x1, y1, 0.1, hit, scratch)) {
+                hits++;
+                assertTrue(scene.anyShapeNearPath(x0, y0, x1, y1, 0), "a hit from (" + x0 + ", " + y0 + ") to (" + x1 + ", " + y1 + ")");
+            }
+        }
+        assertTrue(hits > 1_000, hits + " hits");
+    }
 }

@@ -31,11 +31,6 @@ class LongStepShoreTest {
         };
     }
 
-    /** When a ball braking at a from speed v has gone the distance d (the closed form). */
-    private static double timeToCover(double d, double v, double a) {
-        return (v - Math.sqrt(v * v - 2 * a * d)) / a;
-    }
-
     @Test
     void aBallRollingIntoWaterEndsAtTheShoreAtTheClosedForm() {
         // Down a 2% slope (braking, mu_k 0.08) from x = -5 at 4 m/s into water beyond x = 5.
@@ -45,7 +40,7 @@ class LongStepShoreTest {
         assertEquals(Outcome.WATER, r.outcome());
         assertEquals(5, r.endX(), 1e-7);
         assertEquals(0, r.endY(), 1e-12);
-        assertEquals(timeToCover(10, v, TestWorlds.G * (muK - s)), r.time(), 1e-7);
+        assertEquals(TestWorlds.timeToCover(10, v, TestWorlds.G * (muK - s)), r.time(), 1e-7);
         // 3.30 s in 26 steps (28 when steps of dt took the ball the last stretch to the shore).
         assertTrue(r.steps() <= 26, r.steps() + " steps");
     }
@@ -57,7 +52,7 @@ class LongStepShoreTest {
         ShotResult r = TestWorlds.rk4(world).simulate(-5, 0, v, 0);
         assertEquals(Outcome.OUT, r.outcome());
         assertEquals(10, r.endX(), 1e-7);
-        assertEquals(timeToCover(15, v, TestWorlds.G * (muK - s)), r.time(), 1e-7);
+        assertEquals(TestWorlds.timeToCover(15, v, TestWorlds.G * (muK - s)), r.time(), 1e-7);
         // 4.91 s in 38 steps (41 when steps of dt took it to the bounds).
         assertTrue(r.steps() <= 38, r.steps() + " steps");
     }

@@ -65,6 +65,24 @@ final class TestWorlds {
         };
     }
 
+    /** The terrain, smooth (long steps allowed), calling onHeight for every height asked (full samples are not counted). */
+    static Terrain countingHeights(Terrain terrain, Runnable onHeight) {
+        return new Terrain() {
+            public double height(double x, double y) {
+                onHeight.run();
+                return terrain.height(x, y);
+            }
+
+            public void sample(double x, double y, double[] out) {
+                terrain.sample(x, y, out);
+            }
+
+            public boolean isSmooth() {
+                return true;
+            }
+        };
+    }
+
     static World world(Terrain terrain, double muK, double muS, double halfSize, PhysicsModel model,
                        Hole hole, List<Zone> zones) {
         Course course = new Course(1, "test", new TerrainSpec.HeightExpression("test"),
@@ -84,5 +102,10 @@ final class TestWorlds {
 
     static Simulator rk4(World world) {
         return new Simulator(world, SimulationSettings.DEFAULT);
+    }
+
+    /** When a ball braking at a from speed v has gone the distance d (the closed form). */
+    static double timeToCover(double d, double v, double a) {
+        return (v - Math.sqrt(v * v - 2 * a * d)) / a;
     }
 }

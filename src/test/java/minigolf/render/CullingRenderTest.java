@@ -23,9 +23,8 @@ class CullingRenderTest {
     void cullingTheFarFacesLeavesThePictureAsItWas() throws Exception {
         assertTrue(RenderQuality.SOFTWARE.cullBackFaces() && !RenderQuality.HIGH.cullBackFaces(), "the software tier only");
         for (String hole : new String[]{"seaside/18-lighthouse-point.json", "winter/18-the-keep.json"}) {
-            World w = World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "worlds", hole));
-            var b = w.course().bounds();
-            Vector3f centre = new Vector3f((float) (b.minX() + b.maxX()) / 2, (float) (b.minY() + b.maxY()) / 2, 0.3f);
+            World w = TestCourses.worldHole(hole);
+            Vector3f centre = TestCourses.middle(w.course());
             try (Offscreen off = new Offscreen(W, H, 0);
                  SceneRenderer r = new SceneRenderer(w.course(), w.terrain(), TerrainMesh.ColorMode.GREEN, RenderQuality.SOFTWARE)) {
                 r.setBalls(List.of());

@@ -64,6 +64,17 @@ final class TestCourses {
                 List.of());
     }
 
+    /** A hole of the bundled worlds, such as "seaside/07-jetty.json". */
+    static minigolf.physics.World worldHole(String hole) throws minigolf.course.CourseException {
+        return minigolf.physics.World.load(Path.of(System.getProperty("minigolf.projectDir", "."), "courses", "worlds", hole));
+    }
+
+    /** The middle of a course's bounds, 0.3 m up: where views round a hole look. */
+    static org.joml.Vector3f middle(Course course) {
+        Bounds b = course.bounds();
+        return new org.joml.Vector3f((float) (b.minX() + b.maxX()) / 2, (float) (b.minY() + b.maxY()) / 2, 0.3f);
+    }
+
     static Path screenshotDir() {
         return Path.of(System.getProperty("minigolf.projectDir", "."), "build", "screenshots");
     }

@@ -32,6 +32,26 @@ class WorldRenderTest {
         return Pixels.read(png);
     }
 
+    /** From high above the course: the shore (14 m off) and the sea beyond it fill the picture's edges. */
+    static OrbitCamera above() {
+        return new OrbitCamera(new Vector3f(0, 0, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(35), 30f);
+    }
+
+    /** The flat test course with a rail by the sea, at the software tier, no balls. */
+    private static SceneRenderer seasideSoftware() {
+        Course course = TestCourses.flat().withObstacles(List.of(RAIL)).withWorld("seaside");
+        SceneRenderer r = new SceneRenderer(course, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN, RenderQuality.SOFTWARE);
+        r.setBalls(List.of());
+        return r;
+    }
+
+    /** The largest difference of one colour channel between two pixels (0xRRGGBB). */
+    private static int levels(int a, int b) {
+        int d = 0;
+        for (int shift = 0; shift < 24; shift += 8) d = Math.max(d, Math.abs(((a >> shift) & 0xff) - ((b >> shift) & 0xff)));
+        return d;
+    }
+
     /** A low view along the course's long side: ground on both sides of it, the horizon near the top. */
     static OrbitCamera low() {
         return new OrbitCamera(new Vector3f(0, 0, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(10), 14f);
@@ -70,7 +90,7 @@ class WorldRenderTest {
     void theSeasideHasTheSeaBelowItsHorizon() {
         // From high above the course the shore (14 m off) and the sea beyond it fill the picture's edges:
         // deep blue-green water in the seaside world only (Meadowbrook's far meadow fades to a light haze).
-        OrbitCamera out = new OrbitCamera(new Vector3f(0, 0, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(35), 30f);
+        OrbitCamera out = above();
         Pixels sea = shot("seaside", out, RenderQuality.SOFTWARE, 0, "world-seaside-sea.png");
         Pixels meadow = shot("meadowbrook", out, RenderQuality.SOFTWARE, 0, "world-meadowbrook-far.png");
         int seaPixels = 0, meadowPixels = 0;
@@ -113,11 +133,8 @@ class WorldRenderTest {
      */
     @Test
     void theShoreIsBuiltWithTheGroundAndTheSplitLeavesThePictureAsItWas() {
-        Course course = TestCourses.flat().withObstacles(List.of(RAIL)).withWorld("seaside");
-        OrbitCamera out = new OrbitCamera(new Vector3f(0, 0, 0.1f), (float) Math.toRadians(-90), (float) Math.toRadians(35), 30f);
-        try (Offscreen off = new Offscreen(W, H, 0);
-             SceneRenderer r = new SceneRenderer(course, TestCourses.FLAT, TerrainMesh.ColorMode.GREEN, RenderQuality.SOFTWARE)) {
-            r.setBalls(List.of());
+        OrbitCamera out = above();
+        try (Offscreen off = new Offscreen(W, H, 0); SceneRenderer r = seasideSoftware()) {
             SkyPass sky = r.skyPass();
             assertNotNull(sky.shore(), "the seaside's software sky has a shore");
             for (OrbitCamera cam : new OrbitCamera[]{out, low()}) {
@@ -132,11 +149,7 @@ class WorldRenderTest {
                 assertEquals(0, counts[4] + counts[5] + counts[6] + counts[7], "every cell per pixel");
                 sky.splitShore(true);
                 int worst = 0;
-                for (int i = 0; i < split.rgb().length; i++) {
-                    for (int shift = 0; shift < 24; shift += 8) {
-                        worst = Math.max(worst, Math.abs(((split.rgb()[i] >> shift) & 0xff) - ((whole.rgb()[i] >> shift) & 0xff)));
-                    }
-                }
+                for (int i = 0; i < split.rgb().length; i++) worst = Math.max(worst, levels(split.rgb()[i], whole.rgb()[i]));
                 assertTrue(worst <= 3, "the pictures differ by up to " + worst + " levels");
             }
             SkyPass.Shore first = sky.shore();
@@ -146,9 +159,52 @@ class WorldRenderTest {
         }
     }
 
+    /**
+     * The software tier's shore (SIMPLE_SHORE: the foam's exp and sin by polynomials, its fade per vertex)
+     * draws the picture the high tier's arithmetic draws, within the approximations' bound: the foam's
+     * weight is off by at most 0.035 (the bell) + 0.033 (the swing's 0.056 moves the line by 0.04 of its
+     * width), times its 0.6 strength and the foam-to-water contrast: under 12 levels; everywhere else the same.
+     */
+    @Test
+    void theSimpleShoreDrawsTheShoreAsTheFullArithmetic() {
+        OrbitCamera out = above();
+        try (Offscreen off = new Offscreen(W, H, 0); SceneRenderer r = seasideSoftware()) {
+            SkyPass sky = r.skyPass();
+            for (float time : new float[]{0f, 2.5f}) {
+                Pixels simple = draw(off, r, out, time, "shore-simple.png");
+                int[] counts = sky.lastCounts();
+                assertTrue(counts[0] + counts[2] > 0, "some cells draw the shore per pixel");
+                sky.simpleShore(false);
+                Pixels full = draw(off, r, out, time, "shore-full.png");
+                sky.simpleShore(true);
+                int worst = 0, differing = 0, foam = 0;
+                for (int i = 0; i < simple.rgb().length; i++) {
+                    int d = levels(simple.rgb()[i], full.rgb()[i]);
+                    worst = Math.max(worst, d);
+                    if (d > 2) differing++;
+                    if (isFoam(full.rgb()[i])) foam++;
+                }
+                assertTrue(foam > 100, "the full shore shows its foam: " + foam + " pixels");
+                assertTrue(worst <= 12, "at " + time + " s the pictures differ by up to " + worst + " levels");
+                assertTrue(differing < foam * 3, "at " + time + " s " + differing + " pixels differ by more than 2 levels ("
+                        + foam + " foam pixels)");
+            }
+        }
+    }
+
+    /** Near-white with a cool tint: the foam's colour (0.95, 0.97, 0.98) over sand or water. */
+    private static boolean isFoam(int rgb) {
+        int r = (rgb >> 16) & 0xff, g = (rgb >> 8) & 0xff, b = rgb & 0xff;
+        return r > 200 && g > 205 && b > 205 && b >= r;
+    }
+
     private static Pixels draw(Offscreen off, SceneRenderer r, OrbitCamera cam, String name) {
+        return draw(off, r, cam, 0f, name);
+    }
+
+    private static Pixels draw(Offscreen off, SceneRenderer r, OrbitCamera cam, float time, String name) {
         off.bind();
-        r.render(cam, W, H, 0f);
+        r.render(cam, W, H, time);
         assertEquals(0, org.lwjgl.opengl.GL11.glGetError(), name);
         Path png = TestCourses.screenshotDir().resolve(name);
         off.savePng(png);
