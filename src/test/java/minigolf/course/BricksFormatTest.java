@@ -34,6 +34,18 @@ class BricksFormatTest {
         assertEquals(c.bricks(), c.withWorld("seaside").withObstacles(List.of()).withHoles(c.hole(), List.of()).bricks());
     }
 
+    /** What the renderer draws: the course's obstacles, then the bricks still standing as boxes. */
+    @Test
+    void theObstaclesDrawnAreTheStandingBricks() throws CourseException {
+        Course c = CourseLoader.parse(withBricks("[ { \"min\": [0, -1, -1], \"max\": [0.25, 1, 1], \"hits\": 4 }, "
+                + "{ \"min\": [1, 2, 0], \"max\": [1.5, 2.5, 0.3], \"hits\": 2 } ]"), "x");
+        assertEquals(List.of(c.bricks().get(0).box(), c.bricks().get(1).box()), c.obstaclesWithBricks(i -> true));
+        assertEquals(List.of(c.bricks().get(1).box()), c.obstaclesWithBricks(i -> i == 1));
+        assertEquals(List.of(), c.obstaclesWithBricks(i -> false));
+        Course base = CourseLoader.parse(BASE, "x");
+        assertTrue(base.obstaclesWithBricks(i -> true) == base.obstacles());
+    }
+
     @Test
     void aCourseWithoutBricksWritesNoField() throws CourseException {
         Course c = CourseLoader.parse(BASE, "x");

@@ -61,6 +61,21 @@ class SceneRenderTest {
         assertTrue(with.r(x, y) + with.g(x, y) + with.b(x, y) < 100, "a dark cup at the extra hole: " + with.describe(x, y));
     }
 
+    /** A breakable brick standing is drawn (a box where the same spot is grass without it). */
+    @Test
+    void aStandingBrickIsDrawn() {
+        Course none = TestCourses.flat();
+        Course brick = none.withBricks(java.util.List.of(new minigolf.course.Brick(new minigolf.course.Vec3(-1.25, 1.75, -0.05),
+                new minigolf.course.Vec3(-0.75, 2.25, 0.3), 4, 0.9)));
+        OrbitCamera cam = OrbitCamera.topDown(none, TestCourses.FLAT, new Vector3f(0, 0, 0.1f), (float) W / H);
+        float[] at = cam.project(new Vector3f(-1, 2, 0.3f), W, H);
+        int x = Math.round(at[0]), y = Math.round(at[1]);
+        Pixels without = Pixels.read(shot("no-brick-top.png", none, TestCourses.FLAT, cam));
+        Pixels with = Pixels.read(shot("brick-top.png", brick, TestCourses.FLAT, cam));
+        assertTrue(without.g(x, y) > without.r(x, y) && without.g(x, y) > without.b(x, y), "grass without the brick: " + without.describe(x, y));
+        assertFalse(with.g(x, y) > with.r(x, y) + 10 && with.g(x, y) > with.b(x, y) + 10, "not grass where the brick stands: " + with.describe(x, y));
+    }
+
     @Test
     void flatCourseShowsNoWater() {
         Course course = TestCourses.flat();

@@ -207,7 +207,8 @@ public final class EditorApp implements WindowApp {
                 // scene is rebuilt: redrawing them for every dab would cost more than the dab itself.
             }
             if (changes.obstaclesChanged()) {
-                renderer.setObstacles(editor.course().obstacles());
+                // The course's bricks (kept, not editable) stay drawn, every one standing.
+                renderer.setObstacles(editor.world().course().obstaclesWithBricks(i -> true));
                 renderer.setElements(editor.world().course());
             }
         }
