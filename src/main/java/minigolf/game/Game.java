@@ -133,20 +133,10 @@ public final class Game {
         if (start.course().bricks().isEmpty()) return start;
         World w = start;
         for (ShotRecord r : history) {
-            w = w.withState(runToEnd(new Stroke(w, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), null,
-                    false)).state());
+            w = w.withState(new Stroke(w, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), null,
+                    false).runOrEndOutOfPlay().state());
         }
         return w;
-    }
-
-    /** Runs a stroke to its end; one whose motion overflowed ends out of play there, as the game rules it. */
-    static ShotResult runToEnd(Stroke s) {
-        try {
-            return s.run();
-        } catch (minigolf.physics.NonFiniteMotionException e) {
-            s.endOutOfPlay();
-            return s.result();
-        }
     }
 
     /** Everything needed to resume this game exactly. A stroke in flight is saved as its start and velocity. */

@@ -57,7 +57,7 @@ public final class HoleReplay {
     /** The next stroke, ready to be stepped (or run). */
     public Stroke nextStroke(TrajectoryListener listener) {
         ShotRecord r = shots.get(next++);
-        if (last != null) now = now.withState(Game.runToEnd(last).state());
+        if (last != null) now = now.withState(last.runOrEndOutOfPlay().state());
         last = new Stroke(now, settings, r.startX(), r.startY(), r.vx(), r.vy(), r.vz(), r.clock(), listener, false);
         return last;
     }

@@ -321,6 +321,19 @@ public final class Stroke {
         return result();
     }
 
+    /**
+     * Runs the stroke to its end as the game rules it: a stroke whose motion stops being finite
+     * (a terrain not finite somewhere between the loader's samples) ends out of play there.
+     */
+    public ShotResult runOrEndOutOfPlay() {
+        try {
+            return run();
+        } catch (NonFiniteMotionException e) {
+            endOutOfPlay();
+            return result();
+        }
+    }
+
     /** The shot as one number (its bits mixed), for the teleports that draw their exits: the same shot, the same draws. */
     static long shotKey(double x0, double y0, double vx0, double vy0, double vz0, double clock) {
         long k = Double.doubleToLongBits(x0 + 0.0);

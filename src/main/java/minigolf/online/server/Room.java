@@ -20,7 +20,6 @@ import minigolf.online.RoomClock;
 import minigolf.online.RoomEvent;
 import minigolf.online.RoundSync;
 import minigolf.online.store.Score;
-import minigolf.physics.NonFiniteMotionException;
 import minigolf.physics.SimulationSettings;
 import minigolf.physics.Stroke;
 import minigolf.physics.World;
@@ -328,11 +327,7 @@ final class Room {
         int finishedBefore = round.holesFinished();
         g.advanceClockTo(Math.max(g.clock(), at));
         Stroke stroke = g.startShot(v[0], v[1], v[2], null);
-        try {
-            stroke.run();
-        } catch (NonFiniteMotionException e) {
-            stroke.endOutOfPlay();
-        }
+        stroke.runOrEndOutOfPlay();
         double rollSeconds = stroke.result().time();
         ShotRecord record = g.completeShot();
         seq++;
